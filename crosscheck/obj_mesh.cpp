@@ -1,0 +1,86 @@
+// OBJ loading (see obj_mesh.hpp).
+#include "obj_mesh.hpp"
+
+#include <tiny_obj_loader.h>
+
+#include <algorithm>
+
+namespace crosscheck {
+
+std::optional<ObjMesh> loadObjMesh(const std::filesystem::path& path, softraster::Vec4 fallbackColour,
+                                   std::string* error) {
+  tinyobj::ObjReaderConfig config;
+  config.triangulate = false;  // we split polygons ourselves, as a fan, so the split is known
+  config.mtl_search_path = path.parent_path().string();
+  tinyobj::ObjReader reader;
+  if (!std::filesystem::is_regular_file(path)) {
+    *error = path.string() + ": file not found";
+    return std::nullopt;
+  }
+  if (!reader.ParseFromFile(path.string(), config)) {
+    std::string message = reader.Error();
+    while (!message.empty() && (message.back() == '\n' || message.back() == '\r')) message.pop_back();
+    for (char& ch : message) {
+      if (ch == '\n') ch = ';';
+    }
+    *error = path.string() + ": " + (message.empty() ? "cannot be parsed as OBJ" : message);
+    return std::nullopt;
+  }
+  // Warnings (e.g. a missing .mtl) are errors here: a scene must render what its author meant.
+  if (!reader.Warning().empty()) {
+    std::string message = reader.Warning();
+    while (!message.empty() && message.back() == '\n') message.pop_back();
+    for (char& ch : message) {
+      if (ch == '\n') ch = ';';
+    }
+    *error = path.string() + ": " + message;
+    return std::nullopt;
+  }
+
+  const tinyobj::attrib_t& attrib = reader.GetAttrib();
+  const auto& materials = reader.GetMaterials();
+  const std::size_t positionCount = attrib.vertices.size() / 3;
+  const bool hasVertexColours = attrib.colors.size() == attrib.vertices.size() && !attrib.colors.empty() &&
+                                std::any_of(attrib.colors.begin(), attrib.colors.end(), [](float c) { return c != 1.0f; });
+  ObjMesh mesh;
+  for (const tinyobj::shape_t& shape : reader.GetShapes()) {
+    std::size_t offset = 0;
+    for (std::size_t face = 0; face < shape.mesh.num_face_vertices.size(); ++face) {
+      const std::size_t corners = shape.mesh.num_face_vertices[face];
+      const int materialId = face < shape.mesh.material_ids.size() ? shape.mesh.material_ids[face] : -1;
+      softraster::Vec4 faceColour = fallbackColour;
+      if (materialId >= 0 && static_cast<std::size_t>(materialId) < materials.size()) {
+        const auto& kd = materials[static_cast<std::size_t>(materialId)].diffuse;
+        faceColour = {kd[0], kd[1], kd[2], 1.0f};
+      }
+      const auto first = static_cast<std::uint32_t>(mesh.vertices.size());
+      for (std::size_t c = 0; c < corners; ++c) {
+        const int p = shape.mesh.indices[offset + c].vertex_index;
+        if (p < 0 || static_cast<std::size_t>(p) >= positionCount) {
+          *error = path.string() + ": shape '" + shape.name + "' face " + std::to_string(face + 1) +
+                   " refers to a vertex that does not exist";
+          return std::nullopt;
+        }
+        const auto i = static_cast<std::size_t>(p);
+        shaders::VertexColor::Vertex v;
+        v.position = {attrib.vertices[3 * i], attrib.vertices[3 * i + 1], attrib.vertices[3 * i + 2]};
+        v.colour = hasVertexColours ? softraster::Vec4{attrib.colors[3 * i], attrib.colors[3 * i + 1],
+                                                       attrib.colors[3 * i + 2], 1.0f}
+                                    : faceColour;
+        mesh.vertices.push_back(v);
+      }
+      for (std::size_t c = 2; c < corners; ++c) {
+        mesh.indices.insert(mesh.indices.end(), {first, first + static_cast<std::uint32_t>(c - 1),
+                                                 first + static_cast<std::uint32_t>(c)});
+      }
+      offset += corners;
+    }
+  }
+  if (mesh.indices.empty()) {
+    *error = path.string() + ": no faces";
+    return std::nullopt;
+  }
+  return mesh;
+}
+
+}  // namespace crosscheck

@@ -1,0 +1,25 @@
+// OBJ meshes through tinyobjloader: positions, faces (polygons split as a fan: (a,b,c),(a,c,d)...)
+// and a colour per vertex from the face's material (Kd), the OBJ vertex colour, or a fallback.
+// Deliberately ignores normals and texture coordinates until a shading model reads them.
+#pragma once
+
+#include <vertex_color.hpp>
+
+#include <cstdint>
+#include <filesystem>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace crosscheck {
+
+struct ObjMesh {
+  std::vector<shaders::VertexColor::Vertex> vertices;  // one per face corner
+  std::vector<std::uint32_t> indices;
+};
+
+// On failure returns nullopt and sets *error to "FILE: what is wrong".
+std::optional<ObjMesh> loadObjMesh(const std::filesystem::path& path, softraster::Vec4 fallbackColour,
+                                   std::string* error);
+
+}  // namespace crosscheck

@@ -1,0 +1,27 @@
+// Renders a Scene with either renderer into a Frame: RGBA8 colour and float depth, row 0 at the
+// top. Both adapters hand the renderers the same vertices, indices, matrices and PipelineState.
+// Deliberately no caching between frames: one call, one frame.
+#pragma once
+
+#include "scene.hpp"
+
+#include <vkref/renderer.hpp>
+
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace crosscheck {
+
+struct Frame {
+  std::uint32_t width = 0, height = 0;
+  std::vector<std::uint8_t> rgba;
+  std::vector<float> depth;
+  double milliseconds = 0;  // wall time of the render call itself
+};
+
+std::optional<Frame> renderSoftraster(const Scene& scene, std::string* error);
+std::optional<Frame> renderVulkan(const Scene& scene, vkref::Renderer& renderer, std::string* error);
+
+}  // namespace crosscheck

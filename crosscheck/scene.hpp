@@ -1,0 +1,57 @@
+// Scene: what one conformance case draws and how closely the two renderers must agree.
+// Loaded from a JSON scene file (format: scenes/README.md). A scene file states only what
+// differs from the defaults; every error names the file, the place and what is wrong.
+// Deliberately no scene graph: a scene is a camera plus a flat list of draws.
+#pragma once
+
+#include <softraster/math.hpp>
+#include <softraster/state.hpp>
+
+#include <vertex_color.hpp>
+
+#include <cstdint>
+#include <filesystem>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace crosscheck {
+
+enum class ShadingModel { VertexColor };
+
+struct Draw {
+  std::string name;
+  ShadingModel shading = ShadingModel::VertexColor;
+  softraster::PipelineState state;
+  std::vector<shaders::VertexColor::Vertex> vertices;
+  std::vector<std::uint32_t> indices;
+};
+
+// Limits of agreement between softraster and Vulkan. A pixel is "over" when any colour channel
+// differs by more than colourThreshold (in 8-bit steps) or depth by more than depthThreshold.
+struct Tolerance {
+  int colourThreshold = 1;
+  double depthThreshold = 0x1p-24;
+  std::uint64_t maxCoverageMismatches = 0;
+  std::uint64_t maxColourPixelsOver = 0;
+  std::uint64_t maxDepthPixelsOver = 0;
+};
+
+struct Scene {
+  std::filesystem::path path;
+  std::string description;
+  std::uint32_t width = 320, height = 240;
+  softraster::Vec4 clearColour{0, 0, 0, 1};
+  float clearDepth = 1.0f;
+  softraster::Mat4 viewProjection = softraster::Mat4::identity();
+  std::vector<Draw> draws;
+  Tolerance tolerance;
+};
+
+// Loads and validates a scene. `overrides` are "key.path=JSON value" assignments applied to the
+// file's JSON before it is read (e.g. "camera.yaw=90"). On failure returns nullopt and sets
+// *error to one line: "FILE: PLACE: what is wrong".
+std::optional<Scene> loadScene(const std::filesystem::path& path, std::string* error,
+                               const std::vector<std::string>& overrides = {});
+
+}  // namespace crosscheck

@@ -1,0 +1,45 @@
+// vertex_color: unlit, the vertex colour interpolated perspective-correctly.
+// The C++ twin of vertex_color.vert / vertex_color.frag; keep the three files reading alike.
+// Deliberately no lighting and no texture: it is the flat-colour model the first scenes need.
+#pragma once
+
+#include <softraster/math.hpp>
+#include <softraster/shader.hpp>
+
+#include <array>
+#include <cstddef>
+
+namespace shaders {
+
+struct VertexColor {
+  struct Vertex {
+    softraster::Vec3 position;  // location 0
+    softraster::Vec4 colour;    // location 1
+  };
+  struct Uniforms {
+    softraster::Mat4 modelViewProjection;
+  };
+  static constexpr int kVaryings = 4;  // vColour
+  static constexpr std::array<softraster::VertexAttribute, 2> kAttributes{{
+      {0, 3, offsetof(Vertex, position)},
+      {1, 4, offsetof(Vertex, colour)},
+  }};
+
+  static softraster::Vec4 vertex(const Uniforms& u, const Vertex& in, float* vColour) {
+    const softraster::Mat4& m = u.modelViewProjection;
+    // Same sum, same order as the GLSL; the w column is taken as is (inPosition.w == 1).
+    const softraster::Vec4 clip =
+        m.columns[0] * in.position.x + m.columns[1] * in.position.y + m.columns[2] * in.position.z + m.columns[3];
+    vColour[0] = in.colour.x;
+    vColour[1] = in.colour.y;
+    vColour[2] = in.colour.z;
+    vColour[3] = in.colour.w;
+    return clip;
+  }
+
+  static softraster::Vec4 fragment(const Uniforms&, const float* vColour) {
+    return {vColour[0], vColour[1], vColour[2], vColour[3]};
+  }
+};
+
+}  // namespace shaders

@@ -1,0 +1,129 @@
+// Clipping: Sutherland–Hodgman against the six frustum planes in clip space, exactly as Mesa's
+// draw module (draw_pipe_clip.c) does it for lavapipe:
+//   - planes visited in clip-mask bit order (x<=w, x>=-w, y<=w, y>=-w, z>=0, z<=w), only those
+//     some vertex of the triangle is outside of;
+//   - plane distance dp = dot4(position, plane), summed left to right;
+//   - a new vertex is interpolated from the endpoint nearer the plane: base + t*(other - base);
+//   - its window position is pos * (1/w) * scale + trans with no FMA (this is C code in Mesa);
+//   - a NaN or infinite distance drops the whole triangle;
+//   - the resulting polygon is emitted as a fan from its vertex 0.
+// Deliberately absent: user clip planes, clip distances, noperspective and flat varyings.
+#pragma once
+
+#include <softraster/detail/vertex_processing.hpp>
+
+#include <array>
+#include <cmath>
+#include <cstdint>
+
+namespace softraster::detail {
+
+// Upper bound on the vertices of a triangle clipped by six planes (Mesa's bound with no user planes).
+inline constexpr int kMaxClippedVertices = 2 * 6 + 1;
+
+template <int N>
+struct ClippedPolygon {
+  std::array<ShadedVertex<N>, kMaxClippedVertices + 1> vertices;
+  int count = 0;
+};
+
+inline float clipDistance(Vec4 p, int plane) {
+  // The plane vectors of draw_context.c / draw_pt_post_vs.c for Vulkan's [0, w] depth range.
+  static constexpr float kPlanes[6][4] = {{-1, 0, 0, 1}, {1, 0, 0, 1}, {0, -1, 0, 1},
+                                          {0, 1, 0, 1},  {0, 0, 1, 0}, {0, 0, -1, 1}};
+  const float* q = kPlanes[plane];
+  return p.x * q[0] + p.y * q[1] + p.z * q[2] + p.w * q[3];
+}
+
+template <int N>
+inline ShadedVertex<N> interpolateClipVertex(float t, const ShadedVertex<N>& base, const ShadedVertex<N>& other,
+                                             const ViewportTransform& vp) {
+  ShadedVertex<N> v;
+  for (int i = 0; i < 4; ++i) v.clip[i] = base.clip[i] + t * (other.clip[i] - base.clip[i]);
+  const float oneOverW = 1.0f / v.clip.w;
+  v.window = {v.clip.x * oneOverW * vp.scale[0] + vp.translate[0], v.clip.y * oneOverW * vp.scale[1] + vp.translate[1],
+              v.clip.z * oneOverW * vp.scale[2] + vp.translate[2], oneOverW};
+  for (int i = 0; i < N; ++i) v.varyings[i] = base.varyings[i] + t * (other.varyings[i] - base.varyings[i]);
+  v.clipMask = 0;
+  return v;
+}
+
+// Clips the triangle (a, b, c) whose vertices are outside the planes in `clipMask` (the OR of
+// their masks). Returns false when the triangle is dropped entirely (empty or NaN/Inf).
+template <int N>
+bool clipTriangle(const ShadedVertex<N>& a, const ShadedVertex<N>& b, const ShadedVertex<N>& c, std::uint32_t clipMask,
+                  const ViewportTransform& vp, ClippedPolygon<N>& result) {
+  // Two vertex lists that swap roles after each plane; indices point into `storage`.
+  std::array<ShadedVertex<N>, 3 + kMaxClippedVertices + 1> storage;
+  int stored = 0;
+  std::array<int, kMaxClippedVertices + 1> listA, listB;
+  int* in = listA.data();
+  int* out = listB.data();
+  storage[stored] = a;
+  in[0] = stored++;
+  storage[stored] = b;
+  in[1] = stored++;
+  storage[stored] = c;
+  in[2] = stored++;
+  int n = 3;
+
+  while (clipMask != 0 && n >= 3) {
+    const int plane = __builtin_ctz(clipMask);
+    clipMask &= clipMask - 1;
+
+    int previous = in[0];
+    float dpPrevious = clipDistance(storage[previous].clip, plane);
+    if (!std::isfinite(dpPrevious)) return false;
+    if (n >= kMaxClippedVertices) return false;
+    in[n] = in[0];
+
+    int outCount = 0;
+    for (int i = 1; i <= n; ++i) {
+      const int current = in[i];
+      const float dp = clipDistance(storage[current].clip, plane);
+      if (!std::isfinite(dp)) return false;
+
+      bool crosses;
+      if (dpPrevious >= 0.0f) {
+        if (outCount >= kMaxClippedVertices) return false;
+        out[outCount++] = previous;
+        crosses = dp < 0.0f;
+      } else {
+        crosses = !(dp < 0.0f);
+      }
+      if (crosses) {
+        if (outCount >= kMaxClippedVertices || stored >= static_cast<int>(storage.size())) return false;
+        const float denominator = dp - dpPrevious;
+        const ShadedVertex<N>& prev = storage[previous];
+        const ShadedVertex<N>& cur = storage[current];
+        ShadedVertex<N> made;
+        if (dp < 0.0f) {  // leaving: interpolate from whichever endpoint is nearer the plane
+          if (-dp < dpPrevious) {
+            made = interpolateClipVertex(dp / denominator, cur, prev, vp);
+          } else {
+            made = interpolateClipVertex(-dpPrevious / denominator, prev, cur, vp);
+          }
+        } else {  // coming back in
+          if (-dpPrevious < dp) {
+            made = interpolateClipVertex(-dpPrevious / denominator, prev, cur, vp);
+          } else {
+            made = interpolateClipVertex(dp / denominator, cur, prev, vp);
+          }
+        }
+        storage[stored] = made;
+        out[outCount++] = stored++;
+      }
+      previous = current;
+      dpPrevious = dp;
+    }
+    std::swap(in, out);
+    n = outCount;
+  }
+
+  if (n < 3) return false;
+  result.count = n;
+  for (int i = 0; i < n; ++i) result.vertices[i] = storage[in[i]];
+  return true;
+}
+
+}  // namespace softraster::detail

@@ -1,0 +1,58 @@
+// Interpolation: per-triangle plane equations for depth, 1/w and every varying, and their
+// evaluation at a pixel centre as lavapipe's fragment JIT code does it:
+//   a = fmuladd(dady, py, fmuladd(dadx, px, a0));
+//   perspective-correct varyings are set up pre-multiplied by 1/w at the vertices and divided
+//   per pixel by a real division: v = a * (1.0f / w_interp).
+// Deliberately absent until scenes need them: noperspective and flat varyings, centroid and
+// sample locations, derivatives.
+#pragma once
+
+#include <softraster/detail/fused_multiply_add.hpp>
+#include <softraster/detail/triangle_setup.hpp>
+
+#include <array>
+
+namespace softraster::detail {
+
+template <bool Fused>
+inline float evaluatePlane(const PlaneEquation& p, float px, float py) {
+  return fmuladd<Fused>(p.dady, py, fmuladd<Fused>(p.dadx, px, p.a0));
+}
+
+template <int N>
+struct TriangleInterpolants {
+  PlaneEquation depth;
+  PlaneEquation oneOverW;
+  std::array<PlaneEquation, N> varyings;
+};
+
+template <int N>
+inline TriangleInterpolants<N> setupInterpolants(const ShadedVertex<N>& v0, const ShadedVertex<N>& v1,
+                                                 const ShadedVertex<N>& v2) {
+  const PlaneSetup setup(v0.window, v1.window, v2.window);
+  TriangleInterpolants<N> t;
+  t.depth = setup.plane(v0.window.z, v1.window.z, v2.window.z);
+  t.oneOverW = setup.plane(v0.window.w, v1.window.w, v2.window.w);
+  for (int i = 0; i < N; ++i) {
+    t.varyings[i] = setup.plane(v0.varyings[i] * v0.window.w, v1.varyings[i] * v1.window.w,
+                                v2.varyings[i] * v2.window.w);
+  }
+  return t;
+}
+
+// Depth at the pixel centre, before the depth range clamp. The + 0.0f is lavapipe's
+// polygon-offset add (zero without depth bias); it turns -0 into +0 as there.
+template <bool Fused, int N>
+inline float interpolateDepth(const TriangleInterpolants<N>& t, float px, float py) {
+  return evaluatePlane<Fused>(t.depth, px, py) + 0.0f;
+}
+
+template <bool Fused, int N>
+inline void interpolateVaryings(const TriangleInterpolants<N>& t, float px, float py, float* out) {
+  if constexpr (N > 0) {
+    const float w = 1.0f / evaluatePlane<Fused>(t.oneOverW, px, py);
+    for (int i = 0; i < N; ++i) out[i] = evaluatePlane<Fused>(t.varyings[i], px, py) * w;
+  }
+}
+
+}  // namespace softraster::detail

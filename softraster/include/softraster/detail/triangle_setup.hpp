@@ -1,0 +1,161 @@
+// Triangle setup, as lavapipe's lp_setup_tri.c and lp_state_setup.c do it:
+//   - snapping: X = round_half_even((x_win - 0.5) * 256) with the subtraction in float
+//     (cvtps2dq: out-of-range and NaN give INT32_MIN);
+//   - the sign of the 64-bit fixed-point area decides facing, culling and, when negative,
+//     the vertex order (v0, v2, v1) used from here on (provoking vertex first);
+//   - three 64-bit edge functions with the top-left rule (window y points down);
+//   - float plane equations a(px, py) = a0 + dadx*px + dady*py for depth, 1/w and varyings,
+//     from the unsnapped window positions, in lavapipe's operation order, no FMA.
+// Deliberately absent: MSAA (pixel offset 0), depth bias, the bottom-left fill rule.
+#pragma once
+
+#include <softraster/detail/vertex_processing.hpp>
+#include <softraster/state.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+
+namespace softraster::detail {
+
+inline constexpr int kSubpixelBits = 8;
+inline constexpr float kSubpixelScale = 256.0f;
+inline constexpr float kPixelCentreOffset = 0.5f;  // lavapipe forces half-pixel centres
+
+// One window coordinate to 24.8 fixed point, as SSE's cvtps2dq does it in round-to-nearest-even.
+inline std::int32_t snapToSubpixel(float windowCoordinate) {
+  const float scaled = (windowCoordinate - kPixelCentreOffset) * kSubpixelScale;
+  if (!(scaled >= -2147483648.0f && scaled < 2147483648.0f)) return INT32_MIN;
+  return static_cast<std::int32_t>(std::nearbyint(scaled));
+}
+
+struct FixedTriangle {
+  std::int32_t x[3];
+  std::int32_t y[3];
+};
+
+inline FixedTriangle snapTriangle(Vec4 w0, Vec4 w1, Vec4 w2) {
+  return {{snapToSubpixel(w0.x), snapToSubpixel(w1.x), snapToSubpixel(w2.x)},
+          {snapToSubpixel(w0.y), snapToSubpixel(w1.y), snapToSubpixel(w2.y)}};
+}
+
+// Sign of (X0-X1)*(Y2-Y0) - (X2-X0)*(Y0-Y1), with lavapipe's 32-bit differences and
+// wrapping 64-bit arithmetic. Positive is counter-clockwise in Vulkan's sense.
+inline int fixedAreaSign(const FixedTriangle& t) {
+  const auto dx01 = static_cast<std::int32_t>(static_cast<std::uint32_t>(t.x[0]) - static_cast<std::uint32_t>(t.x[1]));
+  const auto dy01 = static_cast<std::int32_t>(static_cast<std::uint32_t>(t.y[0]) - static_cast<std::uint32_t>(t.y[1]));
+  const auto dx20 = static_cast<std::int32_t>(static_cast<std::uint32_t>(t.x[2]) - static_cast<std::uint32_t>(t.x[0]));
+  const auto dy20 = static_cast<std::int32_t>(static_cast<std::uint32_t>(t.y[2]) - static_cast<std::uint32_t>(t.y[0]));
+  const std::uint64_t area = static_cast<std::uint64_t>(std::int64_t{dx01} * dy20) -
+                             static_cast<std::uint64_t>(std::int64_t{dx20} * dy01);
+  return area == 0 ? 0 : (area >> 63) ? -1 : 1;
+}
+
+// Which fixed-point windings survive culling (lp_setup_choose_triangle).
+struct WindingFilter {
+  bool drawCounterClockwise;
+  bool drawClockwise;
+};
+
+inline WindingFilter windingFilter(const RasterizationState& rs) {
+  const bool ccwIsFront = rs.frontFace == FrontFace::CounterClockwise;
+  switch (rs.cullMode) {
+    case CullMode::None: return {true, true};
+    case CullMode::Back: return {ccwIsFront, !ccwIsFront};
+    case CullMode::Front: return {!ccwIsFront, ccwIsFront};
+    case CullMode::FrontAndBack: return {false, false};
+  }
+  return {false, false};
+}
+
+// The float-determinant cull of Mesa's draw pipeline (draw_pipe_cull.c). It runs, before setup,
+// on every triangle of a vertex batch that needed clipping. Zero determinant counts as back.
+inline bool survivesPipelineCull(Vec4 w0, Vec4 w1, Vec4 w2, const RasterizationState& rs) {
+  if (rs.cullMode == CullMode::None) return true;
+  const float ex = w0.x - w2.x, ey = w0.y - w2.y;
+  const float fx = w1.x - w2.x, fy = w1.y - w2.y;
+  const float det = ex * fy - ey * fx;
+  const bool cullFront = rs.cullMode == CullMode::Front || rs.cullMode == CullMode::FrontAndBack;
+  const bool cullBack = rs.cullMode == CullMode::Back || rs.cullMode == CullMode::FrontAndBack;
+  if (det == 0.0f) return !cullBack;
+  const bool ccw = det < 0.0f;
+  const bool front = ccw == (rs.frontFace == FrontFace::CounterClockwise);
+  return front ? !cullFront : !cullBack;
+}
+
+// Edge function i (vertex i to i+1) in units of 1/256 px, evaluated at pixel (px, py) as
+// c + dcdy*py - dcdx*px; the pixel centre is inside the edge when the value is > 0.
+struct EdgeFunction {
+  std::int64_t c;
+  std::int64_t dcdx;  // DY << 8
+  std::int64_t dcdy;  // DX << 8
+};
+
+struct PixelRect {  // inclusive bounds
+  int x0, y0, x1, y1;
+  bool empty() const { return x0 > x1 || y0 > y1; }
+};
+
+struct TriangleEdges {
+  EdgeFunction edges[3];
+  PixelRect bounds;  // pixels whose centres may be covered
+};
+
+// Edge functions of a counter-clockwise (positive-area) fixed-point triangle.
+inline TriangleEdges setupEdges(const FixedTriangle& t) {
+  TriangleEdges e;
+  for (int i = 0; i < 3; ++i) {
+    const int j = (i + 1) % 3;
+    const std::int64_t dy = std::int64_t{t.y[i]} - t.y[j];
+    const std::int64_t dx = std::int64_t{t.x[i]} - t.x[j];
+    std::int64_t c = dy * t.x[i] - dx * t.y[i];
+    if (dy < 0 || (dy == 0 && dx > 0)) c += 1;  // top-left rule: left and top edges own their pixels
+    e.edges[i] = {c, dy << kSubpixelBits, dx << kSubpixelBits};
+  }
+  const int minX = std::min({t.x[0], t.x[1], t.x[2]});
+  const int maxX = std::max({t.x[0], t.x[1], t.x[2]});
+  const int minY = std::min({t.y[0], t.y[1], t.y[2]});
+  const int maxY = std::max({t.y[0], t.y[1], t.y[2]});
+  e.bounds = {minX >> kSubpixelBits, minY >> kSubpixelBits, (maxX - 1) >> kSubpixelBits, (maxY - 1) >> kSubpixelBits};
+  return e;
+}
+
+// a(px, py) = a0 + dadx*px + dady*py at the centre of pixel (px, py).
+struct PlaneEquation {
+  float a0 = 0, dadx = 0, dady = 0;
+};
+
+// The shared part of the plane setup of one triangle (init_args in lp_state_setup.c).
+class PlaneSetup {
+ public:
+  PlaneSetup(Vec4 w0, Vec4 w1, Vec4 w2) {
+    const float dx01 = w0.x - w1.x, dy01 = w0.y - w1.y;
+    const float dx20 = w2.x - w0.x, dy20 = w2.y - w0.y;
+    const float e = dx01 * dy20;
+    const float f = dy01 * dx20;
+    const float ooa = 1.0f / (e - f);
+    dx20_ooa_ = dx20 * ooa;
+    dy20_ooa_ = dy20 * ooa;
+    dx01_ooa_ = dx01 * ooa;
+    dy01_ooa_ = dy01 * ooa;
+    x0Centre_ = w0.x - kPixelCentreOffset;
+    y0Centre_ = w0.y - kPixelCentreOffset;
+  }
+
+  // calc_coef4 in lp_state_setup.c.
+  PlaneEquation plane(float a0, float a1, float a2) const {
+    const float da01 = a0 - a1;
+    const float da20 = a2 - a0;
+    PlaneEquation p;
+    p.dadx = da01 * dy20_ooa_ - da20 * dy01_ooa_;
+    p.dady = da20 * dx01_ooa_ - da01 * dx20_ooa_;
+    p.a0 = a0 - (p.dadx * x0Centre_ + p.dady * y0Centre_);
+    return p;
+  }
+
+ private:
+  float dx20_ooa_, dy20_ooa_, dx01_ooa_, dy01_ooa_;
+  float x0Centre_, y0Centre_;
+};
+
+}  // namespace softraster::detail

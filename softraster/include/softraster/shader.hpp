@@ -1,0 +1,28 @@
+// The shader interface softraster's pipeline is a template over, and the vertex-layout
+// description both renderers read from a shader's C++ twin.
+//
+// A shader type S provides:
+//   struct S::Vertex;                        the vertex as stored in the vertex buffer
+//   struct S::Uniforms;                      per-draw constants (a push-constant block in GLSL)
+//   static constexpr int S::kVaryings;       number of float varyings (0..kMaxVaryings)
+//   static constexpr std::array<VertexAttribute, N> S::kAttributes;   locations of Vertex's fields
+//   static Vec4 S::vertex(const Uniforms&, const Vertex&, float* varyingsOut);   clip position
+//   static Vec4 S::fragment(const Uniforms&, const float* varyingsIn);           RGBA colour
+// Deliberately no virtual functions: the pipeline is instantiated per shader, so a varying a
+// shader does not declare costs nothing.
+#pragma once
+
+#include <cstdint>
+
+namespace softraster {
+
+inline constexpr int kMaxVaryings = 16;
+
+// One vertex input: `components` consecutive 32-bit floats at byte `offset` of the vertex.
+struct VertexAttribute {
+  std::uint32_t location = 0;
+  std::uint32_t components = 0;
+  std::uint32_t offset = 0;
+};
+
+}  // namespace softraster
