@@ -1,0 +1,64 @@
+// Cross-check: the room scene rendered by softraster and by Vulkan on lavapipe, with the
+// validation layer on (any message fails), compared within the scene's tolerance.
+// On failure the soft, vulkan and diff images are written to build/test-artifacts/<scene>/.
+#include "compare.hpp"
+#include "image_io.hpp"
+#include "render.hpp"
+#include "scene.hpp"
+
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <memory>
+
+namespace {
+
+const std::filesystem::path kScenes = SCENES_DIR;
+const std::filesystem::path kArtifacts = ARTIFACTS_DIR;
+
+void writeArtifacts(const std::string& name, const crosscheck::Frame& soft, const crosscheck::Frame& vulkan,
+                    const crosscheck::Scene& scene) {
+  const auto dir = kArtifacts / name;
+  std::string error;
+  crosscheck::writePng(dir / "soft.png", soft.width, soft.height, soft.rgba, &error);
+  crosscheck::writePng(dir / "vulkan.png", vulkan.width, vulkan.height, vulkan.rgba, &error);
+  crosscheck::writePng(dir / "diff.png", soft.width, soft.height, crosscheck::diffHeatmap(soft, vulkan, scene), &error);
+  ADD_FAILURE() << "images written to " << dir.string();
+}
+
+void crossCheckScene(const std::string& name) {
+  std::string error;
+  const auto scene = crosscheck::loadScene(kScenes / (name + ".json"), &error);
+  ASSERT_TRUE(scene) << error;
+
+  vkref::DeviceOptions options;
+  options.validation = true;
+  auto vulkan = vkref::Renderer::create(options, &error);
+  ASSERT_TRUE(vulkan) << error;
+
+  const auto soft = crosscheck::renderSoftraster(*scene, &error);
+  ASSERT_TRUE(soft) << error;
+  const auto reference = crosscheck::renderVulkan(*scene, *vulkan, &error);
+  ASSERT_TRUE(reference) << error;
+  for (const std::string& message : vulkan->validationMessages()) ADD_FAILURE() << "validation: " << message;
+
+  const crosscheck::Comparison c = crosscheck::compareFrames(*soft, *reference, *scene);
+  ::testing::Test::RecordProperty("coverage_mismatches", std::to_string(c.coverageMismatches));
+  ::testing::Test::RecordProperty("depth_max_delta", std::to_string(c.depthMaxDelta));
+  EXPECT_LE(c.coverageMismatches, scene->tolerance.maxCoverageMismatches);
+  EXPECT_LE(c.colourPixelsOver, scene->tolerance.maxColourPixelsOver);
+  EXPECT_LE(c.depthPixelsOver, scene->tolerance.maxDepthPixelsOver);
+  for (int ch = 0; ch < 4; ++ch) EXPECT_LE(c.colourMaxDelta[ch], scene->tolerance.colourThreshold) << "channel " << ch;
+  EXPECT_LE(c.depthMaxDelta, scene->tolerance.depthThreshold);
+
+  // The scene must actually draw something, or agreement proves nothing.
+  std::size_t covered = 0;
+  for (float z : soft->depth) covered += z != scene->clearDepth;
+  EXPECT_GT(covered, soft->depth.size() / 2);
+
+  if (::testing::Test::HasFailure()) writeArtifacts(name, *soft, *reference, *scene);
+}
+
+}  // namespace
+
+TEST(CrossCheck, Room) { crossCheckScene("room"); }

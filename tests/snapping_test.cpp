@@ -1,0 +1,42 @@
+// Snapping to 1/256 px: round half to even after subtracting the pixel-centre offset in float.
+#include <softraster/detail/triangle_setup.hpp>
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <limits>
+
+using softraster::detail::snapToSubpixel;
+
+TEST(Snapping, PixelCentresMapToMultiplesOf256) {
+  EXPECT_EQ(snapToSubpixel(0.5f), 0);
+  EXPECT_EQ(snapToSubpixel(1.5f), 256);
+  EXPECT_EQ(snapToSubpixel(10.5f), 2560);
+  EXPECT_EQ(snapToSubpixel(0.0f), -128);
+  EXPECT_EQ(snapToSubpixel(-3.5f), -1024);
+}
+
+TEST(Snapping, HalfwayRoundsToEven) {
+  // (x - 0.5) * 256 = k + 0.5 exactly: ties go to the even neighbour, in both directions.
+  EXPECT_EQ(snapToSubpixel(0.5f + 0.5f / 256), 0);
+  EXPECT_EQ(snapToSubpixel(0.5f + 1.5f / 256), 2);
+  EXPECT_EQ(snapToSubpixel(0.5f + 2.5f / 256), 2);
+  EXPECT_EQ(snapToSubpixel(0.5f - 0.5f / 256), 0);
+  EXPECT_EQ(snapToSubpixel(0.5f - 1.5f / 256), -2);
+  // Just off the tie rounds to nearest.
+  EXPECT_EQ(snapToSubpixel(std::nextafter(0.5f + 0.5f / 256, 1.0f)), 1);
+}
+
+TEST(Snapping, SubtractionHappensInFloat) {
+  // 1e6 + 0.3 is not representable: the float subtraction rounds before scaling.
+  const float x = 1000000.3f;  // stored as 1000000.3125
+  EXPECT_EQ(snapToSubpixel(x), static_cast<int>(std::nearbyint((x - 0.5f) * 256.0f)));
+  EXPECT_EQ(snapToSubpixel(x), 255999952);
+}
+
+TEST(Snapping, OutOfRangeAndNaNGiveIntMin) {
+  EXPECT_EQ(snapToSubpixel(std::numeric_limits<float>::quiet_NaN()), INT32_MIN);
+  EXPECT_EQ(snapToSubpixel(std::numeric_limits<float>::infinity()), INT32_MIN);
+  EXPECT_EQ(snapToSubpixel(1e8f), INT32_MIN);
+  EXPECT_EQ(snapToSubpixel(-1e8f), INT32_MIN);
+}
