@@ -39,11 +39,12 @@ std::vector<std::byte> bytesOf(const T* data, std::size_t count) {
 
 }  // namespace
 
-std::optional<Frame> renderSoftraster(const Scene& scene, std::string* error) {
+std::optional<Frame> renderSoftraster(const Scene& scene, std::string* error,
+                                     const softraster::ContextOptions& options) {
   const auto start = Clock::now();
   softraster::Framebuffer framebuffer(scene.width, scene.height);
   framebuffer.clear(scene.clearColour, scene.clearDepth);
-  const softraster::Context context;
+  const softraster::Context context(options);
   for (const Draw& draw : scene.draws) {
     const shaders::VertexColor::Uniforms uniforms{scene.viewProjection};
     const softraster::Status status = context.draw<shaders::VertexColor>(

@@ -5,6 +5,7 @@
 
 #include "scene.hpp"
 
+#include <softraster/pipeline.hpp>
 #include <vkref/renderer.hpp>
 
 #include <cstdint>
@@ -21,7 +22,8 @@ struct Frame {
   double milliseconds = 0;  // wall time of the render call itself
 };
 
-std::optional<Frame> renderSoftraster(const Scene& scene, std::string* error);
+std::optional<Frame> renderSoftraster(const Scene& scene, std::string* error,
+                                     const softraster::ContextOptions& options = {});
 std::optional<Frame> renderVulkan(const Scene& scene, vkref::Renderer& renderer, std::string* error);
 
 }  // namespace crosscheck
