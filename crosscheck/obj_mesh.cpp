@@ -6,6 +6,16 @@
 #include <algorithm>
 
 namespace crosscheck {
+namespace {
+
+// tinyobjloader's messages end in newlines and may hold several; errors here are one line.
+std::string oneLine(std::string message) {
+  while (!message.empty() && (message.back() == '\n' || message.back() == '\r')) message.pop_back();
+  std::replace(message.begin(), message.end(), '\n', ';');
+  return message;
+}
+
+}  // namespace
 
 std::optional<ObjMesh> loadObjMesh(const std::filesystem::path& path, softraster::Vec4 fallbackColour,
                                    std::string* error) {
@@ -18,22 +28,13 @@ std::optional<ObjMesh> loadObjMesh(const std::filesystem::path& path, softraster
     return std::nullopt;
   }
   if (!reader.ParseFromFile(path.string(), config)) {
-    std::string message = reader.Error();
-    while (!message.empty() && (message.back() == '\n' || message.back() == '\r')) message.pop_back();
-    for (char& ch : message) {
-      if (ch == '\n') ch = ';';
-    }
+    const std::string message = oneLine(reader.Error());
     *error = path.string() + ": " + (message.empty() ? "cannot be parsed as OBJ" : message);
     return std::nullopt;
   }
   // Warnings (e.g. a missing .mtl) are errors here: a scene must render what its author meant.
   if (!reader.Warning().empty()) {
-    std::string message = reader.Warning();
-    while (!message.empty() && message.back() == '\n') message.pop_back();
-    for (char& ch : message) {
-      if (ch == '\n') ch = ';';
-    }
-    *error = path.string() + ": " + message;
+    *error = path.string() + ": " + oneLine(reader.Warning());
     return std::nullopt;
   }
 
