@@ -2,6 +2,7 @@
 #include "compare.hpp"
 
 #include <algorithm>
+#include <bit>
 #include <cmath>
 #include <cstdlib>
 #include <limits>
@@ -19,8 +20,22 @@ std::array<std::uint8_t, 4> clearColourBytes(const Scene& scene) {
           toByte(scene.clearColour.w)};
 }
 
-bool covered(const Frame& f, std::size_t i, const std::array<std::uint8_t, 4>& clear, float clearDepth) {
-  return f.depth[i] != clearDepth || !std::equal(clear.begin(), clear.end(), f.rgba.begin() + static_cast<std::ptrdiff_t>(4 * i));
+bool covered(const Frame& f, std::size_t i, const std::array<std::uint8_t, 4>& clear, std::uint32_t clearDepth) {
+  return f.depthStorage[i] != clearDepth || !std::equal(clear.begin(), clear.end(), f.rgba.begin() + static_cast<std::ptrdiff_t>(4 * i));
+}
+
+// |a - b| of two stored depths, in depth units ([0, 1] range): whole steps of 1/(2^n - 1) for
+// UNORM formats, the float difference for D32_SFLOAT (infinite where only one side is NaN).
+double depthDelta(std::uint32_t a, std::uint32_t b, softraster::DepthFormat format) {
+  const int bits = softraster::unormDepthBits(format);
+  if (bits != 0) {
+    const auto steps = a > b ? a - b : b - a;
+    return static_cast<double>(steps) / static_cast<double>((1u << bits) - 1);
+  }
+  const float za = std::bit_cast<float>(a), zb = std::bit_cast<float>(b);
+  const bool nanA = std::isnan(za), nanB = std::isnan(zb);
+  if (nanA || nanB) return nanA && nanB ? 0.0 : std::numeric_limits<double>::infinity();
+  return std::fabs(double{za} - double{zb});
 }
 
 std::string formatLimit(const char* metric, double value, double limit) {
@@ -33,17 +48,18 @@ std::string formatLimit(const char* metric, double value, double limit) {
 
 Comparison compareFrames(const Frame& a, const Frame& b, const Scene& scene) {
   Comparison c;
-  if (a.width != b.width || a.height != b.height) {
-    c.failures.push_back("image sizes differ");
+  if (a.width != b.width || a.height != b.height || a.depthFormat != b.depthFormat) {
+    c.failures.push_back("image sizes or depth formats differ");
     return c;
   }
   const Tolerance& tol = scene.tolerance;
   const auto clear = clearColourBytes(scene);
+  const std::uint32_t clearDepth = softraster::depthClearValue(scene.depthFormat, scene.clearDepth);
   c.pixels = static_cast<std::uint64_t>(a.width) * a.height;
   std::array<std::uint64_t, 4> sums{};
   double squaredErrorRgb = 0;
   for (std::size_t i = 0; i < c.pixels; ++i) {
-    if (covered(a, i, clear, scene.clearDepth) != covered(b, i, clear, scene.clearDepth)) ++c.coverageMismatches;
+    if (covered(a, i, clear, clearDepth) != covered(b, i, clear, clearDepth)) ++c.coverageMismatches;
     bool over = false;
     for (int ch = 0; ch < 4; ++ch) {
       const int d = std::abs(int{a.rgba[4 * i + ch]} - int{b.rgba[4 * i + ch]});
@@ -53,10 +69,7 @@ Comparison compareFrames(const Frame& a, const Frame& b, const Scene& scene) {
       over = over || d > tol.colourThreshold;
     }
     if (over) ++c.colourPixelsOver;
-    const float za = a.depth[i], zb = b.depth[i];
-    const bool nanA = std::isnan(za), nanB = std::isnan(zb);
-    const double dz = (nanA || nanB) ? (nanA && nanB ? 0.0 : std::numeric_limits<double>::infinity())
-                                     : std::fabs(double{za} - double{zb});
+    const double dz = depthDelta(a.depthStorage[i], b.depthStorage[i], a.depthFormat);
     c.depthMaxDelta = std::max(c.depthMaxDelta, dz);
     if (dz > tol.depthThreshold) ++c.depthPixelsOver;
   }
@@ -77,10 +90,11 @@ std::vector<std::uint8_t> diffHeatmap(const Frame& a, const Frame& b, const Scen
   const std::size_t pixels = static_cast<std::size_t>(a.width) * a.height;
   std::vector<std::uint8_t> out(4 * pixels, 0);
   const auto clear = clearColourBytes(scene);
+  const std::uint32_t clearDepth = softraster::depthClearValue(scene.depthFormat, scene.clearDepth);
   for (std::size_t i = 0; i < pixels; ++i) {
     std::uint8_t* p = &out[4 * i];
     p[3] = 255;
-    if (covered(a, i, clear, scene.clearDepth) != covered(b, i, clear, scene.clearDepth)) {
+    if (covered(a, i, clear, clearDepth) != covered(b, i, clear, clearDepth)) {
       p[0] = 255, p[1] = 0, p[2] = 255;
       continue;
     }

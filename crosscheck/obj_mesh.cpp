@@ -63,7 +63,7 @@ std::optional<ObjMesh> loadObjMesh(const std::filesystem::path& path, softraster
           return std::nullopt;
         }
         const auto i = static_cast<std::size_t>(p);
-        shaders::VertexColor::Vertex v;
+        shaders::VertexColorVertex v;
         v.position = {attrib.vertices[3 * i], attrib.vertices[3 * i + 1], attrib.vertices[3 * i + 2]};
         v.colour = hasVertexColours ? softraster::Vec4{attrib.colors[3 * i], attrib.colors[3 * i + 1],
                                                        attrib.colors[3 * i + 2], 1.0f}

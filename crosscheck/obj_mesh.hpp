@@ -14,7 +14,7 @@
 namespace crosscheck {
 
 struct ObjMesh {
-  std::vector<shaders::VertexColor::Vertex> vertices;  // one per face corner
+  std::vector<shaders::VertexColorVertex> vertices;  // one per face corner
   std::vector<std::uint32_t> indices;
 };
 

@@ -3,7 +3,11 @@
 
 #include <softraster/pipeline.hpp>
 
+#include <shaders/vertex_color_flat_frag.spv.h>
+#include <shaders/vertex_color_flat_vert.spv.h>
 #include <shaders/vertex_color_frag.spv.h>
+#include <shaders/vertex_color_noperspective_frag.spv.h>
+#include <shaders/vertex_color_noperspective_vert.spv.h>
 #include <shaders/vertex_color_vert.spv.h>
 
 #include <chrono>
@@ -19,15 +23,44 @@ double millisecondsSince(Clock::time_point start) {
   return std::chrono::duration<double, std::milli>(Clock::now() - start).count();
 }
 
-// The vertex_color pair as vkref needs it: SPIR-V from the build, layout from the C++ twin.
-vkref::ShaderProgram vertexColorProgram() {
-  vkref::ShaderProgram program;
-  program.name = "vertex_color";
-  program.vertexSpirv = {vertex_color_vert_spirv, std::size(vertex_color_vert_spirv)};
-  program.fragmentSpirv = {vertex_color_frag_spirv, std::size(vertex_color_frag_spirv)};
-  program.attributes.assign(shaders::VertexColor::kAttributes.begin(), shaders::VertexColor::kAttributes.end());
-  program.vertexStride = sizeof(shaders::VertexColor::Vertex);
-  return program;
+// A shading model's compiled SPIR-V pair and the vertex layout of its C++ twin.
+template <class Shader, std::size_t VertWords, std::size_t FragWords>
+vkref::ShaderProgram program(const char* name, const std::uint32_t (&vert)[VertWords],
+                             const std::uint32_t (&frag)[FragWords]) {
+  vkref::ShaderProgram p;
+  p.name = name;
+  p.vertexSpirv = {vert, VertWords};
+  p.fragmentSpirv = {frag, FragWords};
+  p.attributes.assign(Shader::kAttributes.begin(), Shader::kAttributes.end());
+  p.vertexStride = sizeof(typename Shader::Vertex);
+  return p;
+}
+
+vkref::ShaderProgram programFor(ShadingModel model) {
+  switch (model) {
+    case ShadingModel::VertexColorFlat:
+      return program<shaders::VertexColorFlat>("vertex_color_flat", vertex_color_flat_vert_spirv,
+                                               vertex_color_flat_frag_spirv);
+    case ShadingModel::VertexColorNoPerspective:
+      return program<shaders::VertexColorNoPerspective>("vertex_color_noperspective",
+                                                        vertex_color_noperspective_vert_spirv,
+                                                        vertex_color_noperspective_frag_spirv);
+    case ShadingModel::VertexColor:
+      break;
+  }
+  return program<shaders::VertexColor>("vertex_color", vertex_color_vert_spirv, vertex_color_frag_spirv);
+}
+
+// Calls f with a value of the C++ shader type of `model` (all vertex_color variants share
+// their vertex and uniform types).
+template <class F>
+softraster::Status withShader(ShadingModel model, F&& f) {
+  switch (model) {
+    case ShadingModel::VertexColorFlat: return f(shaders::VertexColorFlat{});
+    case ShadingModel::VertexColorNoPerspective: return f(shaders::VertexColorNoPerspective{});
+    case ShadingModel::VertexColor: break;
+  }
+  return f(shaders::VertexColor{});
 }
 
 template <class T>
@@ -42,14 +75,17 @@ std::vector<std::byte> bytesOf(const T* data, std::size_t count) {
 std::optional<Frame> renderSoftraster(const Scene& scene, std::string* error,
                                      const softraster::ContextOptions& options) {
   const auto start = Clock::now();
-  softraster::Framebuffer framebuffer(scene.width, scene.height);
+  softraster::Framebuffer framebuffer(scene.width, scene.height, scene.depthFormat);
   framebuffer.clear(scene.clearColour, scene.clearDepth);
   const softraster::Context context(options);
   for (const Draw& draw : scene.draws) {
-    const shaders::VertexColor::Uniforms uniforms{scene.viewProjection};
-    const softraster::Status status = context.draw<shaders::VertexColor>(
-        draw.state, uniforms, std::span<const shaders::VertexColor::Vertex>(draw.vertices),
-        std::span<const std::uint32_t>(draw.indices), framebuffer);
+    const softraster::Status status = withShader(draw.shading, [&](auto shader) {
+      using Shader = decltype(shader);
+      const typename Shader::Uniforms uniforms{scene.viewProjection};
+      const std::span<const typename Shader::Vertex> vertices(draw.vertices);
+      return draw.indexed ? context.drawIndexed<Shader>(draw.state, uniforms, vertices, draw.indices, framebuffer)
+                          : context.draw<Shader>(draw.state, uniforms, vertices, framebuffer);
+    });
     if (!status) {
       *error = "softraster: draw '" + draw.name + "': " + status.message();
       return std::nullopt;
@@ -60,22 +96,28 @@ std::optional<Frame> renderSoftraster(const Scene& scene, std::string* error,
   frame.width = scene.width;
   frame.height = scene.height;
   frame.rgba = std::move(framebuffer.colour());
-  frame.depth = std::move(framebuffer.depth());
+  frame.depthFormat = scene.depthFormat;
+  frame.depth.resize(framebuffer.depthStorage().size());
+  for (std::size_t i = 0; i < frame.depth.size(); ++i) frame.depth[i] = framebuffer.depth(i);
+  frame.depthStorage = std::move(framebuffer.depthStorage());
   return frame;
 }
 
 std::optional<Frame> renderVulkan(const Scene& scene, vkref::Renderer& renderer, std::string* error) {
-  const vkref::ShaderProgram vertexColor = vertexColorProgram();
+  std::vector<vkref::ShaderProgram> programs;  // one per draw, alive until the frame is rendered
+  programs.reserve(scene.draws.size());
   vkref::FrameRequest request;
   request.width = scene.width;
   request.height = scene.height;
   request.clearColour = {scene.clearColour.x, scene.clearColour.y, scene.clearColour.z, scene.clearColour.w};
   request.clearDepth = scene.clearDepth;
+  request.depthFormat = scene.depthFormat;
   for (const Draw& draw : scene.draws) {
     vkref::DrawCall call;
-    call.program = &vertexColor;
+    call.program = &programs.emplace_back(programFor(draw.shading));
     call.state = draw.state;
     call.vertexData = bytesOf(draw.vertices.data(), draw.vertices.size());
+    call.indexed = draw.indexed;
     call.indices = draw.indices;
     const shaders::VertexColor::Uniforms uniforms{scene.viewProjection};
     call.pushConstants = bytesOf(&uniforms, 1);
@@ -94,6 +136,8 @@ std::optional<Frame> renderVulkan(const Scene& scene, vkref::Renderer& renderer,
   frame.height = images.height;
   frame.rgba = std::move(images.rgba);
   frame.depth = std::move(images.depth);
+  frame.depthFormat = scene.depthFormat;
+  frame.depthStorage = std::move(images.depthStorage);
   return frame;
 }
 

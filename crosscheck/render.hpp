@@ -18,8 +18,10 @@ namespace crosscheck {
 struct Frame {
   std::uint32_t width = 0, height = 0;
   std::vector<std::uint8_t> rgba;
-  std::vector<float> depth;
-  double milliseconds = 0;  // wall time of the render call itself
+  std::vector<float> depth;                 // as floats in [0, 1], for views
+  softraster::DepthFormat depthFormat = softraster::DepthFormat::D32Sfloat;
+  std::vector<std::uint32_t> depthStorage;  // as the format stores it, for exact comparison
+  double milliseconds = 0;                  // wall time of the render call itself
 };
 
 std::optional<Frame> renderSoftraster(const Scene& scene, std::string* error,

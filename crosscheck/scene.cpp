@@ -143,7 +143,38 @@ void readDrawState(const json& d, const std::string& place, softraster::Pipeline
   using softraster::CompareOp;
   using softraster::CullMode;
   using softraster::FrontFace;
+  using softraster::Topology;
+  state.topology = readEnum(d, "topology", place, state.topology,
+                            {{"point_list", Topology::PointList}, {"line_list", Topology::LineList},
+                             {"line_strip", Topology::LineStrip}, {"triangle_list", Topology::TriangleList},
+                             {"triangle_strip", Topology::TriangleStrip}, {"triangle_fan", Topology::TriangleFan}});
+  if (d.contains("viewport")) {
+    const std::string vp = placeOf(place, "viewport");
+    const json& v = d["viewport"];
+    checkKeys(v, vp, {"x", "y", "width", "height", "min_depth", "max_depth"});
+    auto& viewport = state.viewport;
+    viewport.x = static_cast<float>(readNumber(v, "x", vp, 0));
+    viewport.y = static_cast<float>(readNumber(v, "y", vp, 0));
+    viewport.width = static_cast<float>(readNumber(v, "width", vp, 0));
+    viewport.height = static_cast<float>(readNumber(v, "height", vp, 0));
+    viewport.minDepth = static_cast<float>(readNumber(v, "min_depth", vp, 0));
+    viewport.maxDepth = static_cast<float>(readNumber(v, "max_depth", vp, 1));
+    if (viewport.width < 0 || viewport.height < 0) throw SceneError(vp, "width and height must not be negative");
+    if (!(viewport.minDepth >= 0 && viewport.minDepth <= 1 && viewport.maxDepth >= 0 && viewport.maxDepth <= 1)) {
+      throw SceneError(vp, "min_depth and max_depth must be in [0, 1]");
+    }
+  }
+  if (d.contains("scissor")) {
+    const std::string sp = placeOf(place, "scissor");
+    const json& sc = d["scissor"];
+    checkKeys(sc, sp, {"x", "y", "width", "height"});
+    state.scissor.x = static_cast<std::int32_t>(readCount(sc, "x", sp, 0));
+    state.scissor.y = static_cast<std::int32_t>(readCount(sc, "y", sp, 0));
+    state.scissor.width = static_cast<std::uint32_t>(readCount(sc, "width", sp, 0));
+    state.scissor.height = static_cast<std::uint32_t>(readCount(sc, "height", sp, 0));
+  }
   auto& rs = state.rasterization;
+  rs.depthClampEnable = readBool(d, "depth_clamp", place, rs.depthClampEnable);
   rs.cullMode = readEnum(d, "cull", place, rs.cullMode,
                          {{"none", CullMode::None}, {"front", CullMode::Front}, {"back", CullMode::Back},
                           {"front_and_back", CullMode::FrontAndBack}});
@@ -160,12 +191,14 @@ void readDrawState(const json& d, const std::string& place, softraster::Pipeline
 }
 
 Draw readDraw(const json& d, const std::string& place, const std::filesystem::path& sceneDir) {
-  checkKeys(d, place, {"name", "obj", "positions", "colours", "colour", "indices", "shading", "cull", "front_face",
-                       "depth_test", "depth_write", "depth_compare"});
+  checkKeys(d, place, {"name", "obj", "positions", "colours", "colour", "indices", "shading", "topology", "viewport",
+                       "scissor", "cull", "front_face", "depth_clamp", "depth_test", "depth_write", "depth_compare"});
   Draw draw;
   draw.name = readString(d, "name", place, place);
-  const std::string shading = readString(d, "shading", place, "vertex_color");
-  if (shading != "vertex_color") throw SceneError(placeOf(place, "shading"), "'" + shading + "' is not one of vertex_color");
+  draw.shading = readEnum(d, "shading", place, ShadingModel::VertexColor,
+                          {{"vertex_color", ShadingModel::VertexColor},
+                           {"vertex_color_flat", ShadingModel::VertexColorFlat},
+                           {"vertex_color_noperspective", ShadingModel::VertexColorNoPerspective}});
   readDrawState(d, place, draw.state);
   const softraster::Vec4 colour = d.contains("colour") ? readColour(d["colour"], placeOf(place, "colour"))
                                                        : softraster::Vec4{1, 1, 1, 1};
@@ -173,6 +206,9 @@ Draw readDraw(const json& d, const std::string& place, const std::filesystem::pa
   if (d.contains("obj")) {
     if (d.contains("positions") || d.contains("indices") || d.contains("colours")) {
       throw SceneError(place, "a draw has either \"obj\" or inline \"positions\"/\"indices\", not both");
+    }
+    if (draw.state.topology != softraster::Topology::TriangleList) {
+      throw SceneError(placeOf(place, "topology"), "an OBJ mesh is a triangle list");
     }
     const std::string file = readString(d, "obj", place, "");
     std::string error;
@@ -188,7 +224,7 @@ Draw readDraw(const json& d, const std::string& place, const std::filesystem::pa
   if (!positions.is_array() || positions.empty()) throw SceneError(placeOf(place, "positions"), "expected an array of [x, y, z]");
   for (std::size_t i = 0; i < positions.size(); ++i) {
     const auto p = readNumbers(positions[i], placeOf(placeOf(place, "positions"), std::to_string(i)), 3, 3);
-    shaders::VertexColor::Vertex v;
+    shaders::VertexColorVertex v;
     v.position = {static_cast<float>(p[0]), static_cast<float>(p[1]), static_cast<float>(p[2])};
     v.colour = colour;
     draw.vertices.push_back(v);
@@ -204,9 +240,7 @@ Draw readDraw(const json& d, const std::string& place, const std::filesystem::pa
   }
   if (d.contains("indices")) {
     const json& indices = d["indices"];
-    if (!indices.is_array() || indices.size() % 3 != 0) {
-      throw SceneError(placeOf(place, "indices"), "expected an array of indices, three per triangle");
-    }
+    if (!indices.is_array()) throw SceneError(placeOf(place, "indices"), "expected an array of indices");
     for (std::size_t i = 0; i < indices.size(); ++i) {
       const json& index = indices[i];
       if (!index.is_number_integer() || index.get<std::int64_t>() < 0 ||
@@ -217,8 +251,7 @@ Draw readDraw(const json& d, const std::string& place, const std::filesystem::pa
       draw.indices.push_back(index.get<std::uint32_t>());
     }
   } else {
-    if (draw.vertices.size() % 3 != 0) throw SceneError(placeOf(place, "positions"), "without indices, needs three positions per triangle");
-    for (std::uint32_t i = 0; i < draw.vertices.size(); ++i) draw.indices.push_back(i);
+    draw.indexed = false;  // vertices in order, assembled by the topology
   }
   return draw;
 }
@@ -264,7 +297,11 @@ Scene readScene(json& document, const std::filesystem::path& path, const std::ve
 
   if (document.contains("framebuffer")) {
     const json& fb = document["framebuffer"];
-    checkKeys(fb, "/framebuffer", {"width", "height", "clear_colour", "clear_depth"});
+    checkKeys(fb, "/framebuffer", {"width", "height", "clear_colour", "clear_depth", "depth_format"});
+    scene.depthFormat = readEnum(fb, "depth_format", "/framebuffer", scene.depthFormat,
+                                 {{"d16_unorm", softraster::DepthFormat::D16Unorm},
+                                  {"x8_d24_unorm", softraster::DepthFormat::X8D24UnormPack32},
+                                  {"d32_sfloat", softraster::DepthFormat::D32Sfloat}});
     scene.width = static_cast<std::uint32_t>(readCount(fb, "width", "/framebuffer", scene.width));
     scene.height = static_cast<std::uint32_t>(readCount(fb, "height", "/framebuffer", scene.height));
     if (scene.width == 0 || scene.height == 0 || scene.width > 8192 || scene.height > 8192) {

@@ -4,6 +4,7 @@
 // Deliberately no scene graph: a scene is a camera plus a flat list of draws.
 #pragma once
 
+#include <softraster/framebuffer.hpp>
 #include <softraster/math.hpp>
 #include <softraster/state.hpp>
 
@@ -17,13 +18,14 @@
 
 namespace crosscheck {
 
-enum class ShadingModel { VertexColor };
+enum class ShadingModel { VertexColor, VertexColorFlat, VertexColorNoPerspective };
 
 struct Draw {
   std::string name;
   ShadingModel shading = ShadingModel::VertexColor;
   softraster::PipelineState state;
-  std::vector<shaders::VertexColor::Vertex> vertices;
+  std::vector<shaders::VertexColorVertex> vertices;
+  bool indexed = true;                  // false: vertices are drawn in order (vkCmdDraw)
   std::vector<std::uint32_t> indices;
 };
 
@@ -43,6 +45,7 @@ struct Scene {
   std::uint32_t width = 320, height = 240;
   softraster::Vec4 clearColour{0, 0, 0, 1};
   float clearDepth = 1.0f;
+  softraster::DepthFormat depthFormat = softraster::DepthFormat::D32Sfloat;
   softraster::Mat4 viewProjection = softraster::Mat4::identity();
   std::vector<Draw> draws;
   Tolerance tolerance;

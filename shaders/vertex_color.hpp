@@ -1,5 +1,6 @@
-// vertex_color: unlit, the vertex colour interpolated perspective-correctly.
+// vertex_color: unlit, the vertex colour interpolated across the primitive.
 // The C++ twin of vertex_color.vert / vertex_color.frag; keep the three files reading alike.
+// The template parameter is the varying's qualifier, as INTERPOLATION is in the GLSL.
 // Deliberately no lighting and no texture: it is the flat-colour model the first scenes need.
 #pragma once
 
@@ -11,15 +12,19 @@
 
 namespace shaders {
 
-struct VertexColor {
-  struct Vertex {
-    softraster::Vec3 position;  // location 0
-    softraster::Vec4 colour;    // location 1
-  };
+struct VertexColorVertex {
+  softraster::Vec3 position;  // location 0
+  softraster::Vec4 colour;    // location 1
+};
+
+template <softraster::Interpolation Qualifier>
+struct VertexColorShader {
+  using Vertex = VertexColorVertex;
   struct Uniforms {
     softraster::Mat4 modelViewProjection;
   };
   static constexpr int kVaryings = 4;  // vColour
+  static constexpr softraster::InterpolationSet<kVaryings> kInterpolation{Qualifier, Qualifier, Qualifier, Qualifier};
   static constexpr std::array<softraster::VertexAttribute, 2> kAttributes{{
       {0, 3, offsetof(Vertex, position)},
       {1, 4, offsetof(Vertex, colour)},
@@ -41,5 +46,9 @@ struct VertexColor {
     return {vColour[0], vColour[1], vColour[2], vColour[3]};
   }
 };
+
+using VertexColor = VertexColorShader<softraster::Interpolation::Perspective>;
+using VertexColorFlat = VertexColorShader<softraster::Interpolation::Flat>;
+using VertexColorNoPerspective = VertexColorShader<softraster::Interpolation::NoPerspective>;
 
 }  // namespace shaders

@@ -20,6 +20,8 @@ ShadedVertex<1> vertex(Vec4 clip, float varying, const ViewportTransform& vp) {
   return v;
 }
 
+constexpr softraster::InterpolationSet<1> kSmooth{softraster::Interpolation::Perspective};
+
 ViewportTransform viewport() {
   softraster::Viewport vp;
   vp.width = 64;
@@ -54,7 +56,7 @@ TEST(Clipping, TriangleCrossingTheNearPlaneBecomesAQuad) {
   const auto v2 = vertex({0.5f, 0.5f, 0.5f, 1}, 30, vp);
   ASSERT_EQ(v0.clipMask, kOutsideNear);
   ClippedPolygon<1> polygon;
-  ASSERT_TRUE(clipTriangle(v0, v1, v2, v0.clipMask | v1.clipMask | v2.clipMask, vp, polygon));
+  ASSERT_TRUE(clipTriangle(v0, v1, v2, v0.clipMask | v1.clipMask | v2.clipMask, vp, kSmooth, polygon));
   ASSERT_EQ(polygon.count, 4);
   // The polygon starts where v0's edge to v1 comes back in, then v1, v2, and v2's edge to v0.
   EXPECT_EQ(polygon.vertices[1].clip.x, v1.clip.x);
@@ -76,7 +78,7 @@ TEST(Clipping, NaNDistanceDropsTheTriangle) {
   const auto v1 = vertex({-0.5f, 0.5f, 0.5f, 1}, 0, vp);
   const auto v2 = vertex({0.5f, 0.5f, 0.5f, 1}, 0, vp);
   ClippedPolygon<1> polygon;
-  EXPECT_FALSE(clipTriangle(v0, v1, v2, v0.clipMask | v1.clipMask | v2.clipMask, vp, polygon));
+  EXPECT_FALSE(clipTriangle(v0, v1, v2, v0.clipMask | v1.clipMask | v2.clipMask, vp, kSmooth, polygon));
 }
 
 TEST(Clipping, TriangleCrossingAllFourSidesKeepsAllNewVerticesInside) {
@@ -85,7 +87,7 @@ TEST(Clipping, TriangleCrossingAllFourSidesKeepsAllNewVerticesInside) {
   const auto v1 = vertex({-3, 4, 0.5f, 1}, 1, vp);
   const auto v2 = vertex({4, -3, 0.5f, 1}, 2, vp);
   ClippedPolygon<1> polygon;
-  ASSERT_TRUE(clipTriangle(v0, v1, v2, v0.clipMask | v1.clipMask | v2.clipMask, vp, polygon));
+  ASSERT_TRUE(clipTriangle(v0, v1, v2, v0.clipMask | v1.clipMask | v2.clipMask, vp, kSmooth, polygon));
   EXPECT_GE(polygon.count, 4);
   for (int i = 0; i < polygon.count; ++i) {
     const Vec4 c = polygon.vertices[i].clip;

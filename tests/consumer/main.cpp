@@ -22,14 +22,14 @@ int main() {
   const std::vector<FlatRed::Vertex> vertices{{{-1, -1, 0.5f}}, {{-1, 1, 0.5f}}, {{1, -1, 0.5f}}};
   const std::vector<std::uint32_t> indices{0, 1, 2};
   const softraster::Context context;
-  const softraster::Status status = context.draw<FlatRed>(softraster::PipelineState{}, FlatRed::Uniforms{},
+  const softraster::Status status = context.drawIndexed<FlatRed>(softraster::PipelineState{}, FlatRed::Uniforms{},
                                                           vertices, indices, framebuffer);
   if (!status) {
     std::fprintf(stderr, "draw failed: %s\n", status.message().c_str());
     return 1;
   }
   int red = 0;
-  for (std::size_t i = 0; i < framebuffer.depth().size(); ++i) red += framebuffer.colour()[4 * i] == 255;
+  for (std::size_t i = 0; i < framebuffer.colour().size(); i += 4) red += framebuffer.colour()[i] == 255;
   // Half of a 32x32 square: pixel centres strictly above the diagonal, 31*32/2. The 32 centres on
   // the diagonal belong to the bottom-right edge, which the top-left rule leaves out.
   std::printf("red pixels: %d\n", red);

@@ -12,6 +12,7 @@
 
 #include <vulkan/vulkan.h>
 
+#include <array>
 #include <cmath>
 #include <cstring>
 #include <deque>
@@ -29,7 +30,9 @@ namespace vkref {
 namespace {
 
 constexpr VkFormat kColourFormat = VK_FORMAT_R8G8B8A8_UNORM;
-constexpr VkFormat kDepthFormat = VK_FORMAT_D32_SFLOAT;
+// Indexed by softraster::DepthFormat.
+constexpr VkFormat kDepthFormats[] = {VK_FORMAT_D16_UNORM, VK_FORMAT_X8_D24_UNORM_PACK32, VK_FORMAT_D32_SFLOAT};
+constexpr std::uint32_t kDepthTexelBytes[] = {2, 4, 4};
 constexpr std::uint32_t kPushConstantBytes = 128;
 constexpr VkShaderStageFlags kPushConstantStages = VK_SHADER_STAGE_VERTEX_BIT | VK_SHADER_STAGE_FRAGMENT_BIT;
 constexpr const char* kValidationLayer = "VK_LAYER_KHRONOS_validation";
@@ -106,6 +109,8 @@ struct Renderer::Impl {
   std::uint32_t queueFamily = 0;
   VkPhysicalDeviceMemoryProperties memory{};
   VkPhysicalDeviceLimits limits{};
+  VkPhysicalDeviceFeatures features{};  // the core features enabled on `device`
+  std::array<bool, std::size(kDepthFormats)> depthFormatUsable{};
   std::string name;
   mutable std::mutex messagesMutex;
   std::vector<std::string> messages;
@@ -260,14 +265,23 @@ VkViewport viewportFor(const softraster::Viewport& v, std::uint32_t width, std::
 auto pipelineKey(const DrawCall& d) {
   const softraster::PipelineState& s = d.state;
   const softraster::Viewport& v = s.viewport;
-  return std::tuple(d.program, s.topology, v.x, v.y, v.width, v.height, v.minDepth, v.maxDepth,
-                    s.rasterization.cullMode, s.rasterization.frontFace, s.depth.testEnable, s.depth.writeEnable,
-                    s.depth.compareOp);
+  const softraster::Scissor& sc = s.scissor;
+  return std::tuple(d.program, s.topology, v.x, v.y, v.width, v.height, v.minDepth, v.maxDepth, sc.x, sc.y, sc.width,
+                    sc.height, s.rasterization.cullMode, s.rasterization.frontFace, s.rasterization.depthClampEnable,
+                    s.depth.testEnable, s.depth.writeEnable, s.depth.compareOp);
 }
+
+std::uint32_t vertexCount(const DrawCall& d) {
+  const std::uint32_t stride = d.program && d.program->vertexStride ? d.program->vertexStride : 1;
+  return static_cast<std::uint32_t>(d.vertexData.size() / stride);
+}
+
+// A draw with nothing to assemble is skipped.
+bool isEmpty(const DrawCall& d) { return d.indexed ? d.indices.empty() : vertexCount(d) == 0; }
 
 // What about a draw Vulkan (or this renderer) cannot honour; empty when the draw is fine.
 std::string checkDraw(const DrawCall& d, std::uint32_t width, std::uint32_t height,
-                      const VkPhysicalDeviceLimits& limits) {
+                      const VkPhysicalDeviceLimits& limits, bool depthClampSupported) {
   const ShaderProgram* p = d.program;
   if (!p) return "no shader program";
   constexpr std::uint32_t kSpirvMagic = 0x07230203;
@@ -277,7 +291,9 @@ std::string checkDraw(const DrawCall& d, std::uint32_t width, std::uint32_t heig
     return std::to_string(d.pushConstants.size()) + " bytes of push constants (need a multiple of 4, at most 128)";
 
   const softraster::PipelineState& s = d.state;
-  if (s.topology != softraster::Topology::TriangleList) return "unsupported topology";
+  if (s.topology > softraster::Topology::TriangleFan) return "unsupported topology";
+  if (s.rasterization.depthClampEnable && !depthClampSupported) return "depth clamp is not supported by the device";
+  if (s.scissor.x < 0 || s.scissor.y < 0) return "scissor offset is negative";
   if (static_cast<std::size_t>(s.rasterization.cullMode) >= std::size(kCullModes)) return "unsupported cull mode";
   if (static_cast<std::size_t>(s.rasterization.frontFace) >= std::size(kFrontFaces)) return "unsupported front face";
   if (s.depth.compareOp > softraster::CompareOp::Always) return "unsupported depth compare op";
@@ -308,7 +324,7 @@ std::string checkDraw(const DrawCall& d, std::uint32_t width, std::uint32_t heig
 }
 
 bool createPipeline(VkDevice device, VkPipelineLayout layout, const DrawCall& d, std::uint32_t width,
-                    std::uint32_t height, VkPipeline* out, std::string* error) {
+                    std::uint32_t height, VkFormat depthFormat, VkPipeline* out, std::string* error) {
   const ShaderProgram& p = *d.program;
   const std::span<const std::uint32_t> code[2] = {p.vertexSpirv, p.fragmentSpirv};
   VkShaderModule modules[2] = {VK_NULL_HANDLE, VK_NULL_HANDLE};
@@ -341,9 +357,11 @@ bool createPipeline(VkDevice device, VkPipelineLayout layout, const DrawCall& d,
         .pVertexAttributeDescriptions = attributes.data()};
     const VkPipelineInputAssemblyStateCreateInfo inputAssembly{
         .sType = VK_STRUCTURE_TYPE_PIPELINE_INPUT_ASSEMBLY_STATE_CREATE_INFO,
-        .topology = VK_PRIMITIVE_TOPOLOGY_TRIANGLE_LIST};
+        .topology = static_cast<VkPrimitiveTopology>(d.state.topology)};  // same order as Vulkan's
     const VkViewport viewport = viewportFor(d.state.viewport, width, height);
-    const VkRect2D scissor{{0, 0}, {width, height}};
+    const softraster::Scissor& sc = d.state.scissor;
+    const VkRect2D scissor = sc.width == 0 || sc.height == 0 ? VkRect2D{{0, 0}, {width, height}}
+                                                             : VkRect2D{{sc.x, sc.y}, {sc.width, sc.height}};
     const VkPipelineViewportStateCreateInfo viewportState{.sType = VK_STRUCTURE_TYPE_PIPELINE_VIEWPORT_STATE_CREATE_INFO,
                                                           .viewportCount = 1,
                                                           .pViewports = &viewport,
@@ -351,7 +369,7 @@ bool createPipeline(VkDevice device, VkPipelineLayout layout, const DrawCall& d,
                                                           .pScissors = &scissor};
     const VkPipelineRasterizationStateCreateInfo rasterization{
         .sType = VK_STRUCTURE_TYPE_PIPELINE_RASTERIZATION_STATE_CREATE_INFO,
-        .depthClampEnable = VK_FALSE,
+        .depthClampEnable = d.state.rasterization.depthClampEnable ? VK_TRUE : VK_FALSE,
         .rasterizerDiscardEnable = VK_FALSE,
         .polygonMode = VK_POLYGON_MODE_FILL,
         .cullMode = kCullModes[static_cast<std::size_t>(d.state.rasterization.cullMode)],
@@ -376,7 +394,7 @@ bool createPipeline(VkDevice device, VkPipelineLayout layout, const DrawCall& d,
     const VkPipelineRenderingCreateInfo rendering{.sType = VK_STRUCTURE_TYPE_PIPELINE_RENDERING_CREATE_INFO,
                                                   .colorAttachmentCount = 1,
                                                   .pColorAttachmentFormats = &kColourFormat,
-                                                  .depthAttachmentFormat = kDepthFormat};
+                                                  .depthAttachmentFormat = depthFormat};
     const VkGraphicsPipelineCreateInfo info{.sType = VK_STRUCTURE_TYPE_GRAPHICS_PIPELINE_CREATE_INFO,
                                             .pNext = &rendering,
                                             .stageCount = 2,
@@ -529,8 +547,8 @@ bool Renderer::Impl::pickDevice(const std::string& wanted, std::string* error) {
 
 bool Renderer::Impl::createDevice(std::string* error) {
   VkPhysicalDeviceVulkan13Features supported{.sType = VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_VULKAN_1_3_FEATURES};
-  VkPhysicalDeviceFeatures2 features{.sType = VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_FEATURES_2, .pNext = &supported};
-  vkGetPhysicalDeviceFeatures2(physicalDevice, &features);
+  VkPhysicalDeviceFeatures2 features2{.sType = VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_FEATURES_2, .pNext = &supported};
+  vkGetPhysicalDeviceFeatures2(physicalDevice, &features2);
   if (!supported.dynamicRendering || !supported.synchronization2)
     return fail(error, "Vulkan device '" + name + "' lacks dynamicRendering or synchronization2");
 
@@ -539,9 +557,14 @@ bool Renderer::Impl::createDevice(std::string* error) {
     vkGetPhysicalDeviceFormatProperties(physicalDevice, format, &properties);
     return (properties.optimalTilingFeatures & needed) == needed;
   };
-  if (!supports(kColourFormat, VK_FORMAT_FEATURE_COLOR_ATTACHMENT_BIT | VK_FORMAT_FEATURE_TRANSFER_SRC_BIT) ||
-      !supports(kDepthFormat, VK_FORMAT_FEATURE_DEPTH_STENCIL_ATTACHMENT_BIT | VK_FORMAT_FEATURE_TRANSFER_SRC_BIT))
-    return fail(error, "Vulkan device '" + name + "' cannot render to R8G8B8A8_UNORM and D32_SFLOAT and copy them");
+  if (!supports(kColourFormat, VK_FORMAT_FEATURE_COLOR_ATTACHMENT_BIT | VK_FORMAT_FEATURE_TRANSFER_SRC_BIT))
+    return fail(error, "Vulkan device '" + name + "' cannot render to R8G8B8A8_UNORM and copy it");
+  for (std::size_t f = 0; f < std::size(kDepthFormats); ++f)
+    depthFormatUsable[f] =
+        supports(kDepthFormats[f], VK_FORMAT_FEATURE_DEPTH_STENCIL_ATTACHMENT_BIT | VK_FORMAT_FEATURE_TRANSFER_SRC_BIT);
+  // Optional core features scenes may use: enabled when the device has them, else draws needing
+  // them are rejected by checkDraw.
+  features.depthClamp = features2.features.depthClamp;
 
   std::uint32_t familyCount = 0;
   vkGetPhysicalDeviceQueueFamilyProperties(physicalDevice, &familyCount, nullptr);
@@ -563,7 +586,8 @@ bool Renderer::Impl::createDevice(std::string* error) {
   const VkDeviceCreateInfo info{.sType = VK_STRUCTURE_TYPE_DEVICE_CREATE_INFO,
                                 .pNext = &enabled,
                                 .queueCreateInfoCount = 1,
-                                .pQueueCreateInfos = &queueInfo};
+                                .pQueueCreateInfos = &queueInfo,
+                                .pEnabledFeatures = &features};
   if (!check(vkCreateDevice(physicalDevice, &info, nullptr, &device), "vkCreateDevice", error)) return false;
   vkGetDeviceQueue(device, queueFamily, 0, &queue);
   vkGetPhysicalDeviceMemoryProperties(physicalDevice, &memory);
@@ -603,10 +627,15 @@ bool Renderer::render(const FrameRequest& request, FrameImages* out, std::string
                            std::to_string(im.limits.maxFramebufferWidth) + "x" +
                            std::to_string(im.limits.maxFramebufferHeight) + ")");
   if (!(request.clearDepth >= 0 && request.clearDepth <= 1)) return fail(error, "clearDepth outside [0, 1]");
+  const auto depthIndex = static_cast<std::size_t>(request.depthFormat);
+  if (depthIndex >= std::size(kDepthFormats) || !im.depthFormatUsable[depthIndex])
+    return fail(error, "depth format " + std::to_string(depthIndex) + " cannot be rendered to and copied on this device");
+  const VkFormat depthFormat = kDepthFormats[depthIndex];
+  const std::uint32_t depthTexelBytes = kDepthTexelBytes[depthIndex];
   const std::vector<DrawCall>& draws = request.draws;
   for (std::size_t i = 0; i < draws.size(); ++i) {
-    if (draws[i].indices.empty()) continue;  // skipped, so not checked either
-    if (std::string problem = checkDraw(draws[i], width, height, im.limits); !problem.empty())
+    if (isEmpty(draws[i])) continue;  // skipped, so not checked either
+    if (std::string problem = checkDraw(draws[i], width, height, im.limits, im.features.depthClamp); !problem.empty())
       return fail(error, "draw " + std::to_string(i) + ": " + problem);
   }
 
@@ -615,13 +644,13 @@ bool Renderer::render(const FrameRequest& request, FrameImages* out, std::string
   Image* colour = frame.createImage(kColourFormat, VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT,
                                     VK_IMAGE_ASPECT_COLOR_BIT, width, height, error);
   if (!colour) return false;
-  Image* depth = frame.createImage(kDepthFormat,
+  Image* depth = frame.createImage(depthFormat,
                                    VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT,
                                    VK_IMAGE_ASPECT_DEPTH_BIT, width, height, error);
   if (!depth) return false;
   Buffer* colourOut = frame.createBuffer(pixels * 4, VK_BUFFER_USAGE_TRANSFER_DST_BIT, error);
   if (!colourOut) return false;
-  Buffer* depthOut = frame.createBuffer(pixels * sizeof(float), VK_BUFFER_USAGE_TRANSFER_DST_BIT, error);
+  Buffer* depthOut = frame.createBuffer(pixels * depthTexelBytes, VK_BUFFER_USAGE_TRANSFER_DST_BIT, error);
   if (!depthOut) return false;
 
   const VkPushConstantRange pushRange{kPushConstantStages, 0, kPushConstantBytes};
@@ -640,12 +669,12 @@ bool Renderer::render(const FrameRequest& request, FrameImages* out, std::string
   std::vector<Prepared> prepared(draws.size());
   for (std::size_t i = 0; i < draws.size(); ++i) {
     const DrawCall& d = draws[i];
-    if (d.indices.empty()) continue;
+    if (isEmpty(d)) continue;
     for (std::size_t j = 0; j < i && !prepared[i].pipeline; ++j)
       if (prepared[j].pipeline && pipelineKey(draws[j]) == pipelineKey(d)) prepared[i].pipeline = prepared[j].pipeline;
     if (!prepared[i].pipeline) {
       VkPipeline& pipeline = frame.pipelines.emplace_back(VK_NULL_HANDLE);
-      if (!createPipeline(im.device, frame.layout, d, width, height, &pipeline, error))
+      if (!createPipeline(im.device, frame.layout, d, width, height, depthFormat, &pipeline, error))
         return fail(error, "draw " + std::to_string(i) + " (program '" + d.program->name + "'): " + *error);
       prepared[i].pipeline = pipeline;
     }
@@ -653,8 +682,8 @@ bool Renderer::render(const FrameRequest& request, FrameImages* out, std::string
         !(prepared[i].vertices = frame.upload(d.vertexData.data(), d.vertexData.size(),
                                               VK_BUFFER_USAGE_VERTEX_BUFFER_BIT, error)))
       return false;
-    if (!(prepared[i].indices = frame.upload(d.indices.data(), d.indices.size() * sizeof(std::uint32_t),
-                                             VK_BUFFER_USAGE_INDEX_BUFFER_BIT, error)))
+    if (d.indexed && !(prepared[i].indices = frame.upload(d.indices.data(), d.indices.size() * sizeof(std::uint32_t),
+                                                          VK_BUFFER_USAGE_INDEX_BUFFER_BIT, error)))
       return false;
   }
 
@@ -709,17 +738,21 @@ bool Renderer::render(const FrameRequest& request, FrameImages* out, std::string
   vkCmdBeginRendering(cmd, &renderingInfo);
   for (std::size_t i = 0; i < draws.size(); ++i) {
     const DrawCall& d = draws[i];
-    if (d.indices.empty()) continue;
+    if (isEmpty(d)) continue;
     vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, prepared[i].pipeline);
     if (prepared[i].vertices) {
       const VkDeviceSize offset = 0;
       vkCmdBindVertexBuffers(cmd, 0, 1, &prepared[i].vertices->buffer, &offset);
     }
-    vkCmdBindIndexBuffer(cmd, prepared[i].indices->buffer, 0, VK_INDEX_TYPE_UINT32);
     if (!d.pushConstants.empty())
       vkCmdPushConstants(cmd, frame.layout, kPushConstantStages, 0, static_cast<std::uint32_t>(d.pushConstants.size()),
                          d.pushConstants.data());
-    vkCmdDrawIndexed(cmd, static_cast<std::uint32_t>(d.indices.size()), 1, 0, 0, 0);
+    if (d.indexed) {
+      vkCmdBindIndexBuffer(cmd, prepared[i].indices->buffer, 0, VK_INDEX_TYPE_UINT32);
+      vkCmdDrawIndexed(cmd, static_cast<std::uint32_t>(d.indices.size()), 1, 0, 0, 0);
+    } else {
+      vkCmdDraw(cmd, vertexCount(d), 1, 0, 0);
+    }
   }
   vkCmdEndRendering(cmd);
 
@@ -731,7 +764,8 @@ bool Renderer::render(const FrameRequest& request, FrameImages* out, std::string
                    VK_PIPELINE_STAGE_2_COPY_BIT, VK_ACCESS_2_TRANSFER_READ_BIT,
                    VK_IMAGE_LAYOUT_DEPTH_STENCIL_ATTACHMENT_OPTIMAL, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL)};
   barrier(cmd, toTransfer);
-  // Tightly packed rows, row 0 = top; D32_SFLOAT depth copies out as plain floats.
+  // Tightly packed rows, row 0 = top. Depth copies out as stored: D16 as 16-bit integers,
+  // X8_D24 as 32-bit words with the depth in the low 24 bits, D32_SFLOAT as floats.
   const VkBufferImageCopy colourRegion{.imageSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, 1},
                                        .imageExtent = {width, height, 1}};
   const VkBufferImageCopy depthRegion{.imageSubresource = {VK_IMAGE_ASPECT_DEPTH_BIT, 0, 0, 1},
@@ -755,9 +789,23 @@ bool Renderer::render(const FrameRequest& request, FrameImages* out, std::string
   out->width = width;
   out->height = height;
   out->rgba.resize(pixels * 4);
-  out->depth.resize(pixels);
   std::memcpy(out->rgba.data(), colourOut->mapped, pixels * 4);
-  std::memcpy(out->depth.data(), depthOut->mapped, pixels * sizeof(float));
+  out->depth.resize(pixels);
+  out->depthStorage.resize(pixels);
+  const auto* texels = static_cast<const std::uint8_t*>(depthOut->mapped);
+  for (std::size_t i = 0; i < pixels; ++i) {
+    std::uint32_t stored = 0;
+    std::memcpy(&stored, texels + i * depthTexelBytes, depthTexelBytes);
+    switch (request.depthFormat) {
+      case softraster::DepthFormat::D16Unorm: out->depth[i] = static_cast<float>(stored / 65535.0); break;
+      case softraster::DepthFormat::X8D24UnormPack32:
+        stored &= 0xffffffu;
+        out->depth[i] = static_cast<float>(stored / 16777215.0);
+        break;
+      case softraster::DepthFormat::D32Sfloat: std::memcpy(&out->depth[i], &stored, 4); break;
+    }
+    out->depthStorage[i] = stored;
+  }
   return true;
 }
 

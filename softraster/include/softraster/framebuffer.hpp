@@ -1,36 +1,57 @@
-// Framebuffer: an R8G8B8A8_UNORM colour image and a D32_SFLOAT depth image, row 0 at the top.
+// Framebuffer: an R8G8B8A8_UNORM colour image and a depth image (D16_UNORM, X8_D24_UNORM_PACK32
+// or D32_SFLOAT), row 0 at the top. Depth is kept as the format stores it: UNORM depth as its
+// integer, D32_SFLOAT as its float's bits.
 // Deliberately single-sample and without stencil until a scene needs more.
 #pragma once
 
 #include <softraster/math.hpp>
 #include <softraster/status.hpp>
 
+#include <cstddef>
 #include <cstdint>
 #include <vector>
 
 namespace softraster {
 
+enum class DepthFormat : std::uint8_t { D16Unorm, X8D24UnormPack32, D32Sfloat };
+
+// Bits of a UNORM depth format (16 or 24), or 0 for D32_SFLOAT.
+constexpr int unormDepthBits(DepthFormat f) {
+  return f == DepthFormat::D16Unorm ? 16 : f == DepthFormat::X8D24UnormPack32 ? 24 : 0;
+}
+
+// A depth clear value as the format stores it: lrint(depth * (2^n - 1)) for UNORM formats, the
+// float's bits for D32_SFLOAT.
+std::uint32_t depthClearValue(DepthFormat format, float depth);
+
 class Framebuffer {
  public:
   Framebuffer() = default;
-  Framebuffer(std::uint32_t width, std::uint32_t height);
+  Framebuffer(std::uint32_t width, std::uint32_t height, DepthFormat depthFormat = DepthFormat::D32Sfloat);
 
   std::uint32_t width() const { return width_; }
   std::uint32_t height() const { return height_; }
+  DepthFormat depthFormat() const { return depthFormat_; }
 
-  // Clears colour (converted as a UNORM8 store converts) and depth.
+  // Clears colour (converted as a UNORM8 store converts) and depth (as a depth clear converts:
+  // lrint(depth * (2^n - 1)) for UNORM formats).
   void clear(Vec4 colour, float depth);
 
   // 4 bytes per pixel, RGBA.
   std::vector<std::uint8_t>& colour() { return colour_; }
   const std::vector<std::uint8_t>& colour() const { return colour_; }
-  std::vector<float>& depth() { return depth_; }
-  const std::vector<float>& depth() const { return depth_; }
+
+  // Depth as stored, one value per pixel (see the top of this file).
+  std::vector<std::uint32_t>& depthStorage() { return depth_; }
+  const std::vector<std::uint32_t>& depthStorage() const { return depth_; }
+  // Depth of one pixel as a float in [0, 1].
+  float depth(std::size_t pixel) const;
 
  private:
   std::uint32_t width_ = 0, height_ = 0;
+  DepthFormat depthFormat_ = DepthFormat::D32Sfloat;
   std::vector<std::uint8_t> colour_;
-  std::vector<float> depth_;
+  std::vector<std::uint32_t> depth_;
 };
 
 }  // namespace softraster

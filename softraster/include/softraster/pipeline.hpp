@@ -1,10 +1,10 @@
-// softraster's entry point: a Context draws indexed triangle lists with a shader type into a
-// Framebuffer, following lavapipe's rules to the bit (the "exact" method):
+// softraster's entry point: a Context draws triangle lists, strips and fans, indexed or not, with
+// a shader type into a Framebuffer, following lavapipe's rules to the bit (the "exact" method):
 //   vertex processing -> primitive assembly -> clipping -> snapping and setup -> rasterization
 //   -> interpolation -> fragment shading -> depth test and writes.
 // A Context holds no global state and reports errors through Status; it never prints.
-// Deliberately absent from this slice: other topologies, blending, MSAA, alternative
-// rasterization methods.
+// Deliberately absent from this slice: lines, points, polygon modes, blending, MSAA,
+// alternative rasterization methods.
 #pragma once
 
 #include <softraster/detail/clipping.hpp>
@@ -39,40 +39,40 @@ class Context {
 
   const ContextOptions& options() const { return options_; }
 
-  // Draws an indexed triangle list. Trailing indices that do not form a triangle are ignored,
-  // as Vulkan does; an index past the end of `vertices` is an error and nothing is drawn.
+  // vkCmdDraw: vertices 0..n-1 in order, assembled by state.topology.
   template <class Shader>
   Status draw(const PipelineState& state, const typename Shader::Uniforms& uniforms,
-              std::span<const typename Shader::Vertex> vertices, std::span<const std::uint32_t> indices,
-              Framebuffer& framebuffer) const {
-    static_assert(Shader::kVaryings >= 0 && Shader::kVaryings <= kMaxVaryings, "too many varyings");
-    if (framebuffer.width() == 0 || framebuffer.height() == 0) return Status::error("framebuffer has no pixels");
-    if (state.topology != Topology::TriangleList) return Status::error("only triangle lists are supported");
+              std::span<const typename Shader::Vertex> vertices, Framebuffer& framebuffer) const {
+    std::vector<std::uint32_t> sequence(vertices.size());
+    for (std::size_t i = 0; i < sequence.size(); ++i) sequence[i] = static_cast<std::uint32_t>(i);
+    return drawPrimitives<Shader>(state, uniforms, vertices, sequence, framebuffer);
+  }
+
+  // vkCmdDrawIndexed. An index past the end of `vertices` is an error and nothing is drawn.
+  // Indices that do not complete a primitive are ignored, as Vulkan does.
+  template <class Shader>
+  Status drawIndexed(const PipelineState& state, const typename Shader::Uniforms& uniforms,
+                     std::span<const typename Shader::Vertex> vertices, std::span<const std::uint32_t> indices,
+                     Framebuffer& framebuffer) const {
     for (std::size_t i = 0; i < indices.size(); ++i) {
       if (indices[i] >= vertices.size()) {
         return Status::error("index " + std::to_string(i) + " (" + std::to_string(indices[i]) +
                              ") is past the last vertex (" + std::to_string(vertices.size()) + " vertices)");
       }
     }
-    if (options_.fusedMultiplyAdd) {
-      drawTriangles<Shader, true>(state, uniforms, vertices, indices, framebuffer);
-    } else {
-      drawTriangles<Shader, false>(state, uniforms, vertices, indices, framebuffer);
-    }
-    return {};
+    return drawPrimitives<Shader>(state, uniforms, vertices, indices, framebuffer);
   }
 
  private:
-  template <class Shader, bool Fused>
+  template <class Shader>
+  Status drawPrimitives(const PipelineState& state, const typename Shader::Uniforms& uniforms,
+                        std::span<const typename Shader::Vertex> vertices, std::span<const std::uint32_t> indices,
+                        Framebuffer& framebuffer) const;
+
+  template <class Shader, bool Fused, DepthFormat Format>
   static void drawTriangles(const PipelineState& state, const typename Shader::Uniforms& uniforms,
                             std::span<const typename Shader::Vertex> vertices, std::span<const std::uint32_t> indices,
                             Framebuffer& framebuffer);
-
-  template <class Shader, bool Fused>
-  static void rasterize(const detail::ShadedVertex<Shader::kVaryings>& a, const detail::ShadedVertex<Shader::kVaryings>& b,
-                        const detail::ShadedVertex<Shader::kVaryings>& c, const PipelineState& state,
-                        const detail::WindingFilter& winding, const detail::PixelRect& region,
-                        const typename Shader::Uniforms& uniforms, Framebuffer& framebuffer);
 
   ContextOptions options_;
 };
@@ -88,101 +88,123 @@ inline Viewport resolveViewport(const Viewport& vp, const Framebuffer& fb) {
   return full;
 }
 
-// Pixels a draw may touch: framebuffer and viewport rectangle, as lavapipe rounds the latter.
-inline detail::PixelRect drawRegion(const Viewport& vp, const Framebuffer& fb) {
-  const detail::PixelRect viewportRect{static_cast<int>(vp.x + 0.499f), static_cast<int>(vp.y + 0.499f),
-                                       static_cast<int>(vp.x + vp.width - 0.501f),
-                                       static_cast<int>(vp.y + vp.height - 0.501f)};
+// Pixels a draw may touch: the framebuffer and the scissor (lavapipe's draw region; the
+// viewport rectangle itself does not limit it, clipping does).
+inline detail::PixelRect drawRegion(const Scissor& scissor, const Framebuffer& fb) {
   const detail::PixelRect framebufferRect{0, 0, static_cast<int>(fb.width()) - 1, static_cast<int>(fb.height()) - 1};
-  return detail::intersect(viewportRect, framebufferRect);
+  if (scissor.width == 0 || scissor.height == 0) return framebufferRect;
+  const detail::PixelRect scissorRect{scissor.x, scissor.y, scissor.x + static_cast<int>(scissor.width) - 1,
+                                      scissor.y + static_cast<int>(scissor.height) - 1};
+  return detail::intersect(scissorRect, framebufferRect);
 }
 
-template <class Shader, bool Fused>
+template <class Shader>
+Status Context::drawPrimitives(const PipelineState& state, const typename Shader::Uniforms& uniforms,
+                               std::span<const typename Shader::Vertex> vertices, std::span<const std::uint32_t> indices,
+                               Framebuffer& framebuffer) const {
+  static_assert(Shader::kVaryings >= 0 && Shader::kVaryings <= kMaxVaryings, "too many varyings");
+  if (framebuffer.width() == 0 || framebuffer.height() == 0) return Status::error("framebuffer has no pixels");
+  if (!detail::isTriangleTopology(state.topology)) {
+    return Status::error("points and lines are not supported by softraster yet");
+  }
+  const bool fused = options_.fusedMultiplyAdd;
+  switch (framebuffer.depthFormat()) {
+    case DepthFormat::D16Unorm:
+      fused ? drawTriangles<Shader, true, DepthFormat::D16Unorm>(state, uniforms, vertices, indices, framebuffer)
+            : drawTriangles<Shader, false, DepthFormat::D16Unorm>(state, uniforms, vertices, indices, framebuffer);
+      break;
+    case DepthFormat::X8D24UnormPack32:
+      fused ? drawTriangles<Shader, true, DepthFormat::X8D24UnormPack32>(state, uniforms, vertices, indices, framebuffer)
+            : drawTriangles<Shader, false, DepthFormat::X8D24UnormPack32>(state, uniforms, vertices, indices, framebuffer);
+      break;
+    case DepthFormat::D32Sfloat:
+      fused ? drawTriangles<Shader, true, DepthFormat::D32Sfloat>(state, uniforms, vertices, indices, framebuffer)
+            : drawTriangles<Shader, false, DepthFormat::D32Sfloat>(state, uniforms, vertices, indices, framebuffer);
+      break;
+  }
+  return {};
+}
+
+template <class Shader, bool Fused, DepthFormat Format>
 void Context::drawTriangles(const PipelineState& state, const typename Shader::Uniforms& uniforms,
                             std::span<const typename Shader::Vertex> vertices, std::span<const std::uint32_t> indices,
                             Framebuffer& framebuffer) {
   constexpr int N = Shader::kVaryings;
+  constexpr InterpolationSet<N> interpolation = interpolationOf<Shader>();
+  const RasterizationState& rs = state.rasterization;
   const Viewport viewport = resolveViewport(state.viewport, framebuffer);
   const detail::ViewportTransform transform = detail::makeViewportTransform(viewport);
-  const detail::PixelRect region = drawRegion(viewport, framebuffer);
-  const detail::WindingFilter winding = detail::windingFilter(state.rasterization);
+  const detail::PixelRect region = drawRegion(state.scissor, framebuffer);
+  const detail::WindingFilter winding = detail::windingFilter(rs);
   if (region.empty() || (!winding.drawClockwise && !winding.drawCounterClockwise)) return;
+  const detail::DepthRange depthRange = detail::fragmentDepthRange(viewport, rs.depthClampEnable);
+  const DepthState& ds = state.depth;
+  const std::uint32_t width = framebuffer.width();
+  std::uint8_t* colour = framebuffer.colour().data();
+  std::uint32_t* depth = framebuffer.depthStorage().data();
+  std::array<float, (N == 0 ? 1 : N)> varyings{};  // one fragment's inputs (GCC 12 rejects this inside the lambda)
+
+  // Setup, rasterization and per-fragment work of one triangle (after clipping and culling).
+  auto rasterize = [&](const detail::ShadedVertex<N>& a, const detail::ShadedVertex<N>& b,
+                       const detail::ShadedVertex<N>& c) {
+    detail::FixedTriangle fixed = detail::snapTriangle(a.window, b.window, c.window);
+    const int area = detail::fixedAreaSign(fixed);
+    if (area == 0 || (area > 0 ? !winding.drawCounterClockwise : !winding.drawClockwise)) return;
+    // From here on the triangle is counter-clockwise: a negative one continues as (a, c, b),
+    // keeping the provoking vertex first.
+    const detail::ShadedVertex<N>& v1 = area > 0 ? b : c;
+    const detail::ShadedVertex<N>& v2 = area > 0 ? c : b;
+    if (area < 0) {
+      std::swap(fixed.x[1], fixed.x[2]);
+      std::swap(fixed.y[1], fixed.y[2]);
+    }
+    const detail::TriangleEdges edges = detail::setupEdges(fixed);
+    const detail::TriangleInterpolants<N> interpolants = detail::setupInterpolants(a, v1, v2, interpolation);
+    detail::rasterizeTriangle(edges, region, [&](int px, int py) {
+      const float fx = static_cast<float>(px), fy = static_cast<float>(py);
+      const std::size_t pixel = static_cast<std::size_t>(py) * width + static_cast<std::size_t>(px);
+      const float z = detail::clampDepth(detail::interpolateDepth<Fused>(interpolants, fx, fy), depthRange);
+      const std::uint32_t stored = detail::depthToStorage<Format>(z);
+      if (ds.testEnable && !detail::depthTestPasses<Format>(ds.compareOp, stored, depth[pixel])) return;
+      detail::interpolateVaryings<Fused>(interpolants, interpolation, fx, fy, varyings.data());
+      detail::storeColour(colour + 4 * pixel, Shader::fragment(uniforms, varyings.data()));
+      if (ds.testEnable && ds.writeEnable) depth[pixel] = stored;
+    });
+  };
 
   std::vector<detail::ShadedVertex<N>> shaded(vertices.size());
   for (std::size_t i = 0; i < vertices.size(); ++i) {
-    shaded[i] = detail::shadeVertex<Shader, Fused>(uniforms, vertices[i], transform);
+    shaded[i] = detail::shadeVertex<Shader, Fused>(uniforms, vertices[i], transform, !rs.depthClampEnable);
   }
-
-  const std::size_t usable = indices.size() - indices.size() % 3;
+  const std::vector<detail::TriangleIndices> triangles = detail::assembleTriangles(state.topology, indices);
+  const std::size_t batchSize = detail::trianglesPerBatch(state.topology);
   detail::ClippedPolygon<N> polygon;
-  for (std::size_t start = 0; start < usable; start += detail::kBatchIndices) {
-    const auto batch = indices.subspan(start, std::min(detail::kBatchIndices, usable - start));
+  for (std::size_t start = 0; start < triangles.size(); start += batchSize) {
+    const auto batch = std::span(triangles).subspan(start, std::min(batchSize, triangles.size() - start));
     const bool throughDrawPipeline = detail::batchNeedsClipping(batch, shaded);
-    for (std::size_t t = 0; t + 2 < batch.size(); t += 3) {
-      const auto& v0 = shaded[batch[t]];
-      const auto& v1 = shaded[batch[t + 1]];
-      const auto& v2 = shaded[batch[t + 2]];
+    for (const detail::TriangleIndices& t : batch) {
+      const auto& v0 = shaded[t[0]];
+      const auto& v1 = shaded[t[1]];
+      const auto& v2 = shaded[t[2]];
       if (!throughDrawPipeline) {
-        rasterize<Shader, Fused>(v0, v1, v2, state, winding, region, uniforms, framebuffer);
+        rasterize(v0, v1, v2);
         continue;
       }
       const std::uint32_t outside = v0.clipMask | v1.clipMask | v2.clipMask;
       if (outside == 0) {
-        if (detail::survivesPipelineCull(v0.window, v1.window, v2.window, state.rasterization)) {
-          rasterize<Shader, Fused>(v0, v1, v2, state, winding, region, uniforms, framebuffer);
-        }
+        if (detail::survivesPipelineCull(v0.window, v1.window, v2.window, rs)) rasterize(v0, v1, v2);
         continue;
       }
       if ((v0.clipMask & v1.clipMask & v2.clipMask) != 0) continue;  // entirely outside one plane
-      if (!detail::clipTriangle(v0, v1, v2, outside, transform, polygon)) continue;
+      if (!detail::clipTriangle(v0, v1, v2, outside, transform, interpolation, polygon)) continue;
       for (int i = 2; i < polygon.count; ++i) {
         const auto& p0 = polygon.vertices[0];
         const auto& p1 = polygon.vertices[i - 1];
         const auto& p2 = polygon.vertices[i];
-        if (detail::survivesPipelineCull(p0.window, p1.window, p2.window, state.rasterization)) {
-          rasterize<Shader, Fused>(p0, p1, p2, state, winding, region, uniforms, framebuffer);
-        }
+        if (detail::survivesPipelineCull(p0.window, p1.window, p2.window, rs)) rasterize(p0, p1, p2);
       }
     }
   }
-}
-
-template <class Shader, bool Fused>
-void Context::rasterize(const detail::ShadedVertex<Shader::kVaryings>& a, const detail::ShadedVertex<Shader::kVaryings>& b,
-                        const detail::ShadedVertex<Shader::kVaryings>& c, const PipelineState& state,
-                        const detail::WindingFilter& winding, const detail::PixelRect& region,
-                        const typename Shader::Uniforms& uniforms, Framebuffer& framebuffer) {
-  constexpr int N = Shader::kVaryings;
-  detail::FixedTriangle fixed = detail::snapTriangle(a.window, b.window, c.window);
-  const int area = detail::fixedAreaSign(fixed);
-  if (area == 0) return;
-  if (area > 0 ? !winding.drawCounterClockwise : !winding.drawClockwise) return;
-
-  // From here on the triangle is counter-clockwise: a negative one continues as (a, c, b).
-  const detail::ShadedVertex<N>& v0 = a;
-  const detail::ShadedVertex<N>& v1 = area > 0 ? b : c;
-  const detail::ShadedVertex<N>& v2 = area > 0 ? c : b;
-  if (area < 0) {
-    std::swap(fixed.x[1], fixed.x[2]);
-    std::swap(fixed.y[1], fixed.y[2]);
-  }
-  const detail::TriangleEdges edges = detail::setupEdges(fixed);
-  const detail::TriangleInterpolants<N> interpolants = detail::setupInterpolants(v0, v1, v2);
-
-  const std::uint32_t width = framebuffer.width();
-  std::uint8_t* colour = framebuffer.colour().data();
-  float* depth = framebuffer.depth().data();
-  const DepthState& ds = state.depth;
-  std::array<float, (N == 0 ? 1 : N)> varyings{};
-  detail::rasterizeTriangle(edges, region, [&](int px, int py) {
-    const float fx = static_cast<float>(px), fy = static_cast<float>(py);
-    const std::size_t pixel = static_cast<std::size_t>(py) * width + static_cast<std::size_t>(px);
-    const float z = detail::clampDepth(detail::interpolateDepth<Fused>(interpolants, fx, fy));
-    if (ds.testEnable && !detail::depthTestPasses(ds.compareOp, z, depth[pixel])) return;
-    detail::interpolateVaryings<Fused>(interpolants, fx, fy, varyings.data());
-    detail::storeColour(colour + 4 * pixel, Shader::fragment(uniforms, varyings.data()));
-    if (ds.testEnable && ds.writeEnable) depth[pixel] = z;
-  });
 }
 
 }  // namespace softraster

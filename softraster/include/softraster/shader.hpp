@@ -8,15 +8,36 @@
 //   static constexpr std::array<VertexAttribute, N> S::kAttributes;   locations of Vertex's fields
 //   static Vec4 S::vertex(const Uniforms&, const Vertex&, float* varyingsOut);   clip position
 //   static Vec4 S::fragment(const Uniforms&, const float* varyingsIn);           RGBA colour
+// and optionally
+//   static constexpr std::array<Interpolation, kVaryings> S::kInterpolation;    default: all perspective
 // Deliberately no virtual functions: the pipeline is instantiated per shader, so a varying a
 // shader does not declare costs nothing.
 #pragma once
 
+#include <array>
 #include <cstdint>
 
 namespace softraster {
 
 inline constexpr int kMaxVaryings = 16;
+
+// How a varying is interpolated across a primitive (GLSL: smooth, noperspective, flat).
+enum class Interpolation : std::uint8_t { Perspective, NoPerspective, Flat };
+
+template <int N>
+using InterpolationSet = std::array<Interpolation, static_cast<std::size_t>(N)>;
+
+// The shader's kInterpolation, or all-perspective when it declares none.
+template <class Shader>
+constexpr InterpolationSet<Shader::kVaryings> interpolationOf() {
+  if constexpr (requires { Shader::kInterpolation; }) {
+    return Shader::kInterpolation;
+  } else {
+    InterpolationSet<Shader::kVaryings> all{};
+    all.fill(Interpolation::Perspective);
+    return all;
+  }
+}
 
 // One vertex input: `components` consecutive 32-bit floats at byte `offset` of the vertex.
 struct VertexAttribute {

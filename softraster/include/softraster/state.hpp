@@ -2,7 +2,8 @@
 // The fields mirror Vulkan's pipeline create-info structures one to one, so vkref can build a
 // VkPipeline from the same value softraster draws with. A field here that one renderer cannot
 // honour is an error in that renderer, never a silent default.
-// Deliberately absent until a scene needs it: blending, stencil, MSAA, polygon modes, depth bias.
+// Deliberately absent until a scene needs it: blending, stencil, MSAA, polygon modes, depth bias,
+// lines and points (the topologies exist; softraster reports them as unsupported for now).
 #pragma once
 
 #include <cstdint>
@@ -12,7 +13,8 @@ namespace softraster {
 enum class CullMode : std::uint8_t { None, Front, Back, FrontAndBack };
 enum class FrontFace : std::uint8_t { CounterClockwise, Clockwise };
 enum class CompareOp : std::uint8_t { Never, Less, Equal, LessOrEqual, Greater, NotEqual, GreaterOrEqual, Always };
-enum class Topology : std::uint8_t { TriangleList };
+// In Vulkan's order (VkPrimitiveTopology 0..5).
+enum class Topology : std::uint8_t { PointList, LineList, LineStrip, TriangleList, TriangleStrip, TriangleFan };
 
 // VkViewport: window rectangle in pixels and the depth range.
 struct Viewport {
@@ -20,9 +22,18 @@ struct Viewport {
   float minDepth = 0, maxDepth = 1;
 };
 
+// VkRect2D; a width or height of 0 means "the whole framebuffer".
+struct Scissor {
+  std::int32_t x = 0, y = 0;
+  std::uint32_t width = 0, height = 0;
+};
+
 struct RasterizationState {
   CullMode cullMode = CullMode::Back;
   FrontFace frontFace = FrontFace::CounterClockwise;
+  // Vulkan depthClampEnable: no clipping against z = 0 and z = w; fragment depth is clamped to
+  // the viewport's depth range instead.
+  bool depthClampEnable = false;
 };
 
 struct DepthState {
@@ -34,6 +45,7 @@ struct DepthState {
 struct PipelineState {
   Topology topology = Topology::TriangleList;
   Viewport viewport;  // width/height 0 means "the whole framebuffer"
+  Scissor scissor;
   RasterizationState rasterization;
   DepthState depth;
 };

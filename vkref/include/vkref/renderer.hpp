@@ -1,10 +1,12 @@
 // vkref: renders a frame through a real Vulkan pipeline (Mesa lavapipe by default), headless,
-// and reads colour (R8G8B8A8_UNORM) and depth (D32_SFLOAT) back to host memory.
+// and reads colour (R8G8B8A8_UNORM) and depth (D16_UNORM, X8_D24_UNORM_PACK32 or D32_SFLOAT)
+// back to host memory.
 // The pipeline is built from softraster::PipelineState, the same value softraster draws with;
 // a state Vulkan here cannot express is reported as an error.
 // Deliberately not a general Vulkan wrapper: no window, no swapchain, one frame per call.
 #pragma once
 
+#include <softraster/framebuffer.hpp>
 #include <softraster/shader.hpp>
 #include <softraster/state.hpp>
 
@@ -31,7 +33,8 @@ struct DrawCall {
   const ShaderProgram* program = nullptr;
   softraster::PipelineState state;
   std::vector<std::byte> vertexData;        // vertexStride bytes per vertex
-  std::vector<std::uint32_t> indices;       // indexed triangle list
+  bool indexed = true;                      // vkCmdDrawIndexed with `indices`, else vkCmdDraw of all vertices
+  std::vector<std::uint32_t> indices;       // assembled by state.topology
   std::vector<std::byte> pushConstants;     // visible to vertex and fragment stages, <= 128 bytes
 };
 
@@ -39,13 +42,15 @@ struct FrameRequest {
   std::uint32_t width = 0, height = 0;
   std::array<float, 4> clearColour{0, 0, 0, 0};
   float clearDepth = 1.0f;
+  softraster::DepthFormat depthFormat = softraster::DepthFormat::D32Sfloat;
   std::vector<DrawCall> draws;
 };
 
 struct FrameImages {
   std::uint32_t width = 0, height = 0;
-  std::vector<std::uint8_t> rgba;  // width*height*4, row 0 at the top
-  std::vector<float> depth;        // width*height
+  std::vector<std::uint8_t> rgba;          // width*height*4, row 0 at the top
+  std::vector<float> depth;                // width*height, as floats in [0, 1]
+  std::vector<std::uint32_t> depthStorage; // width*height, as stored: UNORM integer or the float's bits
 };
 
 struct DeviceOptions {

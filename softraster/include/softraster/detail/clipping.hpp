@@ -7,10 +7,14 @@
 //   - its window position is pos * (1/w) * scale + trans with no FMA (this is C code in Mesa);
 //   - a NaN or infinite distance drops the whole triangle;
 //   - the resulting polygon is emitted as a fan from its vertex 0.
-// Deliberately absent: user clip planes, clip distances, noperspective and flat varyings.
+//   - noperspective varyings use a t recomputed in screen space (from x, or y when x is equal);
+//     flat varyings of the polygon's vertex 0 are the provoking vertex's.
+// With depth clamp the z planes are simply absent from the clip masks.
+// Deliberately absent: user clip planes, clip distances.
 #pragma once
 
 #include <softraster/detail/vertex_processing.hpp>
+#include <softraster/shader.hpp>
 
 #include <array>
 #include <cmath>
@@ -37,13 +41,27 @@ inline float clipDistance(Vec4 p, int plane) {
 
 template <int N>
 inline ShadedVertex<N> interpolateClipVertex(float t, const ShadedVertex<N>& base, const ShadedVertex<N>& other,
-                                             const ViewportTransform& vp) {
+                                             const ViewportTransform& vp, const InterpolationSet<N>& interpolation) {
   ShadedVertex<N> v;
   for (int i = 0; i < 4; ++i) v.clip[i] = base.clip[i] + t * (other.clip[i] - base.clip[i]);
   const float oneOverW = 1.0f / v.clip.w;
   v.window = {v.clip.x * oneOverW * vp.scale[0] + vp.translate[0], v.clip.y * oneOverW * vp.scale[1] + vp.translate[1],
               v.clip.z * oneOverW * vp.scale[2] + vp.translate[2], oneOverW};
-  for (int i = 0; i < N; ++i) v.varyings[i] = base.varyings[i] + t * (other.varyings[i] - base.varyings[i]);
+  // noperspective: the same point's parameter along the edge in screen space.
+  float tScreen = t;
+  for (int k = 0; k < 2; ++k) {
+    if (other.clip[k] != base.clip[k]) {
+      const float otherCoord = other.clip[k] / other.clip.w;
+      const float baseCoord = base.clip[k] / base.clip.w;
+      const float newCoord = v.clip[k] / v.clip.w;
+      tScreen = (newCoord - baseCoord) / (otherCoord - baseCoord);
+      break;
+    }
+  }
+  for (int i = 0; i < N; ++i) {
+    const float ti = interpolation[static_cast<std::size_t>(i)] == Interpolation::NoPerspective ? tScreen : t;
+    v.varyings[i] = base.varyings[i] + ti * (other.varyings[i] - base.varyings[i]);
+  }
   v.clipMask = 0;
   return v;
 }
@@ -52,7 +70,7 @@ inline ShadedVertex<N> interpolateClipVertex(float t, const ShadedVertex<N>& bas
 // their masks). Returns false when the triangle is dropped entirely (empty or NaN/Inf).
 template <int N>
 bool clipTriangle(const ShadedVertex<N>& a, const ShadedVertex<N>& b, const ShadedVertex<N>& c, std::uint32_t clipMask,
-                  const ViewportTransform& vp, ClippedPolygon<N>& result) {
+                  const ViewportTransform& vp, const InterpolationSet<N>& interpolation, ClippedPolygon<N>& result) {
   // Two vertex lists that swap roles after each plane; indices point into `storage`.
   std::array<ShadedVertex<N>, 3 + kMaxClippedVertices + 1> storage;
   int stored = 0;
@@ -99,15 +117,15 @@ bool clipTriangle(const ShadedVertex<N>& a, const ShadedVertex<N>& b, const Shad
         ShadedVertex<N> made;
         if (dp < 0.0f) {  // leaving: interpolate from whichever endpoint is nearer the plane
           if (-dp < dpPrevious) {
-            made = interpolateClipVertex(dp / denominator, cur, prev, vp);
+            made = interpolateClipVertex(dp / denominator, cur, prev, vp, interpolation);
           } else {
-            made = interpolateClipVertex(-dpPrevious / denominator, prev, cur, vp);
+            made = interpolateClipVertex(-dpPrevious / denominator, prev, cur, vp, interpolation);
           }
         } else {  // coming back in
           if (-dpPrevious < dp) {
-            made = interpolateClipVertex(-dpPrevious / denominator, prev, cur, vp);
+            made = interpolateClipVertex(-dpPrevious / denominator, prev, cur, vp, interpolation);
           } else {
-            made = interpolateClipVertex(dp / denominator, cur, prev, vp);
+            made = interpolateClipVertex(dp / denominator, cur, prev, vp, interpolation);
           }
         }
         storage[stored] = made;
@@ -123,6 +141,9 @@ bool clipTriangle(const ShadedVertex<N>& a, const ShadedVertex<N>& b, const Shad
   if (n < 3) return false;
   result.count = n;
   for (int i = 0; i < n; ++i) result.vertices[i] = storage[in[i]];
+  for (int i = 0; i < N; ++i) {  // flat varyings come from the provoking vertex, a
+    if (interpolation[static_cast<std::size_t>(i)] == Interpolation::Flat) result.vertices[0].varyings[i] = a.varyings[i];
+  }
   return true;
 }
 

@@ -2,13 +2,14 @@
 // evaluation at a pixel centre as lavapipe's fragment JIT code does it:
 //   a = fmuladd(dady, py, fmuladd(dadx, px, a0));
 //   perspective-correct varyings are set up pre-multiplied by 1/w at the vertices and divided
-//   per pixel by a real division: v = a * (1.0f / w_interp).
-// Deliberately absent until scenes need them: noperspective and flat varyings, centroid and
-// sample locations, derivatives.
+//   per pixel by a real division: v = a * (1.0f / w_interp);
+//   noperspective varyings use the plane of the plain values; flat ones the provoking vertex's.
+// Deliberately absent until scenes need them: centroid and sample locations, derivatives.
 #pragma once
 
 #include <softraster/detail/fused_multiply_add.hpp>
 #include <softraster/detail/triangle_setup.hpp>
+#include <softraster/shader.hpp>
 
 #include <array>
 
@@ -26,16 +27,27 @@ struct TriangleInterpolants {
   std::array<PlaneEquation, N> varyings;
 };
 
+// v0 is the provoking vertex.
 template <int N>
 inline TriangleInterpolants<N> setupInterpolants(const ShadedVertex<N>& v0, const ShadedVertex<N>& v1,
-                                                 const ShadedVertex<N>& v2) {
+                                                 const ShadedVertex<N>& v2, const InterpolationSet<N>& interpolation) {
   const PlaneSetup setup(v0.window, v1.window, v2.window);
   TriangleInterpolants<N> t;
   t.depth = setup.plane(v0.window.z, v1.window.z, v2.window.z);
   t.oneOverW = setup.plane(v0.window.w, v1.window.w, v2.window.w);
   for (int i = 0; i < N; ++i) {
-    t.varyings[i] = setup.plane(v0.varyings[i] * v0.window.w, v1.varyings[i] * v1.window.w,
-                                v2.varyings[i] * v2.window.w);
+    switch (interpolation[static_cast<std::size_t>(i)]) {
+      case Interpolation::Perspective:
+        t.varyings[i] = setup.plane(v0.varyings[i] * v0.window.w, v1.varyings[i] * v1.window.w,
+                                    v2.varyings[i] * v2.window.w);
+        break;
+      case Interpolation::NoPerspective:
+        t.varyings[i] = setup.plane(v0.varyings[i], v1.varyings[i], v2.varyings[i]);
+        break;
+      case Interpolation::Flat:
+        t.varyings[i] = {v0.varyings[i], 0.0f, 0.0f};
+        break;
+    }
   }
   return t;
 }
@@ -48,10 +60,17 @@ inline float interpolateDepth(const TriangleInterpolants<N>& t, float px, float 
 }
 
 template <bool Fused, int N>
-inline void interpolateVaryings(const TriangleInterpolants<N>& t, float px, float py, float* out) {
+inline void interpolateVaryings(const TriangleInterpolants<N>& t, const InterpolationSet<N>& interpolation, float px,
+                                float py, float* out) {
   if constexpr (N > 0) {
     const float w = 1.0f / evaluatePlane<Fused>(t.oneOverW, px, py);
-    for (int i = 0; i < N; ++i) out[i] = evaluatePlane<Fused>(t.varyings[i], px, py) * w;
+    for (int i = 0; i < N; ++i) {
+      switch (interpolation[static_cast<std::size_t>(i)]) {
+        case Interpolation::Perspective: out[i] = evaluatePlane<Fused>(t.varyings[i], px, py) * w; break;
+        case Interpolation::NoPerspective: out[i] = evaluatePlane<Fused>(t.varyings[i], px, py); break;
+        case Interpolation::Flat: out[i] = t.varyings[i].a0; break;
+      }
+    }
   }
 }
 

@@ -1,20 +1,52 @@
-// Per-sample operations: the depth range clamp, the depth test and the colour and depth writes.
-// Colour is stored as R8G8B8A8_UNORM the way lavapipe converts: clamp to [0, 1] (NaN to 0),
-// multiply by 255 in float, round half to even.
-// Deliberately absent: blending, colour write masks, stencil, other formats.
+// Per-sample operations: the depth range clamp, the conversion of depth to its storage format,
+// the depth test and the colour and depth writes, as lavapipe's fragment JIT code does them:
+//   D32_SFLOAT compared as float; D24: cvtps2dq(z * 16777215.0f); D16: the "magic number"
+//   conversion, the low 16 bits of float(z * (65535/65536)) + 128.0f.
+// Colour is stored as R8G8B8A8_UNORM: clamp to [0, 1] (NaN to 0), multiply by 255 in float,
+// round half to even.
+// Deliberately absent: blending, colour write masks, stencil, other colour formats.
 #pragma once
 
+#include <softraster/framebuffer.hpp>
 #include <softraster/math.hpp>
 #include <softraster/state.hpp>
 
+#include <bit>
 #include <cmath>
 #include <cstdint>
 
 namespace softraster::detail {
 
-inline float clampDepth(float z) { return std::fmin(std::fmax(z, 0.0f), 1.0f); }
+// Vulkan keeps fragment depth in [0, 1]; with depth clamp also in the viewport's depth range.
+struct DepthRange {
+  float min = 0, max = 1;
+};
 
-inline bool depthTestPasses(CompareOp op, float incoming, float stored) {
+inline DepthRange fragmentDepthRange(const Viewport& vp, bool depthClamp) {
+  if (!depthClamp) return {};
+  return {std::fmin(vp.minDepth, vp.maxDepth), std::fmax(vp.minDepth, vp.maxDepth)};
+}
+
+inline float clampDepth(float z, DepthRange range) {
+  z = std::fmin(std::fmax(z, 0.0f), 1.0f);
+  return std::fmin(std::fmax(z, range.min), range.max);
+}
+
+// A depth in [0, 1] as the format stores it.
+template <DepthFormat Format>
+inline std::uint32_t depthToStorage(float z) {
+  if constexpr (Format == DepthFormat::D32Sfloat) {
+    return std::bit_cast<std::uint32_t>(z);
+  } else if constexpr (Format == DepthFormat::X8D24UnormPack32) {
+    return static_cast<std::uint32_t>(std::nearbyint(z * 16777215.0f));
+  } else {
+    const float shifted = z * (65535.0f / 65536.0f) + 128.0f;  // two roundings, as in the JIT code
+    return std::bit_cast<std::uint32_t>(shifted) & 0xffffu;
+  }
+}
+
+template <class T>
+inline bool compare(CompareOp op, T incoming, T stored) {
   switch (op) {
     case CompareOp::Never: return false;
     case CompareOp::Less: return incoming < stored;
@@ -26,6 +58,15 @@ inline bool depthTestPasses(CompareOp op, float incoming, float stored) {
     case CompareOp::Always: return true;
   }
   return false;
+}
+
+template <DepthFormat Format>
+inline bool depthTestPasses(CompareOp op, std::uint32_t incoming, std::uint32_t stored) {
+  if constexpr (Format == DepthFormat::D32Sfloat) {
+    return compare(op, std::bit_cast<float>(incoming), std::bit_cast<float>(stored));
+  } else {
+    return compare(op, incoming, stored);
+  }
 }
 
 inline std::uint8_t unorm8FromFloat(float v) {

@@ -1,13 +1,18 @@
-// Primitive assembly: splits an indexed triangle list into the vertex batches lavapipe's draw
-// module uses (vsplit segments of 1023 indices, no index bounds from the Vulkan driver), and says
-// whether a batch needed clipping. That matters beyond clipping itself: every triangle of a
-// batch with any vertex outside the frustum goes through Mesa's draw pipeline, whose cull stage
-// tests a float determinant before the fixed-point setup does its own.
-// Deliberately only triangle lists; strips, fans, lines and points come with their scenes.
+// Primitive assembly: turns a topology and its vertex indices into triangles in lavapipe's order
+// and vertex batches.
+//   - Order (provoking vertex first, Vulkan's default): list (3k, 3k+1, 3k+2); strip
+//     (k, k+1, k+2), or (k, k+2, k+1) for odd k; fan (k+1, k+2, 0).
+//   - Batches: Mesa's vsplit front end cuts a draw into segments of at most 1024 vertices
+//     (lavapipe gives no index bounds): 341 triangles for lists, 1022 for strips and fans.
+//     A batch with any vertex outside the frustum goes through Mesa's draw pipeline, whose cull
+//     stage tests a float determinant before the fixed-point setup does its own.
+// Deliberately only triangles; lines and points come with their own stages.
 #pragma once
 
 #include <softraster/detail/vertex_processing.hpp>
+#include <softraster/state.hpp>
 
+#include <array>
 #include <cstddef>
 #include <cstdint>
 #include <span>
@@ -15,12 +20,45 @@
 
 namespace softraster::detail {
 
-inline constexpr std::size_t kBatchIndices = 1023;  // 1024-entry segment trimmed to whole triangles
+using TriangleIndices = std::array<std::uint32_t, 3>;
+
+inline bool isTriangleTopology(Topology t) {
+  return t == Topology::TriangleList || t == Topology::TriangleStrip || t == Topology::TriangleFan;
+}
+
+inline std::size_t trianglesPerBatch(Topology t) { return t == Topology::TriangleList ? 341 : 1022; }
+
+// The triangles of a draw, as vertex numbers: `indices` (indexed draw) or 0..count-1.
+inline std::vector<TriangleIndices> assembleTriangles(Topology topology, std::span<const std::uint32_t> indices) {
+  std::vector<TriangleIndices> triangles;
+  const std::size_t n = indices.size();
+  if (n < 3) return triangles;
+  switch (topology) {
+    case Topology::TriangleList:
+      for (std::size_t k = 0; k + 2 < n; k += 3) triangles.push_back({indices[k], indices[k + 1], indices[k + 2]});
+      break;
+    case Topology::TriangleStrip:
+      for (std::size_t k = 0; k + 2 < n; ++k) {
+        if (k % 2 == 0) {
+          triangles.push_back({indices[k], indices[k + 1], indices[k + 2]});
+        } else {
+          triangles.push_back({indices[k], indices[k + 2], indices[k + 1]});
+        }
+      }
+      break;
+    case Topology::TriangleFan:
+      for (std::size_t k = 0; k + 2 < n; ++k) triangles.push_back({indices[k + 1], indices[k + 2], indices[0]});
+      break;
+    default:
+      break;
+  }
+  return triangles;
+}
 
 template <int N>
-inline bool batchNeedsClipping(std::span<const std::uint32_t> batch, const std::vector<ShadedVertex<N>>& vertices) {
+inline bool batchNeedsClipping(std::span<const TriangleIndices> batch, const std::vector<ShadedVertex<N>>& vertices) {
   std::uint32_t mask = 0;
-  for (std::uint32_t index : batch) mask |= vertices[index].clipMask;
+  for (const TriangleIndices& t : batch) mask |= vertices[t[0]].clipMask | vertices[t[1]].clipMask | vertices[t[2]].clipMask;
   return mask != 0;
 }
 

@@ -32,15 +32,16 @@ enum ClipPlaneBit : std::uint32_t {
   kOutsideFar = 1u << 5,     // z > w
 };
 
-// The comparisons are unordered, as in lavapipe: a NaN coordinate is outside every plane.
-inline std::uint32_t computeClipMask(Vec4 c) {
+// The comparisons are unordered, as in lavapipe: a NaN takes a vertex outside every plane whose
+// test it takes part in. Without depth clipping (depth clamp on) the z planes are not tested.
+inline std::uint32_t computeClipMask(Vec4 c, bool clipDepth = true) {
   std::uint32_t mask = 0;
   if (!(c.x <= c.w)) mask |= kOutsideRight;
   if (!(0.0f <= c.x + c.w)) mask |= kOutsideLeft;
   if (!(c.y <= c.w)) mask |= kOutsideBottom;
   if (!(0.0f <= c.y + c.w)) mask |= kOutsideTop;
-  if (!(0.0f <= c.z)) mask |= kOutsideNear;
-  if (!(c.z <= c.w)) mask |= kOutsideFar;
+  if (clipDepth && !(0.0f <= c.z)) mask |= kOutsideNear;
+  if (clipDepth && !(c.z <= c.w)) mask |= kOutsideFar;
   return mask;
 }
 
@@ -72,10 +73,10 @@ inline Vec4 windowPosition(Vec4 clip, const ViewportTransform& vp) {
 template <class Shader, bool Fused>
 inline ShadedVertex<Shader::kVaryings> shadeVertex(const typename Shader::Uniforms& uniforms,
                                                    const typename Shader::Vertex& vertex,
-                                                   const ViewportTransform& vp) {
+                                                   const ViewportTransform& vp, bool clipDepth) {
   ShadedVertex<Shader::kVaryings> out;
   out.clip = Shader::vertex(uniforms, vertex, out.varyings.data());
-  out.clipMask = computeClipMask(out.clip);
+  out.clipMask = computeClipMask(out.clip, clipDepth);
   out.window = windowPosition<Fused>(out.clip, vp);
   return out;
 }
