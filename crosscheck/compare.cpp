@@ -86,6 +86,14 @@ Comparison compareFrames(const Frame& a, const Frame& b, const Scene& scene) {
   return c;
 }
 
+std::uint64_t coveredPixels(const Frame& frame, const Scene& scene) {
+  const auto clear = clearColourBytes(scene);
+  const std::uint32_t clearDepth = softraster::depthClearValue(scene.depthFormat, scene.clearDepth);
+  std::uint64_t count = 0;
+  for (std::size_t i = 0; i < frame.depthStorage.size(); ++i) count += covered(frame, i, clear, clearDepth);
+  return count;
+}
+
 std::vector<std::uint8_t> diffHeatmap(const Frame& a, const Frame& b, const Scene& scene) {
   const std::size_t pixels = static_cast<std::size_t>(a.width) * a.height;
   std::vector<std::uint8_t> out(4 * pixels, 0);

@@ -31,6 +31,9 @@ struct Comparison {
 
 Comparison compareFrames(const Frame& result, const Frame& reference, const Scene& scene);
 
+// Pixels covered in a frame (colour or depth differs from the scene's clear values).
+std::uint64_t coveredPixels(const Frame& frame, const Scene& scene);
+
 // RGBA8 heatmap of the difference: black where equal, blue up to the colour threshold, red to
 // yellow above it by magnitude, magenta where coverage differs.
 std::vector<std::uint8_t> diffHeatmap(const Frame& result, const Frame& reference, const Scene& scene);

@@ -8,6 +8,7 @@
 
 #include <fstream>
 #include <initializer_list>
+#include <limits>
 #include <map>
 #include <set>
 #include <sstream>
@@ -42,6 +43,19 @@ void checkKeys(const json& object, const std::string& place, std::initializer_li
 double readNumber(const json& value, const std::string& place) {
   if (!value.is_number()) throw SceneError(place, "expected a number");
   return value.get<double>();
+}
+
+// A vertex coordinate: a number, or "nan", "inf" or "-inf" (JSON has no literals for them),
+// so scenes can test how the pipeline drops such vertices.
+float readCoordinate(const json& value, const std::string& place) {
+  if (value.is_string()) {
+    const std::string text = value.get<std::string>();
+    if (text == "nan") return std::numeric_limits<float>::quiet_NaN();
+    if (text == "inf") return std::numeric_limits<float>::infinity();
+    if (text == "-inf") return -std::numeric_limits<float>::infinity();
+    throw SceneError(place, "expected a number, \"nan\", \"inf\" or \"-inf\"");
+  }
+  return static_cast<float>(readNumber(value, place));
 }
 
 double readNumber(const json& object, const char* key, const std::string& place, double fallback) {
@@ -136,7 +150,11 @@ softraster::Mat4 readCamera(const json& camera, const std::string& place, int wi
     if (c.eye == c.target) throw SceneError(place, "eye and target are the same point");
     return viewProjection(c, width, height);
   }
-  throw SceneError(placeOf(place, "type"), "'" + type + "' is not one of pinhole, look_at");
+  if (type == "clip_space") {  // positions are clip coordinates (w = 1): exact control of window positions
+    checkKeys(camera, place, {"type"});
+    return softraster::Mat4::identity();
+  }
+  throw SceneError(placeOf(place, "type"), "'" + type + "' is not one of pinhole, look_at, clip_space");
 }
 
 void readDrawState(const json& d, const std::string& place, softraster::PipelineState& state) {
@@ -223,9 +241,12 @@ Draw readDraw(const json& d, const std::string& place, const std::filesystem::pa
   const json& positions = d["positions"];
   if (!positions.is_array() || positions.empty()) throw SceneError(placeOf(place, "positions"), "expected an array of [x, y, z]");
   for (std::size_t i = 0; i < positions.size(); ++i) {
-    const auto p = readNumbers(positions[i], placeOf(placeOf(place, "positions"), std::to_string(i)), 3, 3);
+    const std::string at = placeOf(placeOf(place, "positions"), std::to_string(i));
+    const json& p = positions[i];
+    if (!p.is_array() || p.size() != 3) throw SceneError(at, "expected [x, y, z]");
     shaders::VertexColorVertex v;
-    v.position = {static_cast<float>(p[0]), static_cast<float>(p[1]), static_cast<float>(p[2])};
+    v.position = {readCoordinate(p[0], placeOf(at, "0")), readCoordinate(p[1], placeOf(at, "1")),
+                  readCoordinate(p[2], placeOf(at, "2"))};
     v.colour = colour;
     draw.vertices.push_back(v);
   }

@@ -1,5 +1,6 @@
-// Cross-checks: scenes rendered by softraster and by Vulkan on lavapipe, with the
-// validation layer on (any message fails), compared within the scene's tolerance.
+// Cross-checks: every scene in scenes/ rendered by softraster and by Vulkan on lavapipe, with the
+// validation layer on (any message fails), compared within the scene's tolerance. Each scene is
+// its own test case (CrossCheck/Scene.Matches/<name>), found when the test binary starts.
 // On failure the soft, vulkan and diff images are written to build/test-artifacts/<scene>/.
 #include "compare.hpp"
 #include "image_io.hpp"
@@ -8,8 +9,11 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <filesystem>
 #include <memory>
+#include <string>
+#include <vector>
 
 namespace {
 
@@ -52,15 +56,27 @@ void crossCheckScene(const std::string& name) {
   EXPECT_LE(c.depthMaxDelta, scene->tolerance.depthThreshold);
 
   // The scene must actually draw something, or agreement proves nothing.
-  const std::uint32_t clearDepth = softraster::depthClearValue(scene->depthFormat, scene->clearDepth);
-  std::size_t covered = 0;
-  for (std::uint32_t z : soft->depthStorage) covered += z != clearDepth;
-  EXPECT_GT(covered, soft->depthStorage.size() / 50) << "the scene draws almost nothing";
+  EXPECT_GE(crosscheck::coveredPixels(*soft, *scene), 100u) << "the scene draws almost nothing";
 
   if (::testing::Test::HasFailure()) writeArtifacts(name, *soft, *reference, *scene);
 }
 
+std::vector<std::string> sceneNames() {
+  std::vector<std::string> names;
+  for (const auto& entry : std::filesystem::directory_iterator(kScenes)) {
+    if (entry.path().extension() == ".json") names.push_back(entry.path().stem().string());
+  }
+  std::sort(names.begin(), names.end());
+  return names;
+}
+
+class Scene : public ::testing::TestWithParam<std::string> {};
+
 }  // namespace
 
-TEST(CrossCheck, Room) { crossCheckScene("room"); }
-TEST(CrossCheck, RandomTriangles) { crossCheckScene("random_triangles"); }
+TEST_P(Scene, Matches) { crossCheckScene(GetParam()); }
+
+INSTANTIATE_TEST_SUITE_P(CrossCheck, Scene, ::testing::ValuesIn(sceneNames()),
+                         [](const ::testing::TestParamInfo<std::string>& info) { return info.param; });
+
+TEST(CrossCheck, SuiteIsNotEmpty) { EXPECT_GE(sceneNames().size(), 20u); }

@@ -1,0 +1,257 @@
+#!/usr/bin/env python3
+"""Writes the feature and stability scenes of the conformance suite (one JSON file each).
+Geometry is laid out in pixels and unprojected through the scenes' pinhole camera (at the origin,
+looking along +z, y down, focal length F), so each scene's layout is easy to reason about.
+Run from scenes/:  python3 tools/make_feature_scenes.py"""
+import json
+import math
+import random
+
+W, H, F = 256, 192, 200.0
+CAMERA = {"type": "pinhole", "position": [0, 0, 0], "focal_length": F, "near": 0.5, "far": 20}
+FRAMEBUFFER = {"width": W, "height": H, "clear_colour": [0.1, 0.1, 0.1, 1]}
+PALETTE = [[0.9, 0.2, 0.2], [0.2, 0.8, 0.2], [0.2, 0.3, 0.9], [0.9, 0.8, 0.2], [0.8, 0.3, 0.8],
+           [0.2, 0.8, 0.8], [0.95, 0.55, 0.15], [0.6, 0.6, 0.6]]
+
+
+def at(px, py, z):
+    """World position seen at pixel (px, py) at camera depth z."""
+    return [round((px - W / 2) * z / F, 6), round((py - H / 2) * z / F, 6), round(z, 6)]
+
+
+def ccw(x, y, w, h, z=2.0):
+    """Counter-clockwise on screen (Vulkan's sense, y down): top-left, bottom-left, top-right."""
+    return [at(x, y, z), at(x, y + h, z), at(x + w, y, z)]
+
+
+def cw(x, y, w, h, z=2.0):
+    return [at(x, y, z), at(x + w, y, z), at(x, y + h, z)]
+
+
+def draw(name, positions, colours=None, **state):
+    d = {"name": name, "positions": positions}
+    if colours is not None:
+        d["colours"] = colours
+    d.update(state)
+    return d
+
+
+def rainbow(n, offset=0):
+    return [PALETTE[(i + offset) % len(PALETTE)] for i in range(n)]
+
+
+def scene(filename, description, draws, framebuffer=None, camera=None, tolerance=None):
+    s = {"description": description, "framebuffer": framebuffer or FRAMEBUFFER, "camera": camera or CAMERA,
+         "draws": draws}
+    if tolerance:
+        s["tolerance"] = tolerance
+    with open(filename, "w") as f:
+        json.dump(s, f, indent=1)
+        f.write("\n")
+
+
+# ---- culling: every cull mode with both front faces, a CCW and a CW triangle in each cell ----
+draws = []
+for row, front in enumerate(["counter_clockwise", "clockwise"]):
+    for col, cull in enumerate(["none", "front", "back", "front_and_back"]):
+        x, y = col * 64 + 4, row * 96 + 8
+        draws.append(draw(f"{cull}/{front}", ccw(x, y, 26, 80) + cw(x + 30, y, 26, 80),
+                          rainbow(6, col + 4 * row), cull=cull, front_face=front))
+scene("culling.json", "Back-face culling: none, front, back and front_and_back, each with counter-clockwise and "
+      "clockwise front faces; every cell holds one counter-clockwise (left) and one clockwise (right) triangle.",
+      draws)
+
+# ---- topologies: lists, strips and fans, indexed and not ----
+def strip(x0, y0, step, height, n, z0, z1):
+    pts = []
+    for i in range(n):
+        x = x0 + (i // 2) * step
+        y = y0 + (height if i % 2 else 0)
+        pts.append(at(x, y, z0 + (z1 - z0) * i / (n - 1)))
+    return pts
+
+def fan(cx, cy, r, n, z):
+    pts = [at(cx, cy, z)]
+    for k in range(n):
+        a = 2 * math.pi * k / (n - 1) * 0.9
+        pts.append(at(cx + r * math.cos(a), cy - r * math.sin(a), z + 0.3 * math.sin(3 * a)))
+    return pts
+
+list_pts = ccw(8, 8, 40, 40, 2.5) + ccw(56, 8, 40, 40, 1.5) + cw(104, 8, 40, 40, 2)
+strip_pts = strip(8, 60, 30, 50, 10, 1.5, 3.0)
+fan_pts = fan(200, 48, 40, 9, 2.2)
+draws = [
+    draw("list non-indexed", list_pts, rainbow(9), cull="none"),
+    draw("strip non-indexed", strip_pts, rainbow(10, 2), topology="triangle_strip"),
+    draw("strip indexed", strip(8, 125, 30, 50, 10, 3.0, 1.5), rainbow(10, 3), topology="triangle_strip",
+         indices=list(range(10))),
+    draw("fan non-indexed", fan_pts, rainbow(10, 1), topology="triangle_fan"),
+    draw("fan indexed", fan(200, 140, 40, 9, 2.6), rainbow(10, 5), topology="triangle_fan",
+         indices=[0] + list(range(1, 10))),
+]
+scene("topologies.json", "Primitive topologies: triangle list, strip and fan, indexed and non-indexed, with "
+      "back-face culling on strips and fans (their alternate triangles keep a consistent winding) and per-vertex "
+      "colours (the provoking vertex and vertex order of every assembled triangle).", draws)
+
+# ---- viewport and scissor ----
+big = [at(-100, -100, 2), at(-100, 400, 3), at(400, -100, 2.5)]
+draws = [
+    draw("viewport", big, rainbow(3), cull="none",
+         viewport={"x": 20.25, "y": 30.5, "width": 120, "height": 90, "min_depth": 0.25, "max_depth": 0.75}),
+    draw("scissor", [at(-50, -50, 4), at(-50, 300, 4), at(350, 100, 2)], rainbow(3, 3), cull="none",
+         scissor={"x": 150, "y": 100, "width": 80, "height": 60}),
+    draw("viewport flipped depth", [at(160, 10, 2), at(160, 90, 6), at(250, 10, 3)], rainbow(3, 5), cull="none",
+         viewport={"x": 128, "y": 0, "width": 128, "height": 96, "min_depth": 0.9, "max_depth": 0.1}),
+]
+scene("viewport_scissor.json", "Viewport with a fractional offset, a size smaller than the framebuffer and a depth "
+      "range [0.25, 0.75]; a reversed depth range [0.9, 0.1]; a scissor rectangle. Geometry reaches beyond the "
+      "viewport, so clipping against x and y sets the visible edges.", draws)
+
+# ---- depth formats: interpenetrating triangles, an intersection line, clear value tests ----
+def depth_scene(filename, fmt, unit, label):
+    draws = [
+        draw("slanted A", [at(10, 20, 1.0), at(10, 180, 6.0), at(240, 100, 1.5)], rainbow(3, 0)),
+        draw("slanted B", [at(240, 20, 6.0), at(30, 100, 1.2), at(240, 180, 1.0)], rainbow(3, 2)),
+        draw("beyond the clear depth", [at(100, 5, 15), at(100, 60, 15), at(200, 5, 15)], rainbow(3, 4)),
+    ]
+    fb = dict(FRAMEBUFFER, depth_format=fmt, clear_depth=0.97)
+    scene(filename, f"Depth format {label}: two interpenetrating slanted triangles (their intersection line is "
+          f"decided by the format's precision) and a triangle behind the clear depth 0.97, which must not show.",
+          draws, framebuffer=fb, tolerance={"depth": unit})
+
+depth_scene("depth_d16.json", "d16_unorm", 1.5259022e-05, "D16_UNORM")
+depth_scene("depth_x8_d24.json", "x8_d24_unorm", 5.9604649e-08, "X8_D24_UNORM_PACK32")
+depth_scene("depth_d32.json", "d32_sfloat", 5.9604645e-08, "D32_SFLOAT")
+
+# ---- depth compare ops and depth writes ----
+background = [at(0, 0, 2), at(0, 192, 2), at(256, 0, 4), at(256, 192, 4)]
+bg = draw("background", background, [[0.3, 0.3, 0.3]] * 4, topology="triangle_strip")
+draws = [bg]
+ops = ["never", "less", "equal", "less_or_equal", "greater", "not_equal", "greater_or_equal", "always"]
+for i, op in enumerate(ops):
+    y = 4 + i * 23
+    band = [at(0, y, 4), at(0, y + 20, 4), at(256, y, 2), at(256, y + 20, 2)]
+    draws.append(draw(f"compare {op}", band, [PALETTE[i]] * 4, topology="triangle_strip", depth_compare=op,
+                      depth_write=(i % 2 == 0)))
+draws.append(draw("equal on the same plane", background[:3], [[1, 1, 1]] * 3, depth_compare="equal",
+                  depth_write=False))
+draws.append(draw("no depth test", ccw(200, 150, 40, 30, 10), rainbow(3), depth_test=False))
+scene("depth_compare.json", "Every depth compare op against a background whose depth runs across the image, with "
+      "depth writes alternately on and off; a coplanar copy of the background drawn with EQUAL (passes only where "
+      "both interpolate to the same bits); a triangle with the depth test off.", draws,
+      framebuffer=dict(FRAMEBUFFER, clear_depth=0.995))
+
+# ---- depth clamp versus depth clip ----
+draws = [
+    draw("crosses near, clamped", [at(20, 20, 0.2), at(20, 170, 3), at(120, 60, 0.3)], rainbow(3), cull="none",
+         depth_clamp=True, viewport={"x": 0, "y": 0, "width": 256, "height": 192, "min_depth": 0.1,
+                                     "max_depth": 0.9}),
+    draw("crosses far, clamped", [at(130, 20, 40), at(130, 170, 5), at(250, 90, 60)], rainbow(3, 3), cull="none",
+         depth_clamp=True),
+    draw("crosses near, clipped", [at(140, 120, 0.2), at(250, 180, 3), at(250, 120, 0.25)], rainbow(3, 6),
+         cull="none"),
+]
+scene("depth_clamp.json", "Depth clamp against depth clip: triangles crossing the near and the far plane with "
+      "depthClampEnable (no z clipping, depth clamped to the viewport's range [0.1, 0.9]) and one without it.",
+      draws)
+
+# ---- interpolation qualifiers: the course's perspective floor ----
+floor_camera = {"type": "pinhole", "position": [0, -1, 0], "pitch": -25, "focal_length": F, "near": 0.1, "far": 30}
+
+def floor_strip(x0, x1, z0, z1, rows):
+    pts, cols = [], []
+    for r in range(rows + 1):
+        z = z0 + (z1 - z0) * r / rows
+        pts += [[x0, 0, z], [x1, 0, z]]
+        c = [1, 1, 1] if r % 2 == 0 else [0.1, 0.1, 0.6]
+        cols += [c, [1 - c[0], c[1] * 0.5, 1 - c[2]]]
+    return pts, cols
+
+draws = []
+for i, (shading, x0) in enumerate([("vertex_color", -3.2), ("vertex_color_noperspective", -1.0),
+                                   ("vertex_color_flat", 1.2)]):
+    pts, cols = floor_strip(x0, x0 + 2.0, -0.5, 12, 6)
+    draws.append(draw(shading, pts, cols, topology="triangle_strip", cull="none", shading=shading))
+scene("interpolation.json", "Varying interpolation on a floor receding from the camera and reaching behind it "
+      "(the near plane clips it): perspective-correct (left), noperspective (middle: the course's skewed 'not "
+      "perspective-correct' figure) and flat (right, the provoking vertex's colour).", draws, camera=floor_camera)
+
+# ---- stability ----
+scene("near_plane_triangle.json", "A triangle crossing the near plane: one vertex behind the camera, two in "
+      "front. Clipping must produce the same quad in both renderers.",
+      [draw("crossing", [[0.0, -0.2, -1.0], [-1.5, 0.8, 3.0], [1.5, 0.8, 3.0]], rainbow(3), cull="none")])
+
+scene("behind_camera.json", "A triangle entirely behind the camera (dropped by clipping, never drawn mirrored) and "
+      "a visible reference triangle.",
+      [draw("behind", [[-1, -1, -2], [1, -1, -2], [0, 1, -3]], rainbow(3), cull="none"),
+       draw("reference", ccw(60, 50, 120, 90, 3), rainbow(3, 4))])
+
+scene("w_zero.json", "Vertices with w = 0: one on the camera plane off-centre and one exactly at the camera "
+      "position; the triangles that use them are clipped, not divided by zero.",
+      [draw("w0 off-centre", [[0.5, 0.2, 0.0], [-1.0, 0.5, 3.0], [1.0, -0.5, 2.0]], rainbow(3), cull="none"),
+       draw("w0 at the eye", [[0.0, 0.0, 0.0], [-1.0, 1.0, 4.0], [1.5, 0.8, 4.0]], rainbow(3, 3), cull="none")])
+
+scene("huge_coordinates.json", "Vertices far outside the view (1e6, 1e7, 1e30 and a vertex behind the camera at "
+      "1e6): clipping must keep the visible part exact without overflowing the fixed-point rasterizer.",
+      [draw("1e6", [[-1e6, -1e6, 5.0], [0.5, 0.8, 3.0], [1e6, -0.5, 4.0]], rainbow(3), cull="none"),
+       draw("1e7 and 1e30", [[1e7, 1e7, 2.0], [-0.8, 0.2, 2.5], [-1e30, 0.4, 3.0]], rainbow(3, 2), cull="none"),
+       draw("behind at 1e6", [[0.0, 0.0, -1e6], [-0.6, -0.6, 2.0], [0.6, -0.7, 2.5]], rainbow(3, 5), cull="none")])
+
+scene("z_fighting.json", "Two coplanar overlapping triangles (z-fighting): the second, drawn with LESS, loses "
+      "where its depth equals the first's and wins only where rounding makes it nearer; with LESS_OR_EQUAL it wins "
+      "ties. Both renderers must pick the same winner at every pixel.",
+      [draw("first", [at(20, 20, 2.0), at(20, 170, 5.0), at(230, 60, 3.0)], [[0.9, 0.2, 0.2]] * 3),
+       draw("second, less", [at(230, 170, 4.0), at(230, 60, 3.0), at(20, 170, 5.0)][::-1], [[0.2, 0.2, 0.9]] * 3),
+       draw("third, less_or_equal", [at(20, 20, 2.0), at(20, 170, 5.0), at(125, 40, 2.5)], [[0.2, 0.9, 0.2]] * 3,
+            depth_compare="less_or_equal")])
+
+scene("nan_inf.json", "Vertices with NaN, +Inf and -Inf coordinates: no crash; each triangle using one is dropped "
+      "as lavapipe drops it. A reference triangle shows the frame is drawn.",
+      [draw("nan", [["nan", 0.0, 2.0], [-1.0, 0.5, 3.0], [1.0, -0.5, 2.0]], rainbow(3), cull="none"),
+       draw("inf", [[0.2, "inf", 2.0], [-1.0, 0.5, 3.0], [1.0, -0.5, 2.0]], rainbow(3, 2), cull="none"),
+       draw("-inf depth", [[0.2, 0.1, "-inf"], [-1.0, 0.5, 3.0], [1.0, -0.5, 2.0]], rainbow(3, 4), cull="none"),
+       draw("reference", ccw(150, 100, 80, 60, 3), rainbow(3, 6))])
+
+# Slivers, needles, sub-pixel and zero-area triangles; the second draw shares its batch with a
+# triangle that clips, so lavapipe's float-determinant cull stage sees all of them too.
+rng = random.Random(7)
+def sliver_set(offset_x):
+    pts = []
+    for i in range(120):
+        x, y = rng.uniform(4, 124) + offset_x, rng.uniform(4, 188)
+        kind = i % 4
+        if kind == 0:    # needle: long and a fraction of a pixel wide
+            a = rng.uniform(0, math.pi)
+            l, wdt = rng.uniform(20, 90), rng.uniform(0.01, 0.6)
+            dx, dy = math.cos(a) * l, math.sin(a) * l
+            tri = [(x, y), (x + dx, y + dy), (x + dx - math.sin(a) * wdt, y + dy + math.cos(a) * wdt)]
+        elif kind == 1:  # sliver: nearly collinear
+            dx, dy = rng.uniform(-40, 40), rng.uniform(-40, 40)
+            t, off = rng.uniform(0.2, 0.8), rng.uniform(-0.02, 0.02)
+            tri = [(x, y), (x + dx, y + dy), (x + t * dx - off * dy, y + t * dy + off * dx)]
+        elif kind == 2:  # sub-pixel
+            tri = [(x, y), (x + rng.uniform(-0.9, 0.9), y + rng.uniform(-0.9, 0.9)),
+                   (x + rng.uniform(-0.9, 0.9), y + rng.uniform(-0.9, 0.9))]
+        else:            # zero area: collinear or repeated vertices
+            dx, dy = rng.uniform(-30, 30), rng.uniform(-30, 30)
+            tri = [(x, y), (x + dx, y + dy), (x + 2 * dx, y + 2 * dy)] if i % 8 == 3 else [(x, y), (x, y),
+                                                                                          (x + dx, y + dy)]
+        z = rng.uniform(1.5, 6)
+        pts += [at(px, py, z + rng.uniform(-0.3, 0.3)) for px, py in tri]
+    return pts
+
+inside = sliver_set(0)
+clipped = sliver_set(128) + [[0.0, 0.0, -1.0], [2.0, 1.0, 3.0], [2.5, -1.0, 3.0]]
+scene("slivers.json", "Sliver, needle, sub-pixel and zero-area triangles with back-face culling. The right half's "
+      "draw also holds a triangle that clips, so its whole batch goes through lavapipe's draw pipeline and its "
+      "float-determinant cull stage before the fixed-point setup.",
+      [draw("inside", inside, rainbow(len(inside))), draw("batch with clipping", clipped, rainbow(len(clipped), 3))])
+
+# The room seen from inside, turned: the course's reports show garbage here without clipping.
+for yaw in (90, 180):
+    scene(f"room_yaw_{yaw}.json", f"The room with two boxes seen from inside with the camera turned {yaw} degrees: "
+          "walls pass behind and beside the camera and must be clipped, not wrapped around.",
+          [{"name": "cornell_box", "obj": "meshes/cornell_box.obj", "cull": "back"}],
+          framebuffer={"width": 320, "height": 240, "clear_colour": [0, 0, 0, 1]},
+          camera={"type": "pinhole", "position": [0.1, -0.2, -0.3], "yaw": yaw, "pitch": -10, "focal_length": 120,
+                  "near": 0.05, "far": 10})
