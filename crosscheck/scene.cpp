@@ -193,6 +193,15 @@ void readDrawState(const json& d, const std::string& place, softraster::Pipeline
   }
   auto& rs = state.rasterization;
   rs.depthClampEnable = readBool(d, "depth_clamp", place, rs.depthClampEnable);
+  if (d.contains("depth_bias")) {
+    const std::string bp = placeOf(place, "depth_bias");
+    const json& b = d["depth_bias"];
+    checkKeys(b, bp, {"constant", "slope", "clamp"});
+    rs.depthBias.enable = true;
+    rs.depthBias.constantFactor = static_cast<float>(readNumber(b, "constant", bp, 0));
+    rs.depthBias.slopeFactor = static_cast<float>(readNumber(b, "slope", bp, 0));
+    rs.depthBias.clamp = static_cast<float>(readNumber(b, "clamp", bp, 0));
+  }
   rs.cullMode = readEnum(d, "cull", place, rs.cullMode,
                          {{"none", CullMode::None}, {"front", CullMode::Front}, {"back", CullMode::Back},
                           {"front_and_back", CullMode::FrontAndBack}});
@@ -210,7 +219,7 @@ void readDrawState(const json& d, const std::string& place, softraster::Pipeline
 
 Draw readDraw(const json& d, const std::string& place, const std::filesystem::path& sceneDir) {
   checkKeys(d, place, {"name", "obj", "positions", "colours", "colour", "indices", "shading", "topology", "viewport",
-                       "scissor", "cull", "front_face", "depth_clamp", "depth_test", "depth_write", "depth_compare"});
+                       "scissor", "cull", "front_face", "depth_clamp", "depth_bias", "depth_test", "depth_write", "depth_compare"});
   Draw draw;
   draw.name = readString(d, "name", place, place);
   draw.shading = readEnum(d, "shading", place, ShadingModel::VertexColor,

@@ -255,3 +255,23 @@ for yaw in (90, 180):
           framebuffer={"width": 320, "height": 240, "clear_colour": [0, 0, 0, 1]},
           camera={"type": "pinhole", "position": [0.1, -0.2, -0.3], "yaw": yaw, "pitch": -10, "focal_length": 120,
                   "near": 0.05, "far": 10})
+
+# ---- depth bias: constant and slope, clamped, on every depth format ----
+def bias_scene(filename, fmt, unit, label):
+    plane = lambda x, y: [x, y, round(3.0 + 0.4 * x + 0.6 * y, 6)]  # one world-space plane
+    quad = lambda y0, y1: [plane(-1.25, y0), plane(-1.25, y1), plane(1.25, y0), plane(1.25, y1)]
+    draws = [draw("base", quad(-0.95, 0.95), [[0.5, 0.5, 0.5]] * 4, topology="triangle_strip")]
+    for i, (const, slope, clamp) in enumerate([(1, 0, 0), (-4, 0, 0), (0, 1.0, 0), (0, -1.0, 0), (200, 2.0, 0.0001),
+                                               (-200, -2.0, -0.0001)]):
+        y = -0.9 + i * 0.3
+        # The band lies in the base's plane: only the bias decides which of the two is nearer.
+        draws.append(draw(f"bias {const}/{slope}/{clamp}", quad(y, y + 0.22), [PALETTE[i]] * 4,
+                          topology="triangle_strip", depth_bias={"constant": const, "slope": slope, "clamp": clamp}))
+    draws.append(draw("steep", [at(120, 20, 1.0), at(130, 180, 9.0), at(140, 20, 1.2)], rainbow(3), cull="none",
+                      depth_bias={"constant": 3, "slope": 4.0}))
+    scene(filename, f"Depth bias on {label}: bands lying in the plane of a base surface, pushed towards or away "
+          "from the camera by constant and slope factors, with and without a clamp; a steep triangle with a large "
+          "slope factor.", draws, framebuffer=dict(FRAMEBUFFER, depth_format=fmt), tolerance={"depth": unit})
+
+bias_scene("depth_bias_d16.json", "d16_unorm", 1.5259022e-05, "D16_UNORM")
+bias_scene("depth_bias_d32.json", "d32_sfloat", 5.9604645e-08, "D32_SFLOAT")

@@ -266,9 +266,11 @@ auto pipelineKey(const DrawCall& d) {
   const softraster::PipelineState& s = d.state;
   const softraster::Viewport& v = s.viewport;
   const softraster::Scissor& sc = s.scissor;
+  const softraster::DepthBias& b = s.rasterization.depthBias;
   return std::tuple(d.program, s.topology, v.x, v.y, v.width, v.height, v.minDepth, v.maxDepth, sc.x, sc.y, sc.width,
                     sc.height, s.rasterization.cullMode, s.rasterization.frontFace, s.rasterization.depthClampEnable,
-                    s.depth.testEnable, s.depth.writeEnable, s.depth.compareOp);
+                    b.enable, b.constantFactor, b.clamp, b.slopeFactor, s.depth.testEnable, s.depth.writeEnable,
+                    s.depth.compareOp);
 }
 
 std::uint32_t vertexCount(const DrawCall& d) {
@@ -281,7 +283,7 @@ bool isEmpty(const DrawCall& d) { return d.indexed ? d.indices.empty() : vertexC
 
 // What about a draw Vulkan (or this renderer) cannot honour; empty when the draw is fine.
 std::string checkDraw(const DrawCall& d, std::uint32_t width, std::uint32_t height,
-                      const VkPhysicalDeviceLimits& limits, bool depthClampSupported) {
+                      const VkPhysicalDeviceLimits& limits, const VkPhysicalDeviceFeatures& features) {
   const ShaderProgram* p = d.program;
   if (!p) return "no shader program";
   constexpr std::uint32_t kSpirvMagic = 0x07230203;
@@ -292,7 +294,9 @@ std::string checkDraw(const DrawCall& d, std::uint32_t width, std::uint32_t heig
 
   const softraster::PipelineState& s = d.state;
   if (s.topology > softraster::Topology::TriangleFan) return "unsupported topology";
-  if (s.rasterization.depthClampEnable && !depthClampSupported) return "depth clamp is not supported by the device";
+  if (s.rasterization.depthClampEnable && !features.depthClamp) return "depth clamp is not supported by the device";
+  if (s.rasterization.depthBias.enable && s.rasterization.depthBias.clamp != 0 && !features.depthBiasClamp)
+    return "depth bias clamp is not supported by the device";
   if (s.scissor.x < 0 || s.scissor.y < 0) return "scissor offset is negative";
   if (static_cast<std::size_t>(s.rasterization.cullMode) >= std::size(kCullModes)) return "unsupported cull mode";
   if (static_cast<std::size_t>(s.rasterization.frontFace) >= std::size(kFrontFaces)) return "unsupported front face";
@@ -374,7 +378,10 @@ bool createPipeline(VkDevice device, VkPipelineLayout layout, const DrawCall& d,
         .polygonMode = VK_POLYGON_MODE_FILL,
         .cullMode = kCullModes[static_cast<std::size_t>(d.state.rasterization.cullMode)],
         .frontFace = kFrontFaces[static_cast<std::size_t>(d.state.rasterization.frontFace)],
-        .depthBiasEnable = VK_FALSE,
+        .depthBiasEnable = d.state.rasterization.depthBias.enable ? VK_TRUE : VK_FALSE,
+        .depthBiasConstantFactor = d.state.rasterization.depthBias.constantFactor,
+        .depthBiasClamp = d.state.rasterization.depthBias.clamp,
+        .depthBiasSlopeFactor = d.state.rasterization.depthBias.slopeFactor,
         .lineWidth = 1.0f};
     const VkPipelineMultisampleStateCreateInfo multisample{
         .sType = VK_STRUCTURE_TYPE_PIPELINE_MULTISAMPLE_STATE_CREATE_INFO,
@@ -565,6 +572,7 @@ bool Renderer::Impl::createDevice(std::string* error) {
   // Optional core features scenes may use: enabled when the device has them, else draws needing
   // them are rejected by checkDraw.
   features.depthClamp = features2.features.depthClamp;
+  features.depthBiasClamp = features2.features.depthBiasClamp;
 
   std::uint32_t familyCount = 0;
   vkGetPhysicalDeviceQueueFamilyProperties(physicalDevice, &familyCount, nullptr);
@@ -635,7 +643,7 @@ bool Renderer::render(const FrameRequest& request, FrameImages* out, std::string
   const std::vector<DrawCall>& draws = request.draws;
   for (std::size_t i = 0; i < draws.size(); ++i) {
     if (isEmpty(draws[i])) continue;  // skipped, so not checked either
-    if (std::string problem = checkDraw(draws[i], width, height, im.limits, im.features.depthClamp); !problem.empty())
+    if (std::string problem = checkDraw(draws[i], width, height, im.limits, im.features); !problem.empty())
       return fail(error, "draw " + std::to_string(i) + ": " + problem);
   }
 

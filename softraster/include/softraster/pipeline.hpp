@@ -159,7 +159,7 @@ void Context::drawTriangles(const PipelineState& state, const typename Shader::U
       std::swap(fixed.y[1], fixed.y[2]);
     }
     const detail::TriangleEdges edges = detail::setupEdges(fixed);
-    const detail::TriangleInterpolants<N> interpolants = detail::setupInterpolants(a, v1, v2, interpolation);
+    const detail::TriangleInterpolants<N> interpolants = detail::setupInterpolants(a, v1, v2, interpolation, rs.depthBias, Format);
     detail::rasterizeTriangle(edges, region, [&](int px, int py) {
       const float fx = static_cast<float>(px), fy = static_cast<float>(py);
       const std::size_t pixel = static_cast<std::size_t>(py) * width + static_cast<std::size_t>(px);

@@ -2,7 +2,7 @@
 // The fields mirror Vulkan's pipeline create-info structures one to one, so vkref can build a
 // VkPipeline from the same value softraster draws with. A field here that one renderer cannot
 // honour is an error in that renderer, never a silent default.
-// Deliberately absent until a scene needs it: blending, stencil, MSAA, polygon modes, depth bias,
+// Deliberately absent until a scene needs it: blending, stencil, MSAA, polygon modes,
 // lines and points (the topologies exist; softraster reports them as unsupported for now).
 #pragma once
 
@@ -28,12 +28,19 @@ struct Scissor {
   std::uint32_t width = 0, height = 0;
 };
 
+// Vulkan depth bias (VkPipelineRasterizationStateCreateInfo depthBias*), triangles only.
+struct DepthBias {
+  bool enable = false;
+  float constantFactor = 0, clamp = 0, slopeFactor = 0;
+};
+
 struct RasterizationState {
   CullMode cullMode = CullMode::Back;
   FrontFace frontFace = FrontFace::CounterClockwise;
   // Vulkan depthClampEnable: no clipping against z = 0 and z = w; fragment depth is clamped to
   // the viewport's depth range instead.
   bool depthClampEnable = false;
+  DepthBias depthBias;
 };
 
 struct DepthState {

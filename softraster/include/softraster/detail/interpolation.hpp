@@ -23,6 +23,7 @@ inline float evaluatePlane(const PlaneEquation& p, float px, float py) {
 template <int N>
 struct TriangleInterpolants {
   PlaneEquation depth;
+  float depthOffset = 0.0f;  // depth bias, added to every fragment's depth
   PlaneEquation oneOverW;
   std::array<PlaneEquation, N> varyings;
 };
@@ -30,10 +31,12 @@ struct TriangleInterpolants {
 // v0 is the provoking vertex.
 template <int N>
 inline TriangleInterpolants<N> setupInterpolants(const ShadedVertex<N>& v0, const ShadedVertex<N>& v1,
-                                                 const ShadedVertex<N>& v2, const InterpolationSet<N>& interpolation) {
+                                                 const ShadedVertex<N>& v2, const InterpolationSet<N>& interpolation,
+                                                 const DepthBias& bias, DepthFormat depthFormat) {
   const PlaneSetup setup(v0.window, v1.window, v2.window);
   TriangleInterpolants<N> t;
   t.depth = setup.plane(v0.window.z, v1.window.z, v2.window.z);
+  t.depthOffset = setup.depthBias(v0.window.z, v1.window.z, v2.window.z, bias, depthFormat);
   t.oneOverW = setup.plane(v0.window.w, v1.window.w, v2.window.w);
   for (int i = 0; i < N; ++i) {
     switch (interpolation[static_cast<std::size_t>(i)]) {
@@ -52,11 +55,11 @@ inline TriangleInterpolants<N> setupInterpolants(const ShadedVertex<N>& v0, cons
   return t;
 }
 
-// Depth at the pixel centre, before the depth range clamp. The + 0.0f is lavapipe's
-// polygon-offset add (zero without depth bias); it turns -0 into +0 as there.
+// Depth at the pixel centre, before the depth range clamp, with the depth bias added (lavapipe
+// always adds it; a zero offset still turns -0 into +0).
 template <bool Fused, int N>
 inline float interpolateDepth(const TriangleInterpolants<N>& t, float px, float py) {
-  return evaluatePlane<Fused>(t.depth, px, py) + 0.0f;
+  return evaluatePlane<Fused>(t.depth, px, py) + t.depthOffset;
 }
 
 template <bool Fused, int N>

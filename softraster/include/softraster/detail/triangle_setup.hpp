@@ -6,12 +6,17 @@
 //   - three 64-bit edge functions with the top-left rule (window y points down);
 //   - float plane equations a(px, py) = a0 + dadx*px + dady*py for depth, 1/w and varyings,
 //     from the unsnapped window positions, in lavapipe's operation order, no FMA.
-// Deliberately absent: MSAA (pixel offset 0), depth bias, the bottom-left fill rule.
+//   - the depth bias of lp_do_offset_tri: max(|dz/dx|, |dz/dy|) * slope plus the constant factor
+//     scaled by 2/(2^n - 1) for UNORM depth (a GL factor of 2 lavapipe keeps) or by
+//     2^(exponent(max |z|) - 23) for float depth, then clamped.
+// Deliberately absent: MSAA (pixel offset 0), the bottom-left fill rule.
 #pragma once
 
 #include <softraster/detail/vertex_processing.hpp>
+#include <softraster/framebuffer.hpp>
 #include <softraster/state.hpp>
 
+#include <bit>
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
@@ -134,6 +139,7 @@ class PlaneSetup {
     const float e = dx01 * dy20;
     const float f = dy01 * dx20;
     const float ooa = 1.0f / (e - f);
+    dx01_ = dx01, dy01_ = dy01, dx20_ = dx20, dy20_ = dy20, ooa_ = ooa;
     dx20_ooa_ = dx20 * ooa;
     dy20_ooa_ = dy20 * ooa;
     dx01_ooa_ = dx01 * ooa;
@@ -153,7 +159,34 @@ class PlaneSetup {
     return p;
   }
 
+  // The depth offset lp_do_offset_tri adds to every fragment's depth; z0..z2 are the window
+  // depths of the (reordered) vertices.
+  float depthBias(float z0, float z1, float z2, const DepthBias& bias, DepthFormat format) const {
+    if (!bias.enable || (bias.slopeFactor == 0.0f && bias.constantFactor == 0.0f)) return 0.0f;
+    const float dz01 = z0 - z1, dz20 = z2 - z0;
+    const float dzdx = std::fabs((dz20 * dy01_ - dy20_ * dz01) * ooa_);
+    const float dzdy = std::fabs((dx20_ * dz01 - dz20 * dx01_) * ooa_);
+    const float steepest = !(dzdx <= dzdy) ? dzdx : dzdy;  // unordered greater-than select
+    const float slope = steepest * bias.slopeFactor;
+    float offset;
+    if (const int bits = unormDepthBits(format); bits != 0) {
+      const double minimumResolvable = 1.0 / static_cast<double>((1ull << bits) - 1);
+      offset = static_cast<float>(static_cast<double>(bias.constantFactor) * minimumResolvable * 2) + slope;
+    } else {
+      const auto sseMax = [](float a, float b) { return a > b ? a : b; };
+      const float maxZ = sseMax(std::fabs(z2), sseMax(std::fabs(z0), std::fabs(z1)));
+      const std::int32_t exponent =
+          static_cast<std::int32_t>(std::bit_cast<std::uint32_t>(maxZ) & 0x7f800000u) - (23 << 23);
+      const float unit = std::bit_cast<float>(std::max(exponent, 0));  // 2^(e - 23), or 0
+      offset = unit * bias.constantFactor + slope;
+    }
+    if (bias.clamp > 0) offset = bias.clamp < offset ? bias.clamp : offset;  // SSE min(clamp, offset)
+    if (bias.clamp < 0) offset = bias.clamp > offset ? bias.clamp : offset;  // SSE max(clamp, offset)
+    return offset;
+  }
+
  private:
+  float dx01_, dy01_, dx20_, dy20_, ooa_;
   float dx20_ooa_, dy20_ooa_, dx01_ooa_, dy01_ooa_;
   float x0Centre_, y0Centre_;
 };
