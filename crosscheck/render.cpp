@@ -81,7 +81,7 @@ std::optional<Frame> renderSoftraster(const Scene& scene, std::string* error,
   for (const Draw& draw : scene.draws) {
     const softraster::Status status = withShader(draw.shading, [&](auto shader) {
       using Shader = decltype(shader);
-      const typename Shader::Uniforms uniforms{scene.viewProjection};
+      const typename Shader::Uniforms uniforms{scene.viewProjection, draw.pointSize};
       const std::span<const typename Shader::Vertex> vertices(draw.vertices);
       return draw.indexed ? context.drawIndexed<Shader>(draw.state, uniforms, vertices, draw.indices, framebuffer)
                           : context.draw<Shader>(draw.state, uniforms, vertices, framebuffer);
@@ -119,7 +119,7 @@ std::optional<Frame> renderVulkan(const Scene& scene, vkref::Renderer& renderer,
     call.vertexData = bytesOf(draw.vertices.data(), draw.vertices.size());
     call.indexed = draw.indexed;
     call.indices = draw.indices;
-    const shaders::VertexColor::Uniforms uniforms{scene.viewProjection};
+    const shaders::VertexColor::Uniforms uniforms{scene.viewProjection, draw.pointSize};
     call.pushConstants = bytesOf(&uniforms, 1);
     request.draws.push_back(std::move(call));
   }

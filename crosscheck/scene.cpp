@@ -193,6 +193,11 @@ void readDrawState(const json& d, const std::string& place, softraster::Pipeline
   }
   auto& rs = state.rasterization;
   rs.depthClampEnable = readBool(d, "depth_clamp", place, rs.depthClampEnable);
+  rs.lineWidth = static_cast<float>(readNumber(d, "line_width", place, rs.lineWidth));
+  if (!(rs.lineWidth >= 1.0f)) throw SceneError(placeOf(place, "line_width"), "must be at least 1");
+  rs.lineRasterization = readEnum(d, "line_rasterization", place, rs.lineRasterization,
+                                  {{"rectangular", softraster::LineRasterization::Rectangular},
+                                   {"bresenham", softraster::LineRasterization::Bresenham}});
   if (d.contains("depth_bias")) {
     const std::string bp = placeOf(place, "depth_bias");
     const json& b = d["depth_bias"];
@@ -219,7 +224,8 @@ void readDrawState(const json& d, const std::string& place, softraster::Pipeline
 
 Draw readDraw(const json& d, const std::string& place, const std::filesystem::path& sceneDir) {
   checkKeys(d, place, {"name", "obj", "positions", "colours", "colour", "indices", "shading", "topology", "viewport",
-                       "scissor", "cull", "front_face", "depth_clamp", "depth_bias", "depth_test", "depth_write", "depth_compare"});
+                       "scissor", "cull", "front_face", "depth_clamp", "depth_bias", "line_width", "line_rasterization",
+                       "point_size", "depth_test", "depth_write", "depth_compare"});
   Draw draw;
   draw.name = readString(d, "name", place, place);
   draw.shading = readEnum(d, "shading", place, ShadingModel::VertexColor,
@@ -227,6 +233,8 @@ Draw readDraw(const json& d, const std::string& place, const std::filesystem::pa
                            {"vertex_color_flat", ShadingModel::VertexColorFlat},
                            {"vertex_color_noperspective", ShadingModel::VertexColorNoPerspective}});
   readDrawState(d, place, draw.state);
+  draw.pointSize = static_cast<float>(readNumber(d, "point_size", place, draw.pointSize));
+  if (!(draw.pointSize > 0)) throw SceneError(placeOf(place, "point_size"), "must be positive");
   const softraster::Vec4 colour = d.contains("colour") ? readColour(d["colour"], placeOf(place, "colour"))
                                                        : softraster::Vec4{1, 1, 1, 1};
 

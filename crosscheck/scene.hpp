@@ -26,6 +26,7 @@ struct Draw {
   softraster::PipelineState state;
   std::vector<shaders::VertexColorVertex> vertices;
   bool indexed = true;                  // false: vertices are drawn in order (vkCmdDraw)
+  float pointSize = 1.0f;               // the shader's gl_PointSize (a uniform)
   std::vector<std::uint32_t> indices;
 };
 

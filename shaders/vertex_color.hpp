@@ -22,6 +22,7 @@ struct VertexColorShader {
   using Vertex = VertexColorVertex;
   struct Uniforms {
     softraster::Mat4 modelViewProjection;
+    float pointSize = 1.0f;
   };
   static constexpr int kVaryings = 4;  // vColour
   static constexpr softraster::InterpolationSet<kVaryings> kInterpolation{Qualifier, Qualifier, Qualifier, Qualifier};
@@ -41,6 +42,8 @@ struct VertexColorShader {
     vColour[3] = in.colour.w;
     return clip;
   }
+
+  static float pointSize(const Uniforms& u, const Vertex&) { return u.pointSize; }
 
   static softraster::Vec4 fragment(const Uniforms&, const float* vColour) {
     return {vColour[0], vColour[1], vColour[2], vColour[3]};

@@ -10,6 +10,7 @@ layout(location = 1) in vec4 inColour;
 
 layout(push_constant) uniform Uniforms {
   mat4 modelViewProjection;
+  float pointSize;
 } u;
 
 layout(location = 0) INTERPOLATION out vec4 vColour;
@@ -20,5 +21,6 @@ void main() {
                     + u.modelViewProjection[2] * inPosition.z
                     + u.modelViewProjection[3];
   gl_Position = clip;
+  gl_PointSize = u.pointSize;
   vColour = inColour;
 }

@@ -275,3 +275,46 @@ def bias_scene(filename, fmt, unit, label):
 
 bias_scene("depth_bias_d16.json", "d16_unorm", 1.5259022e-05, "D16_UNORM")
 bias_scene("depth_bias_d32.json", "d32_sfloat", 5.9604645e-08, "D32_SFLOAT")
+
+# ---- lines ----
+def star(cx, cy, r0, r1, n, z0, z1):
+    pts = []
+    for k in range(n):
+        a = 2 * math.pi * (k + 0.13) / n
+        pts += [at(cx + r0 * math.cos(a), cy + r0 * math.sin(a), z0), at(cx + r1 * math.cos(a), cy + r1 * math.sin(a), z1)]
+    return pts
+
+def line_scene(filename, mode, label):
+    draws = [
+        draw("star width 1", star(60, 55, 6, 50, 24, 2.0, 3.0), rainbow(48), topology="line_list",
+             line_rasterization=mode),
+        draw("star width 3", star(190, 55, 8, 50, 12, 3.0, 2.0), rainbow(24, 2), topology="line_list",
+             line_width=3.0, line_rasterization=mode),
+        draw("strip width 2.5", [at(10 + 236 * k / 11, 120 + (25 if k % 2 else -10) + k * 1.37, 2 + 0.2 * k)
+                                 for k in range(12)], rainbow(12, 4), topology="line_strip", line_width=2.5,
+             line_rasterization=mode),
+        draw("clipped", [[0.0, 0.3, -1.0], [0.5, 0.45, 3.0], [-3.0, 0.6, 2.0], [3.0, 0.7, 2.0]], rainbow(4, 1),
+             topology="line_list", line_width=1.5, line_rasterization=mode),
+        draw("axis aligned on pixel centres", [at(20.5, 180.5, 2), at(120.5, 180.5, 2), at(140.5, 100.5, 2),
+                                               at(140.5, 188.5, 2)], rainbow(4, 6), topology="line_list",
+             line_rasterization=mode),
+    ]
+    scene(filename, f"{label} lines: a star of width-1 and width-3 lines in every direction, a wide line strip, "
+          "lines clipped by the near plane and the sides of the view, and axis-aligned lines through pixel "
+          "centres (where the fill rule decides the end pixels).", draws)
+
+line_scene("lines.json", "rectangular", "Rectangular (Vulkan's default, strictLines)")
+line_scene("lines_bresenham.json", "bresenham", "Bresenham (VK_EXT_line_rasterization, diamond-exit)")
+
+# ---- points ----
+pts, sizes = [], []
+draws = []
+for i, size in enumerate([1.0, 1.5, 2.0, 3.25, 8.0, 20.5]):
+    p = [at(14 + 40 * i + 0.37 * j, 20 + 27 * j + 0.21 * i, 2 + 0.3 * j) for j in range(6)]
+    draws.append(draw(f"size {size}", p, rainbow(6, i), topology="point_list", point_size=size))
+draws.append(draw("near the edges", [at(-3, 80, 2), at(258, 120, 2), at(128, -2, 2), at(128, 193.5, 2),
+                                     [0, 0, -1.0], [0, 0, 0.1], [0.2, 0.2, 25.0]], rainbow(7, 3),
+                  topology="point_list", point_size=12.0))
+scene("points.json", "Points of sizes 1 to 20.5 written by the vertex shader (gl_PointSize), at sub-pixel "
+      "positions; large points whose centres lie outside the view (drawn in part: points are not clipped against "
+      "x and y) and points behind the camera or beyond the near and far planes (dropped).", draws)

@@ -12,6 +12,7 @@
 
 #include <vulkan/vulkan.h>
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <cstring>
@@ -110,6 +111,7 @@ struct Renderer::Impl {
   VkPhysicalDeviceMemoryProperties memory{};
   VkPhysicalDeviceLimits limits{};
   VkPhysicalDeviceFeatures features{};  // the core features enabled on `device`
+  bool bresenhamLines = false;          // VK_EXT_line_rasterization with bresenhamLines enabled
   std::array<bool, std::size(kDepthFormats)> depthFormatUsable{};
   std::string name;
   mutable std::mutex messagesMutex;
@@ -267,7 +269,7 @@ auto pipelineKey(const DrawCall& d) {
   const softraster::Viewport& v = s.viewport;
   const softraster::Scissor& sc = s.scissor;
   const softraster::DepthBias& b = s.rasterization.depthBias;
-  return std::tuple(d.program, s.topology, v.x, v.y, v.width, v.height, v.minDepth, v.maxDepth, sc.x, sc.y, sc.width,
+  return std::tuple(s.rasterization.lineWidth, s.rasterization.lineRasterization, d.program, s.topology, v.x, v.y, v.width, v.height, v.minDepth, v.maxDepth, sc.x, sc.y, sc.width,
                     sc.height, s.rasterization.cullMode, s.rasterization.frontFace, s.rasterization.depthClampEnable,
                     b.enable, b.constantFactor, b.clamp, b.slopeFactor, s.depth.testEnable, s.depth.writeEnable,
                     s.depth.compareOp);
@@ -283,7 +285,8 @@ bool isEmpty(const DrawCall& d) { return d.indexed ? d.indices.empty() : vertexC
 
 // What about a draw Vulkan (or this renderer) cannot honour; empty when the draw is fine.
 std::string checkDraw(const DrawCall& d, std::uint32_t width, std::uint32_t height,
-                      const VkPhysicalDeviceLimits& limits, const VkPhysicalDeviceFeatures& features) {
+                      const VkPhysicalDeviceLimits& limits, const VkPhysicalDeviceFeatures& features,
+                      bool bresenhamLines) {
   const ShaderProgram* p = d.program;
   if (!p) return "no shader program";
   constexpr std::uint32_t kSpirvMagic = 0x07230203;
@@ -297,6 +300,11 @@ std::string checkDraw(const DrawCall& d, std::uint32_t width, std::uint32_t heig
   if (s.rasterization.depthClampEnable && !features.depthClamp) return "depth clamp is not supported by the device";
   if (s.rasterization.depthBias.enable && s.rasterization.depthBias.clamp != 0 && !features.depthBiasClamp)
     return "depth bias clamp is not supported by the device";
+  if (s.rasterization.lineWidth != 1.0f && !features.wideLines) return "wide lines are not supported by the device";
+  if (s.rasterization.lineWidth < limits.lineWidthRange[0] || s.rasterization.lineWidth > limits.lineWidthRange[1])
+    return "line width outside the device's range";
+  if (s.rasterization.lineRasterization == softraster::LineRasterization::Bresenham && !bresenhamLines)
+    return "Bresenham lines (VK_EXT_line_rasterization) are not supported by the device";
   if (s.scissor.x < 0 || s.scissor.y < 0) return "scissor offset is negative";
   if (static_cast<std::size_t>(s.rasterization.cullMode) >= std::size(kCullModes)) return "unsupported cull mode";
   if (static_cast<std::size_t>(s.rasterization.frontFace) >= std::size(kFrontFaces)) return "unsupported front face";
@@ -371,7 +379,7 @@ bool createPipeline(VkDevice device, VkPipelineLayout layout, const DrawCall& d,
                                                           .pViewports = &viewport,
                                                           .scissorCount = 1,
                                                           .pScissors = &scissor};
-    const VkPipelineRasterizationStateCreateInfo rasterization{
+    VkPipelineRasterizationStateCreateInfo rasterization{
         .sType = VK_STRUCTURE_TYPE_PIPELINE_RASTERIZATION_STATE_CREATE_INFO,
         .depthClampEnable = d.state.rasterization.depthClampEnable ? VK_TRUE : VK_FALSE,
         .rasterizerDiscardEnable = VK_FALSE,
@@ -382,7 +390,13 @@ bool createPipeline(VkDevice device, VkPipelineLayout layout, const DrawCall& d,
         .depthBiasConstantFactor = d.state.rasterization.depthBias.constantFactor,
         .depthBiasClamp = d.state.rasterization.depthBias.clamp,
         .depthBiasSlopeFactor = d.state.rasterization.depthBias.slopeFactor,
-        .lineWidth = 1.0f};
+        .lineWidth = d.state.rasterization.lineWidth};
+    // Bresenham lines need VK_EXT_line_rasterization; rectangular ones are Vulkan's default.
+    const VkPipelineRasterizationLineStateCreateInfoEXT lineState{
+        .sType = VK_STRUCTURE_TYPE_PIPELINE_RASTERIZATION_LINE_STATE_CREATE_INFO_EXT,
+        .lineRasterizationMode = VK_LINE_RASTERIZATION_MODE_BRESENHAM_EXT};
+    if (d.state.rasterization.lineRasterization == softraster::LineRasterization::Bresenham)
+      rasterization.pNext = &lineState;
     const VkPipelineMultisampleStateCreateInfo multisample{
         .sType = VK_STRUCTURE_TYPE_PIPELINE_MULTISAMPLE_STATE_CREATE_INFO,
         .rasterizationSamples = VK_SAMPLE_COUNT_1_BIT};
@@ -573,6 +587,24 @@ bool Renderer::Impl::createDevice(std::string* error) {
   // them are rejected by checkDraw.
   features.depthClamp = features2.features.depthClamp;
   features.depthBiasClamp = features2.features.depthBiasClamp;
+  features.wideLines = features2.features.wideLines;
+  features.largePoints = features2.features.largePoints;
+
+  // VK_EXT_line_rasterization, for Bresenham lines.
+  std::uint32_t extensionCount = 0;
+  vkEnumerateDeviceExtensionProperties(physicalDevice, nullptr, &extensionCount, nullptr);
+  std::vector<VkExtensionProperties> extensions(extensionCount);
+  vkEnumerateDeviceExtensionProperties(physicalDevice, nullptr, &extensionCount, extensions.data());
+  const bool hasLineRasterization = std::any_of(extensions.begin(), extensions.end(), [](const VkExtensionProperties& e) {
+    return std::strcmp(e.extensionName, VK_EXT_LINE_RASTERIZATION_EXTENSION_NAME) == 0;
+  });
+  VkPhysicalDeviceLineRasterizationFeaturesEXT lineFeatures{
+      .sType = VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_LINE_RASTERIZATION_FEATURES_EXT};
+  if (hasLineRasterization) {
+    VkPhysicalDeviceFeatures2 query{.sType = VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_FEATURES_2, .pNext = &lineFeatures};
+    vkGetPhysicalDeviceFeatures2(physicalDevice, &query);
+    bresenhamLines = lineFeatures.bresenhamLines == VK_TRUE;
+  }
 
   std::uint32_t familyCount = 0;
   vkGetPhysicalDeviceQueueFamilyProperties(physicalDevice, &familyCount, nullptr);
@@ -588,13 +620,20 @@ bool Renderer::Impl::createDevice(std::string* error) {
                                           .queueFamilyIndex = queueFamily,
                                           .queueCount = 1,
                                           .pQueuePriorities = &priority};
+  VkPhysicalDeviceLineRasterizationFeaturesEXT enabledLines{
+      .sType = VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_LINE_RASTERIZATION_FEATURES_EXT,
+      .bresenhamLines = bresenhamLines ? VK_TRUE : VK_FALSE};
   VkPhysicalDeviceVulkan13Features enabled{.sType = VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_VULKAN_1_3_FEATURES,
+                                           .pNext = bresenhamLines ? &enabledLines : nullptr,
                                            .synchronization2 = VK_TRUE,
                                            .dynamicRendering = VK_TRUE};
+  const char* lineExtension = VK_EXT_LINE_RASTERIZATION_EXTENSION_NAME;
   const VkDeviceCreateInfo info{.sType = VK_STRUCTURE_TYPE_DEVICE_CREATE_INFO,
                                 .pNext = &enabled,
                                 .queueCreateInfoCount = 1,
                                 .pQueueCreateInfos = &queueInfo,
+                                .enabledExtensionCount = bresenhamLines ? 1u : 0u,
+                                .ppEnabledExtensionNames = &lineExtension,
                                 .pEnabledFeatures = &features};
   if (!check(vkCreateDevice(physicalDevice, &info, nullptr, &device), "vkCreateDevice", error)) return false;
   vkGetDeviceQueue(device, queueFamily, 0, &queue);
@@ -643,7 +682,7 @@ bool Renderer::render(const FrameRequest& request, FrameImages* out, std::string
   const std::vector<DrawCall>& draws = request.draws;
   for (std::size_t i = 0; i < draws.size(); ++i) {
     if (isEmpty(draws[i])) continue;  // skipped, so not checked either
-    if (std::string problem = checkDraw(draws[i], width, height, im.limits, im.features); !problem.empty())
+    if (std::string problem = checkDraw(draws[i], width, height, im.limits, im.features, im.bresenhamLines); !problem.empty())
       return fail(error, "draw " + std::to_string(i) + ": " + problem);
   }
 

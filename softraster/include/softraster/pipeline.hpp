@@ -1,15 +1,17 @@
-// softraster's entry point: a Context draws triangle lists, strips and fans, indexed or not, with
-// a shader type into a Framebuffer, following lavapipe's rules to the bit (the "exact" method):
+// softraster's entry point: a Context draws points, lines and triangles (lists, strips, fans),
+// indexed or not, with a shader type into a Framebuffer, following lavapipe's rules to the bit
+// (the "exact" method):
 //   vertex processing -> primitive assembly -> clipping -> snapping and setup -> rasterization
 //   -> interpolation -> fragment shading -> depth test and writes.
 // A Context holds no global state and reports errors through Status; it never prints.
-// Deliberately absent from this slice: lines, points, polygon modes, blending, MSAA,
-// alternative rasterization methods.
+// Deliberately absent from this slice: polygon modes, blending, MSAA, alternative rasterization
+// methods.
 #pragma once
 
 #include <softraster/detail/clipping.hpp>
 #include <softraster/detail/fused_multiply_add.hpp>
 #include <softraster/detail/interpolation.hpp>
+#include <softraster/detail/line_point_setup.hpp>
 #include <softraster/detail/output_merger.hpp>
 #include <softraster/detail/primitive_assembly.hpp>
 #include <softraster/detail/rasterizer.hpp>
@@ -70,9 +72,9 @@ class Context {
                         Framebuffer& framebuffer) const;
 
   template <class Shader, bool Fused, DepthFormat Format>
-  static void drawTriangles(const PipelineState& state, const typename Shader::Uniforms& uniforms,
-                            std::span<const typename Shader::Vertex> vertices, std::span<const std::uint32_t> indices,
-                            Framebuffer& framebuffer);
+  static void drawWithFormat(const PipelineState& state, const typename Shader::Uniforms& uniforms,
+                             std::span<const typename Shader::Vertex> vertices, std::span<const std::uint32_t> indices,
+                             Framebuffer& framebuffer);
 
   ContextOptions options_;
 };
@@ -104,39 +106,38 @@ Status Context::drawPrimitives(const PipelineState& state, const typename Shader
                                Framebuffer& framebuffer) const {
   static_assert(Shader::kVaryings >= 0 && Shader::kVaryings <= kMaxVaryings, "too many varyings");
   if (framebuffer.width() == 0 || framebuffer.height() == 0) return Status::error("framebuffer has no pixels");
-  if (!detail::isTriangleTopology(state.topology)) {
-    return Status::error("points and lines are not supported by softraster yet");
-  }
+  if (state.topology > Topology::TriangleFan) return Status::error("unknown topology");
+  if (!(state.rasterization.lineWidth >= 1.0f)) return Status::error("line width must be at least 1");
   const bool fused = options_.fusedMultiplyAdd;
   switch (framebuffer.depthFormat()) {
     case DepthFormat::D16Unorm:
-      fused ? drawTriangles<Shader, true, DepthFormat::D16Unorm>(state, uniforms, vertices, indices, framebuffer)
-            : drawTriangles<Shader, false, DepthFormat::D16Unorm>(state, uniforms, vertices, indices, framebuffer);
+      fused ? drawWithFormat<Shader, true, DepthFormat::D16Unorm>(state, uniforms, vertices, indices, framebuffer)
+            : drawWithFormat<Shader, false, DepthFormat::D16Unorm>(state, uniforms, vertices, indices, framebuffer);
       break;
     case DepthFormat::X8D24UnormPack32:
-      fused ? drawTriangles<Shader, true, DepthFormat::X8D24UnormPack32>(state, uniforms, vertices, indices, framebuffer)
-            : drawTriangles<Shader, false, DepthFormat::X8D24UnormPack32>(state, uniforms, vertices, indices, framebuffer);
+      fused ? drawWithFormat<Shader, true, DepthFormat::X8D24UnormPack32>(state, uniforms, vertices, indices, framebuffer)
+            : drawWithFormat<Shader, false, DepthFormat::X8D24UnormPack32>(state, uniforms, vertices, indices, framebuffer);
       break;
     case DepthFormat::D32Sfloat:
-      fused ? drawTriangles<Shader, true, DepthFormat::D32Sfloat>(state, uniforms, vertices, indices, framebuffer)
-            : drawTriangles<Shader, false, DepthFormat::D32Sfloat>(state, uniforms, vertices, indices, framebuffer);
+      fused ? drawWithFormat<Shader, true, DepthFormat::D32Sfloat>(state, uniforms, vertices, indices, framebuffer)
+            : drawWithFormat<Shader, false, DepthFormat::D32Sfloat>(state, uniforms, vertices, indices, framebuffer);
       break;
   }
   return {};
 }
 
 template <class Shader, bool Fused, DepthFormat Format>
-void Context::drawTriangles(const PipelineState& state, const typename Shader::Uniforms& uniforms,
-                            std::span<const typename Shader::Vertex> vertices, std::span<const std::uint32_t> indices,
-                            Framebuffer& framebuffer) {
+void Context::drawWithFormat(const PipelineState& state, const typename Shader::Uniforms& uniforms,
+                             std::span<const typename Shader::Vertex> vertices, std::span<const std::uint32_t> indices,
+                             Framebuffer& framebuffer) {
   constexpr int N = Shader::kVaryings;
   constexpr InterpolationSet<N> interpolation = interpolationOf<Shader>();
+  using Vertex = detail::ShadedVertex<N>;
   const RasterizationState& rs = state.rasterization;
   const Viewport viewport = resolveViewport(state.viewport, framebuffer);
   const detail::ViewportTransform transform = detail::makeViewportTransform(viewport);
   const detail::PixelRect region = drawRegion(state.scissor, framebuffer);
-  const detail::WindingFilter winding = detail::windingFilter(rs);
-  if (region.empty() || (!winding.drawClockwise && !winding.drawCounterClockwise)) return;
+  if (region.empty()) return;
   const detail::DepthRange depthRange = detail::fragmentDepthRange(viewport, rs.depthClampEnable);
   const DepthState& ds = state.depth;
   const std::uint32_t width = framebuffer.width();
@@ -144,23 +145,10 @@ void Context::drawTriangles(const PipelineState& state, const typename Shader::U
   std::uint32_t* depth = framebuffer.depthStorage().data();
   std::array<float, (N == 0 ? 1 : N)> varyings{};  // one fragment's inputs (GCC 12 rejects this inside the lambda)
 
-  // Setup, rasterization and per-fragment work of one triangle (after clipping and culling).
-  auto rasterize = [&](const detail::ShadedVertex<N>& a, const detail::ShadedVertex<N>& b,
-                       const detail::ShadedVertex<N>& c) {
-    detail::FixedTriangle fixed = detail::snapTriangle(a.window, b.window, c.window);
-    const int area = detail::fixedAreaSign(fixed);
-    if (area == 0 || (area > 0 ? !winding.drawCounterClockwise : !winding.drawClockwise)) return;
-    // From here on the triangle is counter-clockwise: a negative one continues as (a, c, b),
-    // keeping the provoking vertex first.
-    const detail::ShadedVertex<N>& v1 = area > 0 ? b : c;
-    const detail::ShadedVertex<N>& v2 = area > 0 ? c : b;
-    if (area < 0) {
-      std::swap(fixed.x[1], fixed.x[2]);
-      std::swap(fixed.y[1], fixed.y[2]);
-    }
-    const detail::TriangleEdges edges = detail::setupEdges(fixed);
-    const detail::TriangleInterpolants<N> interpolants = detail::setupInterpolants(a, v1, v2, interpolation, rs.depthBias, Format);
-    detail::rasterizeTriangle(edges, region, [&](int px, int py) {
+  // Fragment work of one primitive: depth, depth test, shading, writes, for every covered pixel.
+  auto shadeFragments = [&](const auto& edges, const detail::PixelRect& bounds,
+                            const detail::TriangleInterpolants<N>& interpolants) {
+    detail::rasterizeEdges(edges, bounds, region, [&](int px, int py) {
       const float fx = static_cast<float>(px), fy = static_cast<float>(py);
       const std::size_t pixel = static_cast<std::size_t>(py) * width + static_cast<std::size_t>(px);
       const float z = detail::clampDepth(detail::interpolateDepth<Fused>(interpolants, fx, fy), depthRange);
@@ -172,10 +160,64 @@ void Context::drawTriangles(const PipelineState& state, const typename Shader::U
     });
   };
 
-  std::vector<detail::ShadedVertex<N>> shaded(vertices.size());
+  std::vector<Vertex> shaded(vertices.size());
   for (std::size_t i = 0; i < vertices.size(); ++i) {
     shaded[i] = detail::shadeVertex<Shader, Fused>(uniforms, vertices[i], transform, !rs.depthClampEnable);
   }
+
+  if (state.topology == Topology::PointList) {
+    for (const std::uint32_t index : indices) {
+      const Vertex& v = shaded[index];
+      if (!detail::pointSurvivesClipping(v)) continue;
+      const detail::QuadEdges quad = detail::setupPoint(v.window, v.pointSize);
+      shadeFragments(quad.edges, quad.bounds, detail::setupPointInterpolants(v, interpolation));
+    }
+    return;
+  }
+
+  if (detail::isLineTopology(state.topology)) {
+    auto drawLine = [&](const Vertex& a, const Vertex& b) {
+      const auto line = rs.lineRasterization == LineRasterization::Bresenham
+                            ? detail::setupBresenhamLine(a.window, b.window, rs.lineWidth)
+                            : detail::setupRectangularLine(a.window, b.window, rs.lineWidth);
+      if (!line) return;
+      shadeFragments(line->quad.edges, line->quad.bounds, detail::setupLineInterpolants(a, b, *line, interpolation));
+    };
+    Vertex clippedA, clippedB;
+    for (const detail::LineIndices& l : detail::assembleLines(state.topology, indices)) {
+      const Vertex& a = shaded[l[0]];
+      const Vertex& b = shaded[l[1]];
+      const std::uint32_t outside = a.clipMask | b.clipMask;
+      if (outside == 0) {
+        drawLine(a, b);
+      } else if ((a.clipMask & b.clipMask) == 0 &&
+                 detail::clipLine(a, b, outside, transform, interpolation, clippedA, clippedB)) {
+        drawLine(clippedA, clippedB);
+      }
+    }
+    return;
+  }
+
+  const detail::WindingFilter winding = detail::windingFilter(rs);
+  if (!winding.drawClockwise && !winding.drawCounterClockwise) return;
+  // Setup and fragments of one triangle (after clipping and culling).
+  auto drawTriangle = [&](const Vertex& a, const Vertex& b, const Vertex& c) {
+    detail::FixedTriangle fixed = detail::snapTriangle(a.window, b.window, c.window);
+    const int area = detail::fixedAreaSign(fixed);
+    if (area == 0 || (area > 0 ? !winding.drawCounterClockwise : !winding.drawClockwise)) return;
+    // From here on the triangle is counter-clockwise: a negative one continues as (a, c, b),
+    // keeping the provoking vertex first.
+    const Vertex& v1 = area > 0 ? b : c;
+    const Vertex& v2 = area > 0 ? c : b;
+    if (area < 0) {
+      std::swap(fixed.x[1], fixed.x[2]);
+      std::swap(fixed.y[1], fixed.y[2]);
+    }
+    const detail::TriangleEdges edges = detail::setupEdges(fixed);
+    shadeFragments(edges.edges, edges.bounds,
+                   detail::setupInterpolants(a, v1, v2, interpolation, rs.depthBias, Format));
+  };
+
   const std::vector<detail::TriangleIndices> triangles = detail::assembleTriangles(state.topology, indices);
   const std::size_t batchSize = detail::trianglesPerBatch(state.topology);
   detail::ClippedPolygon<N> polygon;
@@ -183,25 +225,25 @@ void Context::drawTriangles(const PipelineState& state, const typename Shader::U
     const auto batch = std::span(triangles).subspan(start, std::min(batchSize, triangles.size() - start));
     const bool throughDrawPipeline = detail::batchNeedsClipping(batch, shaded);
     for (const detail::TriangleIndices& t : batch) {
-      const auto& v0 = shaded[t[0]];
-      const auto& v1 = shaded[t[1]];
-      const auto& v2 = shaded[t[2]];
+      const Vertex& v0 = shaded[t[0]];
+      const Vertex& v1 = shaded[t[1]];
+      const Vertex& v2 = shaded[t[2]];
       if (!throughDrawPipeline) {
-        rasterize(v0, v1, v2);
+        drawTriangle(v0, v1, v2);
         continue;
       }
       const std::uint32_t outside = v0.clipMask | v1.clipMask | v2.clipMask;
       if (outside == 0) {
-        if (detail::survivesPipelineCull(v0.window, v1.window, v2.window, rs)) rasterize(v0, v1, v2);
+        if (detail::survivesPipelineCull(v0.window, v1.window, v2.window, rs)) drawTriangle(v0, v1, v2);
         continue;
       }
       if ((v0.clipMask & v1.clipMask & v2.clipMask) != 0) continue;  // entirely outside one plane
       if (!detail::clipTriangle(v0, v1, v2, outside, transform, interpolation, polygon)) continue;
       for (int i = 2; i < polygon.count; ++i) {
-        const auto& p0 = polygon.vertices[0];
-        const auto& p1 = polygon.vertices[i - 1];
-        const auto& p2 = polygon.vertices[i];
-        if (detail::survivesPipelineCull(p0.window, p1.window, p2.window, rs)) rasterize(p0, p1, p2);
+        const Vertex& p0 = polygon.vertices[0];
+        const Vertex& p1 = polygon.vertices[i - 1];
+        const Vertex& p2 = polygon.vertices[i];
+        if (detail::survivesPipelineCull(p0.window, p1.window, p2.window, rs)) drawTriangle(p0, p1, p2);
       }
     }
   }

@@ -10,6 +10,7 @@
 //   static Vec4 S::fragment(const Uniforms&, const float* varyingsIn);           RGBA colour
 // and optionally
 //   static constexpr std::array<Interpolation, kVaryings> S::kInterpolation;    default: all perspective
+//   static float S::pointSize(const Uniforms&, const Vertex&);                  gl_PointSize; default 1
 // Deliberately no virtual functions: the pipeline is instantiated per shader, so a varying a
 // shader does not declare costs nothing.
 #pragma once
@@ -45,5 +46,15 @@ struct VertexAttribute {
   std::uint32_t components = 0;
   std::uint32_t offset = 0;
 };
+
+// The shader's gl_PointSize for a vertex, or 1 when it writes none.
+template <class Shader>
+float pointSizeOf(const typename Shader::Uniforms& uniforms, const typename Shader::Vertex& vertex) {
+  if constexpr (requires { Shader::pointSize(uniforms, vertex); }) {
+    return Shader::pointSize(uniforms, vertex);
+  } else {
+    return 1.0f;
+  }
+}
 
 }  // namespace softraster

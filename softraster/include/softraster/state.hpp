@@ -2,8 +2,8 @@
 // The fields mirror Vulkan's pipeline create-info structures one to one, so vkref can build a
 // VkPipeline from the same value softraster draws with. A field here that one renderer cannot
 // honour is an error in that renderer, never a silent default.
-// Deliberately absent until a scene needs it: blending, stencil, MSAA, polygon modes,
-// lines and points (the topologies exist; softraster reports them as unsupported for now).
+// Deliberately absent until a scene needs it: blending, stencil, MSAA, polygon modes, smooth and
+// stippled lines.
 #pragma once
 
 #include <cstdint>
@@ -34,6 +34,9 @@ struct DepthBias {
   float constantFactor = 0, clamp = 0, slopeFactor = 0;
 };
 
+// VK_EXT_line_rasterization modes lavapipe supports without smoothing.
+enum class LineRasterization : std::uint8_t { Rectangular, Bresenham };
+
 struct RasterizationState {
   CullMode cullMode = CullMode::Back;
   FrontFace frontFace = FrontFace::CounterClockwise;
@@ -41,6 +44,8 @@ struct RasterizationState {
   // the viewport's depth range instead.
   bool depthClampEnable = false;
   DepthBias depthBias;
+  float lineWidth = 1.0f;
+  LineRasterization lineRasterization = LineRasterization::Rectangular;
 };
 
 struct DepthState {

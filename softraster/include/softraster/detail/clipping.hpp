@@ -10,6 +10,7 @@
 //   - noperspective varyings use a t recomputed in screen space (from x, or y when x is equal);
 //     flat varyings of the polygon's vertex 0 are the provoking vertex's.
 // With depth clamp the z planes are simply absent from the clip masks.
+// Lines and points follow do_clip_line and clip_point_guard_xy (below).
 // Deliberately absent: user clip planes, clip distances.
 #pragma once
 
@@ -145,6 +146,49 @@ bool clipTriangle(const ShadedVertex<N>& a, const ShadedVertex<N>& b, const Shad
     if (interpolation[static_cast<std::size_t>(i)] == Interpolation::Flat) result.vertices[0].varyings[i] = a.varyings[i];
   }
   return true;
+}
+
+// Clips the line (a, b) as Mesa's do_clip_line: per plane, the fraction to cut from each end;
+// each end moves by its largest fraction, from its own end towards the other; a line losing
+// all of its length is dropped. Flat varyings of both new ends are the provoking vertex's (a).
+template <int N>
+bool clipLine(const ShadedVertex<N>& a, const ShadedVertex<N>& b, std::uint32_t clipMask, const ViewportTransform& vp,
+              const InterpolationSet<N>& interpolation, ShadedVertex<N>& outA, ShadedVertex<N>& outB) {
+  float t0 = 0.0f, t1 = 0.0f;
+  while (clipMask != 0) {
+    const int plane = __builtin_ctz(clipMask);
+    clipMask &= clipMask - 1;
+    const float dp0 = clipDistance(a.clip, plane);
+    const float dp1 = clipDistance(b.clip, plane);
+    if (!std::isfinite(dp0) || !std::isfinite(dp1)) return false;
+    if (dp1 < 0.0f) {
+      const float t = dp1 / (dp1 - dp0);
+      t1 = t1 > t ? t1 : t;
+    }
+    if (dp0 < 0.0f) {
+      const float t = dp0 / (dp0 - dp1);
+      t0 = t0 > t ? t0 : t;
+    }
+    if (t0 + t1 >= 1.0f) return false;
+  }
+  outA = a.clipMask ? interpolateClipVertex(t0, a, b, vp, interpolation) : a;
+  outB = b.clipMask ? interpolateClipVertex(t1, b, a, vp, interpolation) : b;
+  for (int i = 0; i < N; ++i) {
+    if (interpolation[static_cast<std::size_t>(i)] == Interpolation::Flat) {
+      outA.varyings[i] = a.varyings[i];
+      outB.varyings[i] = a.varyings[i];
+    }
+  }
+  return true;
+}
+
+// Points are not clipped against x and y (lavapipe's point_tri_clip guard band): a point is
+// drawn whole unless it is outside a depth plane, or its w <= 0, or its x or y is not finite.
+template <int N>
+bool pointSurvivesClipping(const ShadedVertex<N>& v) {
+  if (v.clipMask == 0) return true;
+  if ((v.clipMask & ~0xfu) != 0) return false;
+  return v.clip.w > 0.0f && std::isfinite(v.clip.x) && std::isfinite(v.clip.y);
 }
 
 }  // namespace softraster::detail

@@ -6,7 +6,8 @@
 //     (lavapipe gives no index bounds): 341 triangles for lists, 1022 for strips and fans.
 //     A batch with any vertex outside the frustum goes through Mesa's draw pipeline, whose cull
 //     stage tests a float determinant before the fixed-point setup does its own.
-// Deliberately only triangles; lines and points come with their own stages.
+// Lines: list (2k, 2k+1), strip (k, k+1); points: one per index. They have no cull stage, so
+// their batches do not change the result.
 #pragma once
 
 #include <softraster/detail/vertex_processing.hpp>
@@ -24,6 +25,20 @@ using TriangleIndices = std::array<std::uint32_t, 3>;
 
 inline bool isTriangleTopology(Topology t) {
   return t == Topology::TriangleList || t == Topology::TriangleStrip || t == Topology::TriangleFan;
+}
+
+inline bool isLineTopology(Topology t) { return t == Topology::LineList || t == Topology::LineStrip; }
+
+using LineIndices = std::array<std::uint32_t, 2>;
+
+inline std::vector<LineIndices> assembleLines(Topology topology, std::span<const std::uint32_t> indices) {
+  std::vector<LineIndices> lines;
+  if (topology == Topology::LineList) {
+    for (std::size_t k = 0; k + 1 < indices.size(); k += 2) lines.push_back({indices[k], indices[k + 1]});
+  } else if (topology == Topology::LineStrip) {
+    for (std::size_t k = 0; k + 1 < indices.size(); ++k) lines.push_back({indices[k], indices[k + 1]});
+  }
+  return lines;
 }
 
 inline std::size_t trianglesPerBatch(Topology t) { return t == Topology::TriangleList ? 341 : 1022; }

@@ -6,6 +6,7 @@
 
 #include <softraster/detail/fused_multiply_add.hpp>
 #include <softraster/math.hpp>
+#include <softraster/shader.hpp>
 #include <softraster/state.hpp>
 
 #include <array>
@@ -19,6 +20,7 @@ struct ShadedVertex {
   Vec4 clip;
   Vec4 window;
   std::uint32_t clipMask = 0;
+  float pointSize = 1.0f;  // gl_PointSize, used by points only
   std::array<float, NumVaryings> varyings{};
 };
 
@@ -78,6 +80,7 @@ inline ShadedVertex<Shader::kVaryings> shadeVertex(const typename Shader::Unifor
   out.clip = Shader::vertex(uniforms, vertex, out.varyings.data());
   out.clipMask = computeClipMask(out.clip, clipDepth);
   out.window = windowPosition<Fused>(out.clip, vp);
+  out.pointSize = pointSizeOf<Shader>(uniforms, vertex);
   return out;
 }
 

@@ -1,0 +1,246 @@
+// Line and point setup, as lavapipe's lp_setup_line.c and lp_setup_point.c do it (plain C, no
+// FMA). Both turn the primitive into a quad of edge functions that the rasterizer walks like a
+// triangle, plus plane equations for depth, 1/w and the varyings.
+//   - Snapping here is Mesa's util_iround(256 * v) on x86-64: round half away from zero through
+//     a float add of 0.5, not the round-half-even of triangles.
+//   - Rectangular lines: the snapped endpoints offset by +/-(iround(256 * -dy * s),
+//     iround(256 * dx * s)), s = (width / 2) / sqrt(dx^2 + dy^2).
+//   - Bresenham lines: GL's diamond-exit rule with a major-axis quad of iround(width) pixels.
+//   - Points: a square of max(1, iround(256 * size)/256) pixels; attributes constant.
+// Deliberately absent: smooth and stippled lines, point sprites.
+#pragma once
+
+#include <softraster/detail/interpolation.hpp>
+#include <softraster/detail/rasterizer.hpp>
+#include <softraster/detail/triangle_setup.hpp>
+#include <softraster/shader.hpp>
+#include <softraster/state.hpp>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstdint>
+#include <optional>
+
+namespace softraster::detail {
+
+// Mesa's util_iround on x86-64; out of range (undefined in C) gives cvttss2si's INT32_MIN.
+inline std::int32_t iroundHalfAway(float f) {
+  const float g = f >= 0.0f ? f + 0.5f : f - 0.5f;
+  if (!(g > -2147483648.0f && g < 2147483648.0f)) return INT32_MIN;
+  return static_cast<std::int32_t>(g);
+}
+
+inline std::int32_t snapLineCoordinate(float v) { return iroundHalfAway(kSubpixelScale * v); }
+
+// A convex quad in 1/256 px, counter-clockwise, as four edge functions.
+struct QuadEdges {
+  EdgeFunction edges[4];
+  PixelRect bounds;
+};
+
+inline QuadEdges quadEdges(const std::array<std::int32_t, 4>& x, const std::array<std::int32_t, 4>& y) {
+  QuadEdges q;
+  for (int i = 0; i < 4; ++i) {
+    const int j = (i + 1) % 4;
+    const std::int64_t dcdx = std::int64_t{y[i]} - y[j];
+    const std::int64_t dcdy = std::int64_t{x[i]} - x[j];
+    std::int64_t c = dcdx * x[i] - dcdy * y[i];
+    if (dcdx < 0 || (dcdx == 0 && dcdy > 0)) c += 1;  // same fill rule as triangles
+    q.edges[i] = {c, dcdx << kSubpixelBits, dcdy << kSubpixelBits};
+  }
+  const auto [minX, maxX] = std::minmax({x[0], x[1], x[2], x[3]});
+  const auto [minY, maxY] = std::minmax({y[0], y[1], y[2], y[3]});
+  q.bounds = {(minX + 255) >> kSubpixelBits, (minY + 255) >> kSubpixelBits, ((maxX + 255) >> kSubpixelBits) - 1,
+              ((maxY + 255) >> kSubpixelBits) - 1};
+  return q;
+}
+
+// A line's quad and the (possibly adjusted) deltas its attribute planes use.
+struct LineSetup {
+  QuadEdges quad;
+  float dx, dy, oneOverArea;
+};
+
+inline std::optional<LineSetup> setupRectangularLine(Vec4 v1, Vec4 v2, float width) {
+  const float dx = v1.x - v2.x, dy = v1.y - v2.y;
+  const float area = dx * dx + dy * dy;
+  if (area == 0) return std::nullopt;
+  const float scale = (width * 0.5f) / std::sqrt(area);
+  const std::int32_t tx = snapLineCoordinate(-dy * scale);
+  const std::int32_t ty = snapLineCoordinate(dx * scale);
+  const std::int32_t x1 = snapLineCoordinate(v1.x - kPixelCentreOffset), y1 = snapLineCoordinate(v1.y - kPixelCentreOffset);
+  const std::int32_t x2 = snapLineCoordinate(v2.x - kPixelCentreOffset), y2 = snapLineCoordinate(v2.y - kPixelCentreOffset);
+  return LineSetup{quadEdges({x1 - tx, x2 - tx, x2 + tx, x1 + tx}, {y1 - ty, y2 - ty, y2 + ty, y1 + ty}), dx, dy,
+                   1.0f / area};
+}
+
+// GL's diamond-exit line (VK_EXT_line_rasterization BRESENHAM), following lp_setup_line.c.
+inline std::optional<LineSetup> setupBresenhamLine(Vec4 v1, Vec4 v2, float lineWidth) {
+  const auto positive = [](float x) { return x >= 0; };  // Mesa's sign()
+  const auto fracf = [](float f) { return f - std::floor(f); };
+  float dx = v1.x - v2.x, dy = v1.y - v2.y;
+  const float area = dx * dx + dy * dy;
+  if (area == 0) return std::nullopt;
+  LineSetup line{{}, dx, dy, 1.0f / area};
+  const std::int32_t fixedWidth = iroundHalfAway(std::max(1.0f, lineWidth)) * 256;
+  float xOffset = 0, yOffset = 0, xOffsetEnd = 0, yOffsetEnd = 0;
+  float x1diff = v1.x - std::floor(v1.x) - 0.5f, y1diff = v1.y - std::floor(v1.y) - 0.5f;
+  float x2diff = v2.x - std::floor(v2.x) - 0.5f, y2diff = v2.y - std::floor(v2.y) - 0.5f;
+  std::array<std::int32_t, 4> x, y;
+
+  if (std::fabs(dx) >= std::fabs(dy)) {  // x-major
+    const float dydx = dy / dx;
+    if (y2diff == -0.5f && dy < 0) y2diff = 0.5f;
+    bool drawStart, drawEnd;
+    if (std::fabs(x1diff) + std::fabs(y1diff) < 0.5f) {
+      drawStart = true;
+    } else if (positive(x1diff) == positive(-dx)) {
+      drawStart = false;
+    } else if (positive(-y1diff) != positive(dy)) {
+      drawStart = true;
+    } else {
+      const float yIntersect = fracf(v1.y) + x1diff * dydx;
+      drawStart = yIntersect < 1.0f && yIntersect > 0.0f;
+    }
+    if (std::fabs(x2diff) + std::fabs(y2diff) < 0.5f) {
+      drawEnd = false;
+    } else if (positive(x2diff) != positive(-dx)) {
+      drawEnd = false;
+    } else if (positive(-y2diff) == positive(dy)) {
+      drawEnd = true;
+    } else {
+      const float yIntersect = fracf(v2.y) + x2diff * dydx;
+      drawEnd = yIntersect < 1.0f && yIntersect > 0.0f;
+    }
+    const bool willDrawStart = positive(-x1diff) != positive(dx);
+    const bool willDrawEnd = positive(x2diff) == positive(-dx) || x2diff == 0;
+    line.dx *= 1 + dydx * dydx;  // the attribute planes use the wide-line formula
+    line.dy = 0;
+    if (dx < 0) {
+      std::swap(v1, v2);
+      dx = -dx;
+      dy = -dy;
+      if (willDrawStart != drawStart) xOffsetEnd = -x1diff - 0.5f, yOffsetEnd = xOffsetEnd * dydx;
+      if (willDrawEnd != drawEnd) xOffset = -x2diff - 0.5f, yOffset = xOffset * dydx;
+    } else {
+      if (willDrawStart != drawStart) xOffset = -x1diff + 0.5f, yOffset = xOffset * dydx;
+      if (willDrawEnd != drawEnd) xOffsetEnd = -x2diff + 0.5f, yOffsetEnd = xOffsetEnd * dydx;
+    }
+    const std::int32_t ax = snapLineCoordinate(v1.x + xOffset - kPixelCentreOffset);
+    const std::int32_t bx = snapLineCoordinate(v2.x + xOffsetEnd - kPixelCentreOffset);
+    const std::int32_t ay = snapLineCoordinate(v1.y + yOffset - kPixelCentreOffset);
+    const std::int32_t by = snapLineCoordinate(v2.y + yOffsetEnd - kPixelCentreOffset);
+    x = {ax, bx, bx, ax};
+    y = {ay - fixedWidth / 2, by - fixedWidth / 2, by + fixedWidth / 2, ay + fixedWidth / 2};
+  } else {  // y-major
+    const float dxdy = dx / dy;
+    if (x2diff == -0.5f && dx < 0) x2diff = 0.5f;
+    bool drawStart, drawEnd;
+    if (std::fabs(x1diff) + std::fabs(y1diff) < 0.5f) {
+      drawStart = true;
+    } else if (positive(-y1diff) == positive(dy)) {
+      drawStart = false;
+    } else if (positive(x1diff) != positive(-dx)) {
+      drawStart = true;
+    } else {
+      const float xIntersect = fracf(v1.x) + y1diff * dxdy;
+      drawStart = xIntersect < 1.0f && xIntersect > 0.0f;
+    }
+    if (std::fabs(x2diff) + std::fabs(y2diff) < 0.5f) {
+      drawEnd = false;
+    } else if (positive(-y2diff) != positive(dy)) {
+      drawEnd = false;
+    } else if (positive(x2diff) == positive(-dx)) {
+      drawEnd = true;
+    } else {
+      const float xIntersect = fracf(v2.x) + y2diff * dxdy;
+      drawEnd = xIntersect < 1.0f && xIntersect >= 0.0f;
+    }
+    const bool willDrawStart = positive(y1diff) == positive(dy);
+    const bool willDrawEnd = positive(-y2diff) == positive(dy) || y2diff == 0;
+    line.dx = 0;
+    line.dy *= 1 + dxdy * dxdy;
+    if (dy > 0) {
+      std::swap(v1, v2);
+      dx = -dx;
+      dy = -dy;
+      if (willDrawStart != drawStart) yOffsetEnd = -y1diff + 0.5f, xOffsetEnd = yOffsetEnd * dxdy;
+      if (willDrawEnd != drawEnd) yOffset = -y2diff + 0.5f, xOffset = yOffset * dxdy;
+    } else {
+      if (willDrawStart != drawStart) yOffset = -y1diff - 0.5f, xOffset = yOffset * dxdy;
+      if (willDrawEnd != drawEnd) yOffsetEnd = -y2diff - 0.5f, xOffsetEnd = yOffsetEnd * dxdy;
+    }
+    const std::int32_t ax = snapLineCoordinate(v1.x + xOffset - kPixelCentreOffset);
+    const std::int32_t bx = snapLineCoordinate(v2.x + xOffsetEnd - kPixelCentreOffset);
+    const std::int32_t ay = snapLineCoordinate(v1.y + yOffset - kPixelCentreOffset);
+    const std::int32_t by = snapLineCoordinate(v2.y + yOffsetEnd - kPixelCentreOffset);
+    x = {ax - fixedWidth / 2, bx - fixedWidth / 2, bx + fixedWidth / 2, ax + fixedWidth / 2};
+    y = {ay, by, by, ay};
+  }
+  line.quad = quadEdges(x, y);
+  return line;
+}
+
+// Attribute planes of a line from its first vertex v1 (lp_setup_line.c linear_coef):
+// dadx = (da * dx) / area, a0 = a1 - (dadx * (x1 - 0.5) + dady * (y1 - 0.5)).
+template <int N>
+inline TriangleInterpolants<N> setupLineInterpolants(const ShadedVertex<N>& v1, const ShadedVertex<N>& v2,
+                                                     const LineSetup& line, const InterpolationSet<N>& interpolation) {
+  const float x1 = v1.window.x - kPixelCentreOffset, y1 = v1.window.y - kPixelCentreOffset;
+  const auto linear = [&](float a1, float a2) {
+    const float da21 = a1 - a2;
+    PlaneEquation p;
+    p.dadx = da21 * line.dx * line.oneOverArea;
+    p.dady = da21 * line.dy * line.oneOverArea;
+    p.a0 = a1 - (p.dadx * x1 + p.dady * y1);
+    return p;
+  };
+  TriangleInterpolants<N> t;
+  t.depth = linear(v1.window.z, v2.window.z);
+  t.oneOverW = linear(v1.window.w, v2.window.w);
+  for (int i = 0; i < N; ++i) {
+    switch (interpolation[static_cast<std::size_t>(i)]) {
+      case Interpolation::Perspective:
+        t.varyings[i] = linear(v1.varyings[i] * v1.window.w, v2.varyings[i] * v2.window.w);
+        break;
+      case Interpolation::NoPerspective: t.varyings[i] = linear(v1.varyings[i], v2.varyings[i]); break;
+      case Interpolation::Flat: t.varyings[i] = {v1.varyings[i], 0.0f, 0.0f}; break;
+    }
+  }
+  return t;
+}
+
+inline constexpr float kMaxPointSize = 255.0f;  // LP_MAX_POINT_WIDTH
+
+// A point's square: covered iff x0 <= 256*px < x0 + width (likewise y), width >= 1 px.
+inline QuadEdges setupPoint(Vec4 window, float size) {
+  if (size > kMaxPointSize) size = kMaxPointSize;
+  const std::int32_t width = std::max<std::int32_t>(256, snapLineCoordinate(size));
+  const std::int32_t x0 = snapLineCoordinate(window.x - kPixelCentreOffset) - width / 2;
+  const std::int32_t y0 = snapLineCoordinate(window.y - kPixelCentreOffset) - width / 2;
+  QuadEdges q;
+  q.edges[0] = {-std::int64_t{x0} + 1, -256, 0};             // left, inclusive
+  q.edges[1] = {std::int64_t{x0} + width, 256, 0};           // right, exclusive
+  q.edges[2] = {-std::int64_t{y0} + 1, 0, 256};              // top, inclusive
+  q.edges[3] = {std::int64_t{y0} + width, 0, -256};          // bottom, exclusive
+  q.bounds = {x0 >> kSubpixelBits, y0 >> kSubpixelBits, ((x0 + width + 255) >> kSubpixelBits) - 1,
+              ((y0 + width + 255) >> kSubpixelBits) - 1};
+  return q;
+}
+
+// A point's attributes are constant: perspective ones pre-multiplied by 1/w (and divided by the
+// constant interpolated 1/w per fragment), the others as they are.
+template <int N>
+inline TriangleInterpolants<N> setupPointInterpolants(const ShadedVertex<N>& v, const InterpolationSet<N>& interpolation) {
+  TriangleInterpolants<N> t;
+  t.depth = {v.window.z, 0.0f, 0.0f};
+  t.oneOverW = {v.window.w, 0.0f, 0.0f};
+  for (int i = 0; i < N; ++i) {
+    const bool perspective = interpolation[static_cast<std::size_t>(i)] == Interpolation::Perspective;
+    t.varyings[i] = {perspective ? v.varyings[i] * v.window.w : v.varyings[i], 0.0f, 0.0f};
+  }
+  return t;
+}
+
+}  // namespace softraster::detail
