@@ -193,6 +193,9 @@ void readDrawState(const json& d, const std::string& place, softraster::Pipeline
   }
   auto& rs = state.rasterization;
   rs.depthClampEnable = readBool(d, "depth_clamp", place, rs.depthClampEnable);
+  rs.polygonMode = readEnum(d, "polygon_mode", place, rs.polygonMode,
+                            {{"fill", softraster::PolygonMode::Fill}, {"line", softraster::PolygonMode::Line},
+                             {"point", softraster::PolygonMode::Point}});
   rs.lineWidth = static_cast<float>(readNumber(d, "line_width", place, rs.lineWidth));
   if (!(rs.lineWidth >= 1.0f)) throw SceneError(placeOf(place, "line_width"), "must be at least 1");
   rs.lineRasterization = readEnum(d, "line_rasterization", place, rs.lineRasterization,
@@ -225,7 +228,7 @@ void readDrawState(const json& d, const std::string& place, softraster::Pipeline
 Draw readDraw(const json& d, const std::string& place, const std::filesystem::path& sceneDir) {
   checkKeys(d, place, {"name", "obj", "positions", "colours", "colour", "indices", "shading", "topology", "viewport",
                        "scissor", "cull", "front_face", "depth_clamp", "depth_bias", "line_width", "line_rasterization",
-                       "point_size", "depth_test", "depth_write", "depth_compare"});
+                       "point_size", "polygon_mode", "depth_test", "depth_write", "depth_compare"});
   Draw draw;
   draw.name = readString(d, "name", place, place);
   draw.shading = readEnum(d, "shading", place, ShadingModel::VertexColor,
@@ -242,7 +245,7 @@ Draw readDraw(const json& d, const std::string& place, const std::filesystem::pa
     if (d.contains("positions") || d.contains("indices") || d.contains("colours")) {
       throw SceneError(place, "a draw has either \"obj\" or inline \"positions\"/\"indices\", not both");
     }
-    if (draw.state.topology != softraster::Topology::TriangleList) {
+    if (draw.state.topology != softraster::Topology::TriangleList) {  // an OBJ mesh has faces
       throw SceneError(placeOf(place, "topology"), "an OBJ mesh is a triangle list");
     }
     const std::string file = readString(d, "obj", place, "");

@@ -318,3 +318,48 @@ draws.append(draw("near the edges", [at(-3, 80, 2), at(258, 120, 2), at(128, -2,
 scene("points.json", "Points of sizes 1 to 20.5 written by the vertex shader (gl_PointSize), at sub-pixel "
       "positions; large points whose centres lie outside the view (drawn in part: points are not clipped against "
       "x and y) and points behind the camera or beyond the near and far planes (dropped).", draws)
+
+# ---- polygon modes: wireframe and vertex dots of a mesh, clipped by the camera inside it ----
+room_camera = {"type": "pinhole", "position": [0, -0.45, -0.98], "pitch": -20, "focal_length": 120, "near": 0.05,
+               "far": 10}
+room_fb = {"width": 320, "height": 240, "clear_colour": [0, 0, 0, 1]}
+scene("room_wireframe.json", "Polygon mode LINE: the room with two boxes as a wireframe (2-pixel lines), camera "
+      "inside the room so walls are clipped; edges created along the frustum planes must not be drawn, edges of the "
+      "original triangles must be drawn once per triangle, back faces culled by the draw pipeline's float "
+      "determinant.", [{"name": "cornell_box", "obj": "meshes/cornell_box.obj", "cull": "back",
+                        "polygon_mode": "line", "line_width": 2.0}], framebuffer=room_fb, camera=room_camera)
+scene("room_points.json", "Polygon mode POINT: the vertices of the room with two boxes as 5-pixel dots, "
+      "including the vertices clipping creates where an edge comes back into the view (but not where one leaves "
+      "it, as Mesa's edge flags decide).",
+      [{"name": "cornell_box", "obj": "meshes/cornell_box.obj", "cull": "none", "polygon_mode": "point",
+        "point_size": 5.0}], framebuffer=room_fb, camera=room_camera)
+scene("polygon_mode_strips.json", "Polygon mode LINE on triangle strips and fans (every internal edge drawn by "
+      "both of its triangles) and POINT on a list, with a flat varying: all lines and points of a triangle take "
+      "its provoking vertex's colour.",
+      [draw("strip lines", strip(8, 20, 30, 60, 12, 1.5, 3.0), rainbow(12), topology="triangle_strip",
+            polygon_mode="line", cull="none", shading="vertex_color_flat"),
+       draw("fan lines", fan(190, 130, 50, 9, 2.2), rainbow(10, 2), topology="triangle_fan", polygon_mode="line",
+            cull="none", line_width=1.5),
+       draw("list points", ccw(20, 110, 60, 60, 2) + cw(100, 110, 50, 70, 3), rainbow(6, 4), polygon_mode="point",
+            cull="none", point_size=4.0)])
+
+# ---- how lavapipe clips in polygon modes (measured, see the description) ----
+def quadrant(i):
+    return {"x": 64 * (i % 2), "y": 64 * (i // 2), "width": 64, "height": 64}
+
+q = lambda x, y, z=0.5: [x, y, z]
+scene("polygon_mode_clipping.json", "Clipping in polygon modes, one draw per quadrant (clip_space camera): point "
+      "mode with a vertex at 1.5w (lavapipe keeps it: its 40-pixel point shows at the quadrant's edge) and one "
+      "at 2.5w (moved to the guard band at 2w, its colour blended); point mode with a vertex behind the near plane "
+      "(the point where the edge comes back in is drawn); line mode with 6-pixel lines through the quadrant's "
+      "edge (clipped at w: the order of the lines at the shared vertex shows it). Every primitive is scissored to "
+      "its viewport.",
+      [draw("point mode, 1.5w", [q(-0.5, -0.5), q(1.5, 0.0, 0.2), q(-0.5, 0.5)], rainbow(3), cull="none",
+            polygon_mode="point", point_size=40.0, viewport=quadrant(0)),
+       draw("point mode, 2.5w", [q(-0.5, -0.5), q(2.5, 0.0, 0.2), q(-0.5, 0.5)], rainbow(3, 2), cull="none",
+            polygon_mode="point", point_size=60.0, viewport=quadrant(1)),
+       draw("point mode, near plane", [q(-0.5, -0.5), q(0.5, 0.0, -0.5), q(-0.5, 0.5)], rainbow(3, 4), cull="none",
+            polygon_mode="point", point_size=6.0, viewport=quadrant(2)),
+       draw("line mode, thick", [q(-0.5, -0.5), q(1.5, 0.2), q(-0.5, 0.5)], rainbow(3, 6), cull="none",
+            polygon_mode="line", line_width=6.0, viewport=quadrant(3))],
+      framebuffer={"width": 128, "height": 128, "clear_colour": [0, 0, 0, 1]}, camera={"type": "clip_space"})

@@ -269,7 +269,7 @@ auto pipelineKey(const DrawCall& d) {
   const softraster::Viewport& v = s.viewport;
   const softraster::Scissor& sc = s.scissor;
   const softraster::DepthBias& b = s.rasterization.depthBias;
-  return std::tuple(s.rasterization.lineWidth, s.rasterization.lineRasterization, d.program, s.topology, v.x, v.y, v.width, v.height, v.minDepth, v.maxDepth, sc.x, sc.y, sc.width,
+  return std::tuple(s.rasterization.polygonMode, s.rasterization.lineWidth, s.rasterization.lineRasterization, d.program, s.topology, v.x, v.y, v.width, v.height, v.minDepth, v.maxDepth, sc.x, sc.y, sc.width,
                     sc.height, s.rasterization.cullMode, s.rasterization.frontFace, s.rasterization.depthClampEnable,
                     b.enable, b.constantFactor, b.clamp, b.slopeFactor, s.depth.testEnable, s.depth.writeEnable,
                     s.depth.compareOp);
@@ -301,6 +301,9 @@ std::string checkDraw(const DrawCall& d, std::uint32_t width, std::uint32_t heig
   if (s.rasterization.depthBias.enable && s.rasterization.depthBias.clamp != 0 && !features.depthBiasClamp)
     return "depth bias clamp is not supported by the device";
   if (s.rasterization.lineWidth != 1.0f && !features.wideLines) return "wide lines are not supported by the device";
+  if (s.rasterization.polygonMode > softraster::PolygonMode::Point) return "unsupported polygon mode";
+  if (s.rasterization.polygonMode != softraster::PolygonMode::Fill && !features.fillModeNonSolid)
+    return "polygon modes line and point are not supported by the device";
   if (s.rasterization.lineWidth < limits.lineWidthRange[0] || s.rasterization.lineWidth > limits.lineWidthRange[1])
     return "line width outside the device's range";
   if (s.rasterization.lineRasterization == softraster::LineRasterization::Bresenham && !bresenhamLines)
@@ -383,7 +386,7 @@ bool createPipeline(VkDevice device, VkPipelineLayout layout, const DrawCall& d,
         .sType = VK_STRUCTURE_TYPE_PIPELINE_RASTERIZATION_STATE_CREATE_INFO,
         .depthClampEnable = d.state.rasterization.depthClampEnable ? VK_TRUE : VK_FALSE,
         .rasterizerDiscardEnable = VK_FALSE,
-        .polygonMode = VK_POLYGON_MODE_FILL,
+        .polygonMode = static_cast<VkPolygonMode>(d.state.rasterization.polygonMode),  // same order as Vulkan's
         .cullMode = kCullModes[static_cast<std::size_t>(d.state.rasterization.cullMode)],
         .frontFace = kFrontFaces[static_cast<std::size_t>(d.state.rasterization.frontFace)],
         .depthBiasEnable = d.state.rasterization.depthBias.enable ? VK_TRUE : VK_FALSE,
@@ -588,6 +591,7 @@ bool Renderer::Impl::createDevice(std::string* error) {
   features.depthClamp = features2.features.depthClamp;
   features.depthBiasClamp = features2.features.depthBiasClamp;
   features.wideLines = features2.features.wideLines;
+  features.fillModeNonSolid = features2.features.fillModeNonSolid;
   features.largePoints = features2.features.largePoints;
 
   // VK_EXT_line_rasterization, for Bresenham lines.

@@ -4,8 +4,11 @@
 //   vertex processing -> primitive assembly -> clipping -> snapping and setup -> rasterization
 //   -> interpolation -> fragment shading -> depth test and writes.
 // A Context holds no global state and reports errors through Status; it never prints.
-// Deliberately absent from this slice: polygon modes, blending, MSAA, alternative rasterization
-// methods.
+// Polygon modes line and point go through the draw-pipeline path for every triangle (clip,
+// float cull, then Mesa's "unfilled" stage: each original edge as a line, each original vertex as
+// a point), as lavapipe does; in point mode x and y are clipped at 2w (measured).
+// Deliberately absent from this slice: depth bias in polygon modes, blending, MSAA, alternative
+// rasterization methods.
 #pragma once
 
 #include <softraster/detail/clipping.hpp>
@@ -23,6 +26,7 @@
 #include <softraster/status.hpp>
 
 #include <algorithm>
+#include <cmath>
 #include <cstdint>
 #include <span>
 #include <string>
@@ -90,14 +94,18 @@ inline Viewport resolveViewport(const Viewport& vp, const Framebuffer& fb) {
   return full;
 }
 
-// Pixels a draw may touch: the framebuffer and the scissor (lavapipe's draw region; the
-// viewport rectangle itself does not limit it, clipping does).
-inline detail::PixelRect drawRegion(const Scissor& scissor, const Framebuffer& fb) {
-  const detail::PixelRect framebufferRect{0, 0, static_cast<int>(fb.width()) - 1, static_cast<int>(fb.height()) - 1};
-  if (scissor.width == 0 || scissor.height == 0) return framebufferRect;
-  const detail::PixelRect scissorRect{scissor.x, scissor.y, scissor.x + static_cast<int>(scissor.width) - 1,
-                                      scissor.y + static_cast<int>(scissor.height) - 1};
-  return detail::intersect(scissorRect, framebufferRect);
+// Pixels a draw may touch (lavapipe's draw region): framebuffer ∩ scissor ∩ the viewport
+// rectangle [(int)(x + 0.499), (int)(x + width - 0.501)] (lavapipe sets point_tri_clip, which
+// scissors every primitive to the viewport).
+inline detail::PixelRect drawRegion(const Scissor& scissor, const Viewport& vp, const Framebuffer& fb) {
+  detail::PixelRect region{0, 0, static_cast<int>(fb.width()) - 1, static_cast<int>(fb.height()) - 1};
+  if (scissor.width != 0 && scissor.height != 0) {
+    region = detail::intersect(region, {scissor.x, scissor.y, scissor.x + static_cast<int>(scissor.width) - 1,
+                                        scissor.y + static_cast<int>(scissor.height) - 1});
+  }
+  const float top = std::fmin(vp.y, vp.y + vp.height), bottom = std::fmax(vp.y, vp.y + vp.height);
+  return detail::intersect(region, {static_cast<int>(vp.x + 0.499f), static_cast<int>(top + 0.499f),
+                                    static_cast<int>(vp.x + vp.width - 0.501f), static_cast<int>(bottom - 0.501f)});
 }
 
 template <class Shader>
@@ -108,6 +116,9 @@ Status Context::drawPrimitives(const PipelineState& state, const typename Shader
   if (framebuffer.width() == 0 || framebuffer.height() == 0) return Status::error("framebuffer has no pixels");
   if (state.topology > Topology::TriangleFan) return Status::error("unknown topology");
   if (!(state.rasterization.lineWidth >= 1.0f)) return Status::error("line width must be at least 1");
+  if (state.rasterization.polygonMode != PolygonMode::Fill && state.rasterization.depthBias.enable) {
+    return Status::error("depth bias with polygon mode line or point is not supported by softraster yet");
+  }
   const bool fused = options_.fusedMultiplyAdd;
   switch (framebuffer.depthFormat()) {
     case DepthFormat::D16Unorm:
@@ -136,7 +147,7 @@ void Context::drawWithFormat(const PipelineState& state, const typename Shader::
   const RasterizationState& rs = state.rasterization;
   const Viewport viewport = resolveViewport(state.viewport, framebuffer);
   const detail::ViewportTransform transform = detail::makeViewportTransform(viewport);
-  const detail::PixelRect region = drawRegion(state.scissor, framebuffer);
+  const detail::PixelRect region = drawRegion(state.scissor, viewport, framebuffer);
   if (region.empty()) return;
   const detail::DepthRange depthRange = detail::fragmentDepthRange(viewport, rs.depthClampEnable);
   const DepthState& ds = state.depth;
@@ -165,24 +176,27 @@ void Context::drawWithFormat(const PipelineState& state, const typename Shader::
     shaded[i] = detail::shadeVertex<Shader, Fused>(uniforms, vertices[i], transform, !rs.depthClampEnable);
   }
 
+  auto drawLine = [&](const Vertex& a, const Vertex& b) {
+    const auto line = rs.lineRasterization == LineRasterization::Bresenham
+                          ? detail::setupBresenhamLine(a.window, b.window, rs.lineWidth)
+                          : detail::setupRectangularLine(a.window, b.window, rs.lineWidth);
+    if (!line) return;
+    shadeFragments(line->quad.edges, line->quad.bounds, detail::setupLineInterpolants(a, b, *line, interpolation));
+  };
+  auto drawPoint = [&](const Vertex& v) {
+    const detail::QuadEdges quad = detail::setupPoint(v.window, v.pointSize);
+    shadeFragments(quad.edges, quad.bounds, detail::setupPointInterpolants(v, interpolation));
+  };
+
   if (state.topology == Topology::PointList) {
     for (const std::uint32_t index : indices) {
       const Vertex& v = shaded[index];
-      if (!detail::pointSurvivesClipping(v)) continue;
-      const detail::QuadEdges quad = detail::setupPoint(v.window, v.pointSize);
-      shadeFragments(quad.edges, quad.bounds, detail::setupPointInterpolants(v, interpolation));
+      if (detail::pointSurvivesClipping(v)) drawPoint(v);
     }
     return;
   }
 
   if (detail::isLineTopology(state.topology)) {
-    auto drawLine = [&](const Vertex& a, const Vertex& b) {
-      const auto line = rs.lineRasterization == LineRasterization::Bresenham
-                            ? detail::setupBresenhamLine(a.window, b.window, rs.lineWidth)
-                            : detail::setupRectangularLine(a.window, b.window, rs.lineWidth);
-      if (!line) return;
-      shadeFragments(line->quad.edges, line->quad.bounds, detail::setupLineInterpolants(a, b, *line, interpolation));
-    };
     Vertex clippedA, clippedB;
     for (const detail::LineIndices& l : detail::assembleLines(state.topology, indices)) {
       const Vertex& a = shaded[l[0]];
@@ -200,6 +214,25 @@ void Context::drawWithFormat(const PipelineState& state, const typename Shader::
 
   const detail::WindingFilter winding = detail::windingFilter(rs);
   if (!winding.drawClockwise && !winding.drawCounterClockwise) return;
+  const bool unfilled = rs.polygonMode != PolygonMode::Fill;
+  // Mesa's unfilled stage for one (clipped, culled) triangle: `edges` holds its header's edge
+  // flags (bit i: the edge from vertex i to vertex i+1); an edge or vertex is drawn when its flag
+  // and its first vertex's edge flag are set. Flat varyings are the triangle's provoking vertex's.
+  auto drawUnfilled = [&](const Vertex& a, const Vertex& b, const Vertex& c, unsigned edges) {
+    Vertex v[3] = {a, b, c};
+    for (int i = 0; i < N; ++i) {
+      if (interpolation[static_cast<std::size_t>(i)] == Interpolation::Flat) v[1].varyings[i] = v[2].varyings[i] = a.varyings[i];
+    }
+    if (rs.polygonMode == PolygonMode::Line) {
+      if ((edges & 4u) && v[2].edgeFlag) drawLine(v[2], v[0]);
+      if ((edges & 1u) && v[0].edgeFlag) drawLine(v[0], v[1]);
+      if ((edges & 2u) && v[1].edgeFlag) drawLine(v[1], v[2]);
+    } else {
+      for (int i = 0; i < 3; ++i) {
+        if ((edges & (1u << i)) && v[i].edgeFlag) drawPoint(v[i]);
+      }
+    }
+  };
   // Setup and fragments of one triangle (after clipping and culling).
   auto drawTriangle = [&](const Vertex& a, const Vertex& b, const Vertex& c) {
     detail::FixedTriangle fixed = detail::snapTriangle(a.window, b.window, c.window);
@@ -223,7 +256,7 @@ void Context::drawWithFormat(const PipelineState& state, const typename Shader::
   detail::ClippedPolygon<N> polygon;
   for (std::size_t start = 0; start < triangles.size(); start += batchSize) {
     const auto batch = std::span(triangles).subspan(start, std::min(batchSize, triangles.size() - start));
-    const bool throughDrawPipeline = detail::batchNeedsClipping(batch, shaded);
+    const bool throughDrawPipeline = unfilled || detail::batchNeedsClipping(batch, shaded);
     for (const detail::TriangleIndices& t : batch) {
       const Vertex& v0 = shaded[t[0]];
       const Vertex& v1 = shaded[t[1]];
@@ -234,16 +267,29 @@ void Context::drawWithFormat(const PipelineState& state, const typename Shader::
       }
       const std::uint32_t outside = v0.clipMask | v1.clipMask | v2.clipMask;
       if (outside == 0) {
-        if (detail::survivesPipelineCull(v0.window, v1.window, v2.window, rs)) drawTriangle(v0, v1, v2);
+        if (!detail::survivesPipelineCull(v0.window, v1.window, v2.window, rs)) continue;
+        unfilled ? drawUnfilled(v0, v1, v2, 7u) : drawTriangle(v0, v1, v2);
         continue;
       }
       if ((v0.clipMask & v1.clipMask & v2.clipMask) != 0) continue;  // entirely outside one plane
-      if (!detail::clipTriangle(v0, v1, v2, outside, transform, interpolation, polygon)) continue;
+      if (!detail::clipTriangle(v0, v1, v2, outside, transform, interpolation, polygon,
+                                rs.polygonMode == PolygonMode::Point)) {
+        continue;
+      }
+      // Emitted as a fan from vertex 0, with emit_poly's edge flags for each triangle.
+      const unsigned first = polygon.edges[0] ? 1u : 0u;
       for (int i = 2; i < polygon.count; ++i) {
         const Vertex& p0 = polygon.vertices[0];
         const Vertex& p1 = polygon.vertices[i - 1];
         const Vertex& p2 = polygon.vertices[i];
-        if (detail::survivesPipelineCull(p0.window, p1.window, p2.window, rs)) drawTriangle(p0, p1, p2);
+        if (!detail::survivesPipelineCull(p0.window, p1.window, p2.window, rs)) continue;
+        if (!unfilled) {
+          drawTriangle(p0, p1, p2);
+          continue;
+        }
+        unsigned edges = (i == 2 ? first : 0u) | (polygon.edges[static_cast<std::size_t>(i - 1)] ? 2u : 0u);
+        if (i == polygon.count - 1 && polygon.edges[static_cast<std::size_t>(i)]) edges |= 4u;
+        drawUnfilled(p0, p1, p2, edges);
       }
     }
   }

@@ -2,8 +2,7 @@
 // The fields mirror Vulkan's pipeline create-info structures one to one, so vkref can build a
 // VkPipeline from the same value softraster draws with. A field here that one renderer cannot
 // honour is an error in that renderer, never a silent default.
-// Deliberately absent until a scene needs it: blending, stencil, MSAA, polygon modes, smooth and
-// stippled lines.
+// Deliberately absent until a scene needs it: blending, stencil, MSAA, smooth and stippled lines.
 #pragma once
 
 #include <cstdint>
@@ -34,10 +33,14 @@ struct DepthBias {
   float constantFactor = 0, clamp = 0, slopeFactor = 0;
 };
 
+// VkPolygonMode: filled triangles, their edges as lines (wireframe) or their vertices as points.
+enum class PolygonMode : std::uint8_t { Fill, Line, Point };
+
 // VK_EXT_line_rasterization modes lavapipe supports without smoothing.
 enum class LineRasterization : std::uint8_t { Rectangular, Bresenham };
 
 struct RasterizationState {
+  PolygonMode polygonMode = PolygonMode::Fill;
   CullMode cullMode = CullMode::Back;
   FrontFace frontFace = FrontFace::CounterClockwise;
   // Vulkan depthClampEnable: no clipping against z = 0 and z = w; fragment depth is clamped to

@@ -26,17 +26,23 @@ namespace softraster::detail {
 // Upper bound on the vertices of a triangle clipped by six planes (Mesa's bound with no user planes).
 inline constexpr int kMaxClippedVertices = 2 * 6 + 1;
 
+// The clipped polygon; edges[i] says whether the edge from vertex i to vertex i+1 is one of the
+// original triangle's (polygon modes draw those, never the ones along a frustum plane).
 template <int N>
 struct ClippedPolygon {
   std::array<ShadedVertex<N>, kMaxClippedVertices + 1> vertices;
+  std::array<bool, kMaxClippedVertices + 1> edges{};
   int count = 0;
 };
 
-inline float clipDistance(Vec4 p, int plane) {
-  // The plane vectors of draw_context.c / draw_pt_post_vs.c for Vulkan's [0, w] depth range.
+// The plane vectors of draw_context.c / draw_pt_post_vs.c for Vulkan's [0, w] depth range. With
+// the guard band the x and y planes are |x|, |y| <= 2w (draw_pt_post_vs.c's -0.5/0.5 planes); the
+// clip masks are still computed against w, as Mesa's vertex JIT code does.
+inline float clipDistance(Vec4 p, int plane, bool guardBandXY = false) {
   static constexpr float kPlanes[6][4] = {{-1, 0, 0, 1}, {1, 0, 0, 1}, {0, -1, 0, 1},
                                           {0, 1, 0, 1},  {0, 0, 1, 0}, {0, 0, -1, 1}};
-  const float* q = kPlanes[plane];
+  static constexpr float kGuardBandPlanes[4][4] = {{-0.5f, 0, 0, 1}, {0.5f, 0, 0, 1}, {0, -0.5f, 0, 1}, {0, 0.5f, 0, 1}};
+  const float* q = guardBandXY && plane < 4 ? kGuardBandPlanes[plane] : kPlanes[plane];
   return p.x * q[0] + p.y * q[1] + p.z * q[2] + p.w * q[3];
 }
 
@@ -63,21 +69,29 @@ inline ShadedVertex<N> interpolateClipVertex(float t, const ShadedVertex<N>& bas
     const float ti = interpolation[static_cast<std::size_t>(i)] == Interpolation::NoPerspective ? tScreen : t;
     v.varyings[i] = base.varyings[i] + ti * (other.varyings[i] - base.varyings[i]);
   }
+  v.pointSize = base.pointSize + t * (other.pointSize - base.pointSize);
   v.clipMask = 0;
   return v;
 }
 
 // Clips the triangle (a, b, c) whose vertices are outside the planes in `clipMask` (the OR of
 // their masks). Returns false when the triangle is dropped entirely (empty or NaN/Inf).
+// `guardBandXY`: clip x and y at 2w. lavapipe does this for triangles drawn with polygon mode
+// POINT (measured, scenes/polygon_mode_clipping.json: a vertex at 1.9w keeps its point, one at
+// 2.5w is moved to 2w); filled triangles, polygon mode LINE and line topologies clip at w.
 template <int N>
 bool clipTriangle(const ShadedVertex<N>& a, const ShadedVertex<N>& b, const ShadedVertex<N>& c, std::uint32_t clipMask,
-                  const ViewportTransform& vp, const InterpolationSet<N>& interpolation, ClippedPolygon<N>& result) {
+                  const ViewportTransform& vp, const InterpolationSet<N>& interpolation, ClippedPolygon<N>& result,
+                  bool guardBandXY = false) {
   // Two vertex lists that swap roles after each plane; indices point into `storage`.
   std::array<ShadedVertex<N>, 3 + kMaxClippedVertices + 1> storage;
   int stored = 0;
   std::array<int, kMaxClippedVertices + 1> listA, listB;
+  std::array<bool, kMaxClippedVertices + 1> edgesA{true, true, true}, edgesB{};
   int* in = listA.data();
   int* out = listB.data();
+  bool* inEdges = edgesA.data();
+  bool* outEdges = edgesB.data();
   storage[stored] = a;
   in[0] = stored++;
   storage[stored] = b;
@@ -91,20 +105,23 @@ bool clipTriangle(const ShadedVertex<N>& a, const ShadedVertex<N>& b, const Shad
     clipMask &= clipMask - 1;
 
     int previous = in[0];
-    float dpPrevious = clipDistance(storage[previous].clip, plane);
+    float dpPrevious = clipDistance(storage[previous].clip, plane, guardBandXY);
     if (!std::isfinite(dpPrevious)) return false;
     if (n >= kMaxClippedVertices) return false;
     in[n] = in[0];
+    inEdges[n] = inEdges[0];
 
     int outCount = 0;
     for (int i = 1; i <= n; ++i) {
       const int current = in[i];
-      const float dp = clipDistance(storage[current].clip, plane);
+      const float dp = clipDistance(storage[current].clip, plane, guardBandXY);
       if (!std::isfinite(dp)) return false;
 
+      const bool previousEdge = inEdges[i - 1];
       bool crosses;
       if (dpPrevious >= 0.0f) {
         if (outCount >= kMaxClippedVertices) return false;
+        outEdges[outCount] = previousEdge;
         out[outCount++] = previous;
         crosses = dp < 0.0f;
       } else {
@@ -122,26 +139,33 @@ bool clipTriangle(const ShadedVertex<N>& a, const ShadedVertex<N>& b, const Shad
           } else {
             made = interpolateClipVertex(-dpPrevious / denominator, prev, cur, vp, interpolation);
           }
+          made.edgeFlag = false;  // the edge along the frustum plane is not drawn
         } else {  // coming back in
           if (-dpPrevious < dp) {
             made = interpolateClipVertex(-dpPrevious / denominator, prev, cur, vp, interpolation);
           } else {
             made = interpolateClipVertex(dp / denominator, cur, prev, vp, interpolation);
           }
+          made.edgeFlag = prev.edgeFlag;
         }
         storage[stored] = made;
+        outEdges[outCount] = previousEdge;
         out[outCount++] = stored++;
       }
       previous = current;
       dpPrevious = dp;
     }
     std::swap(in, out);
+    std::swap(inEdges, outEdges);
     n = outCount;
   }
 
   if (n < 3) return false;
   result.count = n;
-  for (int i = 0; i < n; ++i) result.vertices[i] = storage[in[i]];
+  for (int i = 0; i < n; ++i) {
+    result.vertices[i] = storage[in[i]];
+    result.edges[i] = inEdges[i];
+  }
   for (int i = 0; i < N; ++i) {  // flat varyings come from the provoking vertex, a
     if (interpolation[static_cast<std::size_t>(i)] == Interpolation::Flat) result.vertices[0].varyings[i] = a.varyings[i];
   }

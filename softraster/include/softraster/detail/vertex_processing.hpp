@@ -21,6 +21,7 @@ struct ShadedVertex {
   Vec4 window;
   std::uint32_t clipMask = 0;
   float pointSize = 1.0f;  // gl_PointSize, used by points only
+  bool edgeFlag = true;    // false for vertices clipping creates where an edge leaves the frustum
   std::array<float, NumVaryings> varyings{};
 };
 
