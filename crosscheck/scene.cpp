@@ -215,6 +215,15 @@ void readDrawState(const json& d, const std::string& place, softraster::Pipeline
                           {"front_and_back", CullMode::FrontAndBack}});
   rs.frontFace = readEnum(d, "front_face", place, rs.frontFace,
                           {{"counter_clockwise", FrontFace::CounterClockwise}, {"clockwise", FrontFace::Clockwise}});
+  if (d.contains("blend")) {
+    const std::string bp = placeOf(place, "blend");
+    checkKeys(d["blend"], bp, {"source", "destination"});
+    const std::vector<std::pair<const char*, softraster::BlendFactor>> factors = {
+        {"zero", softraster::BlendFactor::Zero}, {"one", softraster::BlendFactor::One}};
+    state.blend.enable = true;
+    state.blend.source = readEnum(d["blend"], "source", bp, softraster::BlendFactor::One, factors);
+    state.blend.destination = readEnum(d["blend"], "destination", bp, softraster::BlendFactor::Zero, factors);
+  }
   auto& ds = state.depth;
   ds.testEnable = readBool(d, "depth_test", place, ds.testEnable);
   ds.writeEnable = readBool(d, "depth_write", place, ds.writeEnable);
@@ -228,7 +237,7 @@ void readDrawState(const json& d, const std::string& place, softraster::Pipeline
 Draw readDraw(const json& d, const std::string& place, const std::filesystem::path& sceneDir) {
   checkKeys(d, place, {"name", "obj", "positions", "colours", "colour", "indices", "shading", "topology", "viewport",
                        "scissor", "cull", "front_face", "depth_clamp", "depth_bias", "line_width", "line_rasterization",
-                       "point_size", "polygon_mode", "depth_test", "depth_write", "depth_compare"});
+                       "point_size", "polygon_mode", "blend", "depth_test", "depth_write", "depth_compare"});
   Draw draw;
   draw.name = readString(d, "name", place, place);
   draw.shading = readEnum(d, "shading", place, ShadingModel::VertexColor,

@@ -363,3 +363,20 @@ scene("polygon_mode_clipping.json", "Clipping in polygon modes, one draw per qua
        draw("line mode, thick", [q(-0.5, -0.5), q(1.5, 0.2), q(-0.5, 0.5)], rainbow(3, 6), cull="none",
             polygon_mode="line", line_width=6.0, viewport=quadrant(3))],
       framebuffer={"width": 128, "height": 128, "clear_colour": [0, 0, 0, 1]}, camera={"type": "clip_space"})
+
+# ---- camera models of the course material ----
+room_draw = [{"name": "cornell_box", "obj": "meshes/cornell_box.obj", "cull": "back"}]
+scene("camera_pinhole_outside.json", "The course's pinhole camera outside the room: at (0, 0, -3.001) looking along "
+      "+z at the origin, focal length equal to the image height (500 px at 500x500), near 0.1, far 10.",
+      room_draw, framebuffer={"width": 500, "height": 500, "clear_colour": [0, 0, 0, 1]},
+      camera={"type": "pinhole", "position": [0, 0, -3.001], "focal_length": 500, "near": 0.1, "far": 10})
+scene("camera_look_at.json", "A look-at camera with vertical field of view 70 degrees, aspect 4:3, near 0.2 and far "
+      "8, from above and to the side of the room, up along -y (the scene's y points down).", room_draw,
+      framebuffer={"width": 320, "height": 240, "clear_colour": [0, 0, 0, 1]},
+      camera={"type": "look_at", "eye": [0.7, -0.6, -0.9], "target": [0.0, 0.5, 0.5], "up": [0, -1, 0], "fov_y": 70,
+              "aspect": 4 / 3, "near": 0.2, "far": 8})
+scene("camera_yaw_pitch.json", "A pinhole camera inside the room turned with yaw -35 and pitch 15 degrees (the "
+      "command line can turn any camera: --set camera.yaw=90).", room_draw,
+      framebuffer={"width": 320, "height": 240, "clear_colour": [0, 0, 0, 1]},
+      camera={"type": "pinhole", "position": [0.2, 0.3, -0.5], "yaw": -35, "pitch": 15, "focal_length": 140,
+              "near": 0.05, "far": 10})

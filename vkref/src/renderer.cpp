@@ -269,7 +269,7 @@ auto pipelineKey(const DrawCall& d) {
   const softraster::Viewport& v = s.viewport;
   const softraster::Scissor& sc = s.scissor;
   const softraster::DepthBias& b = s.rasterization.depthBias;
-  return std::tuple(s.rasterization.polygonMode, s.rasterization.lineWidth, s.rasterization.lineRasterization, d.program, s.topology, v.x, v.y, v.width, v.height, v.minDepth, v.maxDepth, sc.x, sc.y, sc.width,
+  return std::tuple(s.blend.enable, s.blend.source, s.blend.destination, s.rasterization.polygonMode, s.rasterization.lineWidth, s.rasterization.lineRasterization, d.program, s.topology, v.x, v.y, v.width, v.height, v.minDepth, v.maxDepth, sc.x, sc.y, sc.width,
                     sc.height, s.rasterization.cullMode, s.rasterization.frontFace, s.rasterization.depthClampEnable,
                     b.enable, b.constantFactor, b.clamp, b.slopeFactor, s.depth.testEnable, s.depth.writeEnable,
                     s.depth.compareOp);
@@ -408,8 +408,18 @@ bool createPipeline(VkDevice device, VkPipelineLayout layout, const DrawCall& d,
         .depthTestEnable = d.state.depth.testEnable ? VK_TRUE : VK_FALSE,
         .depthWriteEnable = d.state.depth.writeEnable ? VK_TRUE : VK_FALSE,
         .depthCompareOp = static_cast<VkCompareOp>(d.state.depth.compareOp)};
+    const softraster::BlendState& b = d.state.blend;
+    const auto factor = [](softraster::BlendFactor f) {
+      return f == softraster::BlendFactor::One ? VK_BLEND_FACTOR_ONE : VK_BLEND_FACTOR_ZERO;
+    };
     const VkPipelineColorBlendAttachmentState blendAttachment{
-        .blendEnable = VK_FALSE,
+        .blendEnable = b.enable ? VK_TRUE : VK_FALSE,
+        .srcColorBlendFactor = factor(b.source),
+        .dstColorBlendFactor = factor(b.destination),
+        .colorBlendOp = VK_BLEND_OP_ADD,
+        .srcAlphaBlendFactor = factor(b.source),
+        .dstAlphaBlendFactor = factor(b.destination),
+        .alphaBlendOp = VK_BLEND_OP_ADD,
         .colorWriteMask = VK_COLOR_COMPONENT_R_BIT | VK_COLOR_COMPONENT_G_BIT | VK_COLOR_COMPONENT_B_BIT |
                           VK_COLOR_COMPONENT_A_BIT};
     const VkPipelineColorBlendStateCreateInfo blend{.sType = VK_STRUCTURE_TYPE_PIPELINE_COLOR_BLEND_STATE_CREATE_INFO,

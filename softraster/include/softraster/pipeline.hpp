@@ -166,7 +166,7 @@ void Context::drawWithFormat(const PipelineState& state, const typename Shader::
       const std::uint32_t stored = detail::depthToStorage<Format>(z);
       if (ds.testEnable && !detail::depthTestPasses<Format>(ds.compareOp, stored, depth[pixel])) return;
       detail::interpolateVaryings<Fused>(interpolants, interpolation, fx, fy, varyings.data());
-      detail::storeColour(colour + 4 * pixel, Shader::fragment(uniforms, varyings.data()));
+      detail::blendColour(colour + 4 * pixel, Shader::fragment(uniforms, varyings.data()), state.blend);
       if (ds.testEnable && ds.writeEnable) depth[pixel] = stored;
     });
   };

@@ -2,7 +2,8 @@
 // The fields mirror Vulkan's pipeline create-info structures one to one, so vkref can build a
 // VkPipeline from the same value softraster draws with. A field here that one renderer cannot
 // honour is an error in that renderer, never a silent default.
-// Deliberately absent until a scene needs it: blending, stencil, MSAA, smooth and stippled lines.
+// Deliberately absent until a scene needs it: blend factors other than ZERO and ONE, stencil,
+// MSAA, smooth and stippled lines.
 #pragma once
 
 #include <cstdint>
@@ -57,12 +58,23 @@ struct DepthState {
   CompareOp compareOp = CompareOp::Less;
 };
 
+// Colour blending with op ADD; the same factors for colour and alpha. With ZERO and ONE the UNORM8
+// result is exact in both renderers: a saturating 8-bit add (additive blending counts fragments).
+enum class BlendFactor : std::uint8_t { Zero, One };
+
+struct BlendState {
+  bool enable = false;
+  BlendFactor source = BlendFactor::One;
+  BlendFactor destination = BlendFactor::Zero;
+};
+
 struct PipelineState {
   Topology topology = Topology::TriangleList;
   Viewport viewport;  // width/height 0 means "the whole framebuffer"
   Scissor scissor;
   RasterizationState rasterization;
   DepthState depth;
+  BlendState blend;
 };
 
 }  // namespace softraster

@@ -4,7 +4,8 @@
 //   conversion, the low 16 bits of float(z * (65535/65536)) + 128.0f.
 // Colour is stored as R8G8B8A8_UNORM: clamp to [0, 1] (NaN to 0), multiply by 255 in float,
 // round half to even.
-// Deliberately absent: blending, colour write masks, stencil, other colour formats.
+// Blending: factors ZERO and ONE with op ADD (8-bit saturating, as lavapipe blends UNORM8).
+// Deliberately absent: other blend factors, colour write masks, stencil, other colour formats.
 #pragma once
 
 #include <softraster/framebuffer.hpp>
@@ -84,6 +85,21 @@ inline void storeColour(std::uint8_t* pixel, Vec4 c) {
   pixel[1] = unorm8FromFloat(c.y);
   pixel[2] = unorm8FromFloat(c.z);
   pixel[3] = unorm8FromFloat(c.w);
+}
+
+// Blending with op ADD in 8-bit integers, as lavapipe blends UNORM8 targets: each side is the
+// value or zero, the sum saturates.
+inline void blendColour(std::uint8_t* pixel, Vec4 c, const BlendState& blend) {
+  if (!blend.enable) {
+    storeColour(pixel, c);
+    return;
+  }
+  const float source[4] = {c.x, c.y, c.z, c.w};
+  for (int i = 0; i < 4; ++i) {
+    const int s = blend.source == BlendFactor::One ? unorm8FromFloat(source[i]) : 0;
+    const int d = blend.destination == BlendFactor::One ? pixel[i] : 0;
+    pixel[i] = static_cast<std::uint8_t>(s + d > 255 ? 255 : s + d);
+  }
 }
 
 }  // namespace softraster::detail
