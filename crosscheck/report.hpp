@@ -3,7 +3,8 @@
 // every scene, sortable, worst first; per scene a collapsed section with softraster, Vulkan and
 // the diff heatmap side by side with a legend, both depth views and their difference, a flicker
 // toggle, nearest-neighbour zoom and the values of both images under the pointer, the description
-// and the tolerance. Images load lazily and sections open on demand, so 100 scenes stay fast.
+// and the tolerance. A section's images are in a <template> until it is first opened, and then
+// load lazily, so 100 scenes stay fast; the page's script is needed to see them.
 // The value readout reads DIR/<scene>/pixels.js (writePixelData): raw RGBA8 and float depth of
 // both frames, zlib-compressed and base64-encoded, loaded with a <script> element because a canvas
 // cannot read PNGs back on a page opened from file://.

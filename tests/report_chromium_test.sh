@@ -2,7 +2,8 @@
 # Opens a generated report in headless Chromium (Debian's chromium, from file://, no network) and
 # checks that the page rendered (its script ran without errors), that every image loaded, that
 # every scene's pixel data for the value readout loaded and decoded, that the readout shows values
-# under the pointer, and that the summary table has a row per scene. Keeps screenshots:
+# under the pointer, that the summary table has a row per scene and sorts on a header click, and
+# that the flicker toggle swaps the render. Keeps screenshots:
 #   ARTIFACTS/report/report.png        the page as it opens (1400x1000)
 #   ARTIFACTS/report/report-check.png  every scene opened (?check, 1400x3000)
 # Usage: report_chromium_test.sh CROSSCHECK SOURCE_DIR ARTIFACTS_DIR
@@ -67,6 +68,9 @@ rendered=2
 [ "$(attr data-pixels-loaded)" = "$rendered/$rendered" ] || fail "pixel data loaded: $(attr data-pixels-loaded) $(attr data-pixels-errors)"
 [ "$(attr data-summary-rows)" = "$scenes" ] || fail "summary table has $(attr data-summary-rows) rows, expected $scenes"
 grep -q '<table id="summary"' "$artifacts/dom.html" || fail "no summary table"
+[ "$(attr data-sort-probe)" = "malformed,flat_triangle,depth_slope,broken_obj" ] ||
+  fail "sorting by scene name, Z to A, gave '$(attr data-sort-probe)'"
+[ "$(attr data-flicker-probe)" = "depth_slope/vulkan.png" ] || fail "the flicker swap showed '$(attr data-flicker-probe)'"
 attr data-readout | grep -qE '^x [0-9]+, y [0-9]+  \|  softraster RGBA [0-9 ]+  \|  Vulkan RGBA [0-9 ]+  \|' ||
   fail "the value readout shows no values: '$(attr data-readout)'"
 

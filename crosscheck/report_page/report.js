@@ -139,6 +139,9 @@
   function setUpSection(section) {
     if (section.hasAttribute('data-set-up')) return;
     section.setAttribute('data-set-up', '1');
+    // The images come into the page only now (see report.hpp).
+    var template = section.querySelector('template.scene-views');
+    if (template) template.parentNode.replaceChild(template.content.cloneNode(true), template);
     var zoom = section.querySelector('select.zoom');
     if (zoom) {
       zoom.addEventListener('change', function () { applyZoom(section, zoom.value); });
@@ -227,6 +230,26 @@
       return section.querySelector('.readout').textContent;
     });
   }
+  // Sorts the table by scene name, Z to A (two header clicks), returns the names in order and
+  // restores the default order; and swaps the first flicker view, returning the image it shows.
+  function sortProbe() {
+    if (!table) return '';
+    var headers = table.tHead.rows[0].cells;
+    headers[1].click();
+    headers[1].click();
+    var names = Array.prototype.map.call(table.tBodies[0].rows, function (row) { return row.cells[1].getAttribute('data-v'); });
+    headers[0].click();
+    if (headers[0].getAttribute('aria-sort') !== 'ascending') headers[0].click();
+    return names.join(',');
+  }
+  function flickerProbe() {
+    var img = document.querySelector('img.flicker');
+    if (!img) return '';
+    img.closest('details.scene').querySelector('button.swap').click();
+    var shown = img.getAttribute('src');
+    img.closest('details.scene').querySelector('button.swap').click();
+    return shown;
+  }
   function selfCheck() {
     body.setAttribute('data-check', 'running');
     forEach(document.querySelectorAll('details.scene'), function (d) { d.open = true; setUpSection(d); });
@@ -249,6 +272,8 @@
       body.setAttribute('data-pixels-loaded', pixels + '/' + sections.length);
       if (pixelErrors.length) body.setAttribute('data-pixels-errors', pixelErrors.join(' | '));
       body.setAttribute('data-summary-rows', table ? String(table.tBodies[0].rows.length) : '0');
+      body.setAttribute('data-sort-probe', sortProbe());
+      body.setAttribute('data-flicker-probe', flickerProbe());
       return readoutProbe();
     }).then(function (readout) {
       body.setAttribute('data-readout', readout);
@@ -259,4 +284,5 @@
   }
   if (/(^\?|&)check(=|&|$)/.test(location.search) || location.hash === '#check') selfCheck();
   body.setAttribute('data-ready', '1');
+  body.setAttribute('data-ready-ms', String(Math.round(performance.now())));  // for measuring the page
 })();
