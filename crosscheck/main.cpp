@@ -119,7 +119,7 @@ int main(int argc, char** argv) {
   CommonOptions common;
   auto addDevice = [&](CLI::App* cmd) {
     cmd->add_option("--device", common.device, "Vulkan device name substring (default: lavapipe)");
-    cmd->add_flag("--validation", common.validation, "Enable VK_LAYER_KHRONOS_validation (a message fails the scene)");
+    cmd->add_flag("--validation", common.validation, "Enable VK_LAYER_KHRONOS_validation (in a suite, a message makes the scene Crash)");
     cmd->add_option("--softraster-fma", common.fma,
                     "How softraster rounds lavapipe's fmuladd: auto (as this CPU, like lavapipe), fused or separate; "
                     "the setting lavapipe does not use shows how much a scene depends on it")

@@ -35,7 +35,11 @@ std::optional<std::vector<SceneEntry>> collectScenes(const std::vector<std::stri
         *error = root + ": no such directory (run crosscheck from the repository root, or name scene files or directories)";
         return std::nullopt;
       }
-      files.push_back(path);  // a file, or a missing path that will be reported as a Crash
+      if (!std::filesystem::exists(path, ec) && path.extension() != ".json") {
+        *error = root + ": no such file or directory";  // a mistyped folder, most likely
+        return std::nullopt;
+      }
+      files.push_back(path);  // a file, or a missing scene file that will be reported as a Crash
       continue;
     }
     std::size_t found = 0;

@@ -24,9 +24,10 @@ struct SceneEntry {
 // The default suite when no argument is given: the scenes/ directory of the current directory.
 inline constexpr std::string_view kDefaultSceneDir = "scenes";
 
-// Collects the suite. A path that does not exist is kept (it becomes a Crash when run, so the
-// rest of the suite still runs). Errors (one line, naming the path): a directory that cannot be
-// read or holds no *.json file, two different scene files with one name.
+// Collects the suite. A *.json path that does not exist is kept (it becomes a Crash when run, so
+// the rest of the suite still runs). Errors (one line, naming the path): any other path that does
+// not exist, a directory that cannot be read or holds no *.json file, two different scene files
+// with one name.
 std::optional<std::vector<SceneEntry>> collectScenes(const std::vector<std::string>& inputs, std::string* error);
 
 // Shard I of N, 1-based: "1/3", "2/3", "3/3". Scene k of the sorted suite (0-based) belongs to

@@ -115,6 +115,7 @@ case $case_name in
       conformance --expectations "$expectations/bad_status.txt" "$fixtures"
     mkdir -p "$artifacts/empty"
     check_usage "^crosscheck: $artifacts/empty: no \*.json scene files in this directory$" conformance "$artifacts/empty"
+    check_usage "^crosscheck: scenez/: no such file or directory$" conformance scenez/
     touch "$artifacts/a_file"
     check_usage "^crosscheck: $artifacts/a_file/out: cannot create output directory" \
       conformance --out "$artifacts/a_file/out" "$fixtures/flat_triangle.json"
