@@ -119,4 +119,32 @@ std::vector<std::uint8_t> diffHeatmap(const Frame& a, const Frame& b, const Scen
   return out;
 }
 
+std::vector<std::uint8_t> depthDiffHeatmap(const Frame& a, const Frame& b, const Scene& scene) {
+  const std::size_t pixels = static_cast<std::size_t>(a.width) * a.height;
+  std::vector<std::uint8_t> out(4 * pixels, 0);
+  const double threshold = scene.tolerance.depthThreshold;
+  for (std::size_t i = 0; i < pixels; ++i) {
+    std::uint8_t* p = &out[4 * i];
+    p[3] = 255;
+    const float za = a.depth[i], zb = b.depth[i];
+    if (std::isnan(za) || std::isnan(zb)) {
+      if (std::isnan(za) != std::isnan(zb)) p[0] = 255, p[2] = 255;
+      continue;
+    }
+    const double d = std::fabs(double{za} - double{zb});
+    if (d == 0) continue;
+    if (d <= threshold) {
+      p[2] = 255;
+      continue;
+    }
+    // Over the threshold: 0 at the threshold .. 1 at 2^16 times it (log2), red to yellow; with a
+    // threshold of 0 the scale starts at 2^-24 (one step of float depth just below 1).
+    const double base = threshold > 0 ? threshold : 0x1p-24;
+    const double t = std::clamp(std::log2(d / base) / 16.0, 0.0, 1.0);
+    p[0] = 255;
+    p[1] = static_cast<std::uint8_t>(std::lround(64 + t * 191));
+  }
+  return out;
+}
+
 }  // namespace crosscheck

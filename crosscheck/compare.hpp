@@ -38,4 +38,10 @@ std::uint64_t coveredPixels(const Frame& frame, const Scene& scene);
 // yellow above it by magnitude, magenta where coverage differs.
 std::vector<std::uint8_t> diffHeatmap(const Frame& result, const Frame& reference, const Scene& scene);
 
+// RGBA8 heatmap of the depth difference: black where equal, blue up to the depth threshold, red
+// to yellow above it (yellow at 2^16 times the threshold and beyond, on a log scale; a threshold
+// of 0 counts from 2^-24), magenta
+// where one depth is NaN and the other is not.
+std::vector<std::uint8_t> depthDiffHeatmap(const Frame& result, const Frame& reference, const Scene& scene);
+
 }  // namespace crosscheck

@@ -2,8 +2,12 @@
 // compares them within each scene's tolerance and writes the images.
 //   crosscheck render SCENE --renderer soft|vulkan -o OUT.png [--depth-out OUT.png]
 //   crosscheck compare SCENE [--out DIR] [--json]
-// Exit status: 0 success / within tolerance, 1 outside tolerance or a failed render, 2 bad usage.
+//   crosscheck conformance [SCENE|DIR ...] [--expectations FILE] [--jobs N] [--shard I/N] [--junit FILE] [--out DIR]
+//   crosscheck report [SCENE|DIR ...] -o DIR [--expectations FILE] [--jobs N] [--shard I/N] [--junit FILE]
+// Exit status: 0 success / within tolerance / nothing unexpected, 1 outside tolerance, a failed
+// render or an unexpected conformance result, 2 bad usage.
 #include "compare.hpp"
+#include "conformance_cli.hpp"
 #include "image_io.hpp"
 #include "render.hpp"
 #include "scene.hpp"
@@ -20,10 +24,25 @@ namespace {
 
 using namespace crosscheck;
 
+constexpr const char* kUsage =
+    "usage: crosscheck render SCENE --renderer soft|vulkan -o OUT.png [--depth-out OUT.png]\n"
+    "       crosscheck compare SCENE [--out DIR] [--json]\n"
+    "       crosscheck conformance [SCENE|DIR ...] [--expectations FILE] [--jobs N] [--shard I/N] [--junit FILE] "
+    "[--out DIR]\n"
+    "       crosscheck report [SCENE|DIR ...] -o DIR [--expectations FILE] [--jobs N] [--shard I/N] [--junit FILE]\n"
+    "       (crosscheck SUBCOMMAND --help for every option)";
+
 struct CommonOptions {
   std::vector<std::string> overrides;
   std::string device;
   bool validation = false;
+  std::string fma = "auto";
+
+  softraster::ContextOptions softraster() const {
+    softraster::ContextOptions options;
+    if (fma != "auto") options.fusedMultiplyAdd = fma == "fused";
+    return options;
+  }
 };
 
 std::unique_ptr<vkref::Renderer> openVulkan(const CommonOptions& options, std::string* error) {
@@ -35,7 +54,7 @@ std::unique_ptr<vkref::Renderer> openVulkan(const CommonOptions& options, std::s
 
 std::optional<Frame> renderWith(const std::string& renderer, const Scene& scene, const CommonOptions& options,
                                 std::string* error) {
-  if (renderer == "soft") return renderSoftraster(scene, error);
+  if (renderer == "soft") return renderSoftraster(scene, error, options.softraster());
   auto vulkan = openVulkan(options, error);
   if (!vulkan) return std::nullopt;
   return renderVulkan(scene, *vulkan, error);
@@ -98,10 +117,17 @@ int main(int argc, char** argv) {
   CLI::App app{"crosscheck: softraster against Vulkan (lavapipe), scene by scene"};
   app.require_subcommand(1);
   CommonOptions common;
+  auto addDevice = [&](CLI::App* cmd) {
+    cmd->add_option("--device", common.device, "Vulkan device name substring (default: lavapipe)");
+    cmd->add_flag("--validation", common.validation, "Enable VK_LAYER_KHRONOS_validation (in a suite, a message makes the scene Crash)");
+    cmd->add_option("--softraster-fma", common.fma,
+                    "How softraster rounds lavapipe's fmuladd: auto (as this CPU, like lavapipe), fused or separate; "
+                    "the setting lavapipe does not use shows how much a scene depends on it")
+        ->check(CLI::IsMember({"auto", "fused", "separate"}));
+  };
   auto addCommon = [&](CLI::App* cmd) {
     cmd->add_option("--set", common.overrides, "Override a scene value, e.g. camera.yaw=90 (repeatable)");
-    cmd->add_option("--device", common.device, "Vulkan device name substring (default: lavapipe)");
-    cmd->add_flag("--validation", common.validation, "Enable VK_LAYER_KHRONOS_validation");
+    addDevice(cmd);
   };
 
   std::string scenePath, renderer = "soft", output, depthOutput, outDir;
@@ -123,15 +149,44 @@ int main(int argc, char** argv) {
   compare->add_flag("--json", json, "Print one JSON object instead of text");
   addCommon(compare);
 
+  ConformanceCommand suite;
+  int jobs = 1;
+  const auto addSuite = [&](CLI::App* cmd) {
+    cmd->add_option("SCENES", suite.inputs,
+                    "Scene files and directories (their *.json files); default: scenes/ of the current directory");
+    cmd->add_option("--expectations", suite.expectationsFile,
+                    "Known results, lines 'SCENE,STATUS # reason' (SCENE: file stem; STATUS: Pass, Fail, Crash, Skip)");
+    cmd->add_option("-j,--jobs", jobs, "Scenes rendered in parallel (threads, one Vulkan renderer each)")
+        ->check(CLI::Range(1, 1024));
+    cmd->add_option("--shard", suite.shard, "Run slice I of N (1-based: 1/3, 2/3, 3/3); scene k goes to shard k mod N + 1");
+    cmd->add_option("--junit", suite.junitFile, "Write JUnit XML to this file");
+    addDevice(cmd);
+  };
+  CLI::App* conformance =
+      app.add_subcommand("conformance", "Cross-check every scene of a suite; exit 0 when nothing unexpected happened");
+  addSuite(conformance);
+  conformance->add_option("--out", suite.outDir, "Write soft/vulkan/diff/depth PNGs to DIR/<scene>/");
+  CLI::App* reportCommand =
+      app.add_subcommand("report", "Run the suite like conformance and write an HTML report to DIR/index.html");
+  addSuite(reportCommand);
+  reportCommand->add_option("-o,--output", suite.reportDir, "Report directory")->required();
+
   try {
     app.parse(argc, argv);
   } catch (const CLI::CallForHelp& e) {
     return app.exit(e);
   } catch (const CLI::ParseError& e) {
-    std::fprintf(stderr, "crosscheck: %s\nusage: crosscheck render SCENE --renderer soft|vulkan -o OUT.png "
-                         "[--depth-out OUT.png] | crosscheck compare SCENE [--out DIR] [--json]\n",
-                 e.what());
+    std::fprintf(stderr, "crosscheck: %s\n%s\n", e.what(), kUsage);
     return 2;
+  }
+
+  if (conformance->parsed() || reportCommand->parsed()) {
+    suite.jobs = static_cast<unsigned>(jobs);
+    suite.device.deviceName = common.device;
+    suite.device.validation = common.validation;
+    suite.softraster = common.softraster();
+    for (int i = 0; i < argc; ++i) suite.commandLine += (i ? " " : "") + std::string(argv[i]);
+    return runConformanceCommand(suite);
   }
 
   std::string error;
@@ -146,7 +201,7 @@ int main(int argc, char** argv) {
     return 0;
   }
 
-  const auto soft = renderSoftraster(*scene, &error);
+  const auto soft = renderSoftraster(*scene, &error, common.softraster());
   if (!soft) return fail(error);
   auto vulkan = openVulkan(common, &error);
   if (!vulkan) return fail(error);

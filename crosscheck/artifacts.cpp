@@ -1,0 +1,42 @@
+// Scene images (see artifacts.hpp).
+#include "artifacts.hpp"
+
+#include "image_io.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+namespace crosscheck {
+
+std::pair<float, float> sharedDepthRange(const Frame& soft, const Frame& vulkan, float clearDepth) {
+  float lo = 1, hi = 0;
+  for (const Frame* frame : {&soft, &vulkan}) {
+    for (const float z : frame->depth) {
+      if (z != clearDepth && std::isfinite(z)) lo = std::min(lo, z), hi = std::max(hi, z);
+    }
+  }
+  if (lo < hi) return {lo, hi};
+  if (lo == hi && lo != clearDepth) return {std::min(lo, clearDepth), std::max(lo, clearDepth)};
+  return {0.0f, 1.0f};
+}
+
+bool writeSceneImages(const std::filesystem::path& root, const std::filesystem::path& folder, SceneResult* result,
+                      const Scene& scene, const Frame& soft, const Frame& vulkan, std::string* error) {
+  const auto [lo, hi] = sharedDepthRange(soft, vulkan, scene.clearDepth);
+  result->depthViewRange = {lo, hi};
+  result->imageRoot = root;
+  result->images.clear();
+  const auto write = [&](const char* kind, const char* file, const Frame& frame, const std::vector<std::uint8_t>& rgba) {
+    const std::filesystem::path relative = folder / file;
+    if (!writePng(root / relative, frame.width, frame.height, rgba, error)) return false;
+    result->images.push_back({kind, relative});
+    return true;
+  };
+  return write("soft", "soft.png", soft, soft.rgba) && write("vulkan", "vulkan.png", vulkan, vulkan.rgba) &&
+         write("diff", "diff.png", soft, diffHeatmap(soft, vulkan, scene)) &&
+         write("soft.depth", "soft.depth.png", soft, depthToGrey(soft.depth, scene.clearDepth, lo, hi)) &&
+         write("vulkan.depth", "vulkan.depth.png", vulkan, depthToGrey(vulkan.depth, scene.clearDepth, lo, hi)) &&
+         write("depth.diff", "depth.diff.png", soft, depthDiffHeatmap(soft, vulkan, scene));
+}
+
+}  // namespace crosscheck

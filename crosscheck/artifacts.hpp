@@ -1,0 +1,24 @@
+// The images of one compared scene, written as PNG files into one folder: soft.png, vulkan.png,
+// diff.png (diffHeatmap), soft.depth.png and vulkan.depth.png (both depth buffers mapped to grey
+// over one shared range, so equal depths look equal) and depth.diff.png (depthDiffHeatmap).
+// Deliberately PNG only and nothing about how a page shows them (that is report.hpp).
+#pragma once
+
+#include "conformance.hpp"
+
+#include <filesystem>
+#include <string>
+
+namespace crosscheck {
+
+// The depth range both depth views use: the smallest and largest depth that differs from the
+// clear depth in either frame. When all drawn depths are one value, the range runs from it to the
+// clear depth (so the drawing stands out); (0, 1) when nothing was drawn.
+std::pair<float, float> sharedDepthRange(const Frame& soft, const Frame& vulkan, float clearDepth);
+
+// Writes the six images into root / folder and records them (and the depth range) in *result.
+// On failure sets *error to "FILE: cannot write PNG" and returns false.
+bool writeSceneImages(const std::filesystem::path& root, const std::filesystem::path& folder, SceneResult* result,
+                      const Scene& scene, const Frame& soft, const Frame& vulkan, std::string* error);
+
+}  // namespace crosscheck

@@ -1,0 +1,149 @@
+// The conformance runner (see conformance.hpp).
+#include "conformance.hpp"
+
+#include <algorithm>
+#include <atomic>
+#include <chrono>
+#include <exception>
+#include <memory>
+#include <mutex>
+#include <thread>
+
+namespace crosscheck {
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+// One worker's Vulkan renderer, opened when the worker starts (so no scene's time includes it);
+// a failure to open is remembered, and every scene of this worker reports it.
+struct VulkanSlot {
+  std::unique_ptr<vkref::Renderer> renderer;
+  std::string error;
+  bool tried = false;
+
+  vkref::Renderer* get(const vkref::DeviceOptions& options, std::string* out) {
+    if (!tried) {
+      tried = true;
+      renderer = vkref::Renderer::create(options, &error);
+    }
+    if (!renderer) *out = error;
+    return renderer.get();
+  }
+};
+
+// Renders and compares one scene; returns Pass, Fail or Crash (with result.error set).
+Status runScene(SceneResult& result, const ConformanceOptions& options, VulkanSlot& vulkan) {
+  std::string error;
+  const auto crash = [&](std::string message) {
+    result.error = std::move(message);
+    return Status::Crash;
+  };
+  const auto scene = loadScene(result.entry.path, &error);
+  if (!scene) return crash(error);
+  result.loaded = true;
+  result.description = scene->description;
+  result.width = scene->width;
+  result.height = scene->height;
+  result.tolerance = scene->tolerance;
+
+  const auto soft = options.renderSoft ? options.renderSoft(*scene, &error)
+                                       : renderSoftraster(*scene, &error, options.softraster);
+  if (!soft) return crash(error);
+  result.softMilliseconds = soft->milliseconds;
+
+  vkref::Renderer* renderer = vulkan.get(options.device, &error);
+  if (!renderer) return crash("vulkan: " + error);
+  const std::size_t messagesBefore = options.device.validation ? renderer->validationMessages().size() : 0;
+  const auto reference = renderVulkan(*scene, *renderer, &error);
+  if (!reference) return crash(error);
+  result.vulkanMilliseconds = reference->milliseconds;
+  if (options.device.validation) {
+    const auto messages = renderer->validationMessages();
+    if (messages.size() > messagesBefore) {
+      const std::size_t more = messages.size() - messagesBefore - 1;
+      return crash("vulkan validation: " + messages[messagesBefore] +
+                   (more ? " (and " + std::to_string(more) + " more)" : ""));
+    }
+  }
+
+  result.comparison = compareFrames(*soft, *reference, *scene);
+  if (options.onFrames && !options.onFrames(result, *scene, *soft, *reference, &error)) return crash(error);
+  return result.comparison->passed() ? Status::Pass : Status::Fail;
+}
+
+SceneResult runOne(const SceneEntry& entry, const ConformanceOptions& options, VulkanSlot& vulkan) {
+  const auto start = Clock::now();
+  SceneResult result;
+  result.entry = entry;
+  const Expectation* expected = options.expectations ? options.expectations->find(entry.name) : nullptr;
+  if (expected) result.expectation = *expected;
+  if (expected && expected->status == Status::Skip) {
+    result.actual = result.status = Status::Skip;
+    return result;
+  }
+  try {
+    result.actual = runScene(result, options, vulkan);
+  } catch (const std::exception& e) {
+    result.error = std::string("exception: ") + e.what();
+    result.actual = Status::Crash;
+  } catch (...) {
+    result.error = "exception of unknown type";
+    result.actual = Status::Crash;
+  }
+  // An error message is one line.
+  std::replace(result.error.begin(), result.error.end(), '\n', ' ');
+  result.status = applyExpectation(result.actual, expected);
+  result.milliseconds = std::chrono::duration<double, std::milli>(Clock::now() - start).count();
+  return result;
+}
+
+}  // namespace
+
+std::vector<SceneResult> runConformance(const std::vector<SceneEntry>& suite, const ConformanceOptions& options) {
+  std::vector<SceneResult> results(suite.size());
+  std::atomic<std::size_t> next{0};
+  std::mutex lock;
+  std::size_t done = 0;
+  const auto worker = [&] {
+    VulkanSlot vulkan;
+    std::string ignored;  // reported per scene
+    vulkan.get(options.device, &ignored);
+    for (std::size_t i = next++; i < suite.size(); i = next++) {
+      SceneResult result = runOne(suite[i], options, vulkan);
+      const std::lock_guard guard(lock);
+      results[i] = std::move(result);
+      ++done;
+      if (options.onFinished) options.onFinished(i, results[i], done);
+    }
+  };
+  const std::size_t threads = std::clamp<std::size_t>(options.jobs, 1, std::max<std::size_t>(suite.size(), 1));
+  {
+    std::vector<std::jthread> helpers;
+    for (std::size_t t = 1; t < threads; ++t) helpers.emplace_back(worker);
+    worker();
+  }  // joins the helpers
+  return results;
+}
+
+Counts countResults(const std::vector<SceneResult>& results) {
+  Counts counts;
+  for (const SceneResult& r : results) {
+    ++counts.byStatus[static_cast<int>(r.status)];
+    if (r.status == Status::Skip) {
+      ++counts.skipped;
+    } else if (isUnexpected(r.status)) {
+      ++counts.failed;
+    } else {
+      ++counts.passed;
+    }
+  }
+  return counts;
+}
+
+std::string countsLine(const Counts& counts) {
+  std::string line = std::to_string(counts.passed) + " passed, " + std::to_string(counts.failed) + " failed";
+  if (counts.skipped) line += ", " + std::to_string(counts.skipped) + " skipped";
+  return line;
+}
+
+}  // namespace crosscheck

@@ -1,0 +1,209 @@
+// The conformance and report commands (see conformance_cli.hpp).
+#include "conformance_cli.hpp"
+
+#include "artifacts.hpp"
+#include "conformance.hpp"
+#include "expectations.hpp"
+#include "junit.hpp"
+#include "report.hpp"
+#include "suite.hpp"
+#include "summary.hpp"
+
+#include <unistd.h>
+
+#include <chrono>
+#include <cstdio>
+#include <ctime>
+#include <fstream>
+#include <set>
+
+namespace crosscheck {
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+int usageError(const std::string& message) {
+  std::fprintf(stderr, "crosscheck: %s\n", message.c_str());
+  return 2;
+}
+
+// Creates the folder and proves a file can be created in it, so a run does not end in an error.
+bool prepareOutputDir(const std::string& dir, std::string* error) {
+  std::error_code ec;
+  std::filesystem::create_directories(dir, ec);
+  if (ec || !std::filesystem::is_directory(dir)) {
+    *error = dir + ": cannot create output directory" + (ec ? ": " + ec.message() : std::string(": not a directory"));
+    return false;
+  }
+  const std::filesystem::path probe = std::filesystem::path(dir) / ".crosscheck-write-test";
+  if (!std::ofstream(probe)) {
+    *error = dir + ": cannot write into output directory";
+    return false;
+  }
+  std::filesystem::remove(probe, ec);
+  return true;
+}
+
+// Opens the file for appending (so an existing file is not emptied yet) to prove it is writable.
+bool prepareOutputFile(const std::string& file, std::string* error) {
+  const std::filesystem::path path(file);
+  std::error_code ec;
+  if (path.has_parent_path()) std::filesystem::create_directories(path.parent_path(), ec);
+  if (std::filesystem::is_directory(path, ec) || !std::ofstream(path, std::ios::app)) {
+    *error = file + ": cannot write this file";
+    return false;
+  }
+  return true;
+}
+
+std::string utcNow() {
+  const std::time_t now = std::time(nullptr);
+  std::tm tm{};
+  gmtime_r(&now, &tm);
+  char buffer[32];
+  std::strftime(buffer, sizeof buffer, "%Y-%m-%d %H:%M:%S UTC", &tm);
+  return buffer;
+}
+
+std::string isoNow() {
+  const std::time_t now = std::time(nullptr);
+  std::tm tm{};
+  gmtime_r(&now, &tm);
+  char buffer[32];
+  std::strftime(buffer, sizeof buffer, "%Y-%m-%dT%H:%M:%S", &tm);
+  return buffer;
+}
+
+// Prints finished scenes in suite order, and the progress line on a terminal.
+class Printer {
+ public:
+  Printer(std::size_t total, Clock::time_point start) : finished_(total, nullptr), start_(start), tty_(isatty(fileno(stderr))) {}
+
+  void finished(std::size_t position, const SceneResult& result, std::size_t done) {
+    finished_[position] = &result;
+    if (isUnexpected(result.status)) ++failures_;
+    if (tty_) std::fputs("\r\033[K", stderr);
+    while (next_ < finished_.size() && finished_[next_]) std::printf("%s\n", resultLine(*finished_[next_++]).c_str());
+    std::fflush(stdout);
+    if (tty_) {
+      const double elapsed = std::chrono::duration<double>(Clock::now() - start_).count();
+      std::fprintf(stderr, "\r%s", progressLine(done, finished_.size(), failures_, elapsed).c_str());
+      std::fflush(stderr);
+    }
+  }
+
+  void end() {
+    if (!tty_) return;
+    std::fputs("\r\033[K", stderr);
+    std::fflush(stderr);
+  }
+
+ private:
+  std::vector<const SceneResult*> finished_;
+  std::size_t next_ = 0, failures_ = 0;
+  Clock::time_point start_;
+  bool tty_;
+};
+
+}  // namespace
+
+int runConformanceCommand(const ConformanceCommand& command) {
+  std::string error;
+  if (command.jobs < 1) return usageError("--jobs must be at least 1");
+  Shard shard;
+  if (!command.shard.empty()) {
+    const auto parsed = parseShard(command.shard, &error);
+    if (!parsed) return usageError(error);
+    shard = *parsed;
+  }
+  std::optional<Expectations> expectations;
+  if (!command.expectationsFile.empty()) {
+    expectations = loadExpectations(command.expectationsFile, &error);
+    if (!expectations) return usageError(error);
+  }
+  const auto suite = collectScenes(command.inputs, &error);
+  if (!suite) return usageError(error);
+  if (!command.outDir.empty() && !prepareOutputDir(command.outDir, &error)) return usageError(error);
+  if (!command.reportDir.empty() && !prepareOutputDir(command.reportDir, &error)) return usageError(error);
+  if (!command.junitFile.empty() && !prepareOutputFile(command.junitFile, &error)) return usageError(error);
+
+  if (expectations) {
+    std::set<std::string> names;
+    for (const SceneEntry& entry : *suite) names.insert(entry.name);
+    for (const auto& [name, expectation] : expectations->byScene) {
+      if (!names.count(name)) {
+        std::fprintf(stderr, "crosscheck: warning: %s:%d: no scene named '%s' in this suite\n",
+                     expectations->file.string().c_str(), expectation.line, name.c_str());
+      }
+    }
+  }
+  const std::vector<SceneEntry> slice = selectShard(*suite, shard);
+  std::printf("crosscheck %s: %zu scene%s", command.reportDir.empty() ? "conformance" : "report", slice.size(),
+              slice.size() == 1 ? "" : "s");
+  if (shard.count > 1) std::printf(" (shard %zu/%zu of %zu)", shard.index, shard.count, suite->size());
+  std::printf(", %u job%s\n", command.jobs, command.jobs == 1 ? "" : "s");
+  std::fflush(stdout);
+
+  const auto start = Clock::now();
+  Printer printer(slice.size(), start);
+  ConformanceOptions options;
+  options.jobs = command.jobs;
+  options.expectations = expectations ? &*expectations : nullptr;
+  options.device = command.device;
+  options.softraster = command.softraster;
+  options.onFinished = [&](std::size_t position, const SceneResult& result, std::size_t done) {
+    printer.finished(position, result, done);
+  };
+  const std::string imageDir = command.reportDir.empty() ? command.outDir : command.reportDir;
+  const bool report = !command.reportDir.empty();
+  if (!imageDir.empty()) {
+    options.onFrames = [&](SceneResult& result, const Scene& scene, const Frame& soft, const Frame& vulkan, std::string* err) {
+      const std::filesystem::path folder = result.entry.name;
+      return writeSceneImages(imageDir, folder, &result, scene, soft, vulkan, err) &&
+             (!report || writePixelData(imageDir, folder / "pixels.js", &result, soft, vulkan, err));
+    };
+  }
+  const std::vector<SceneResult> results = runConformance(slice, options);
+  printer.end();
+  const double seconds = std::chrono::duration<double>(Clock::now() - start).count();
+  const Counts counts = countResults(results);
+
+  bool written = true;
+  if (!command.junitFile.empty()) {
+    JUnitInfo info;
+    info.seconds = seconds;
+    info.timestamp = isoNow();
+    if (shard.count > 1) info.suiteName += ".shard" + std::to_string(shard.index) + "of" + std::to_string(shard.count);
+    if (!writeJUnit(command.junitFile, results, info, &error)) {
+      std::fprintf(stderr, "crosscheck: %s\n", error.c_str());
+      written = false;
+    }
+  }
+  if (report) {
+    ReportInfo info;
+    info.generated = utcNow();
+    info.commandLine = command.commandLine;
+    info.seconds = seconds;
+    info.jobs = command.jobs;
+    if (!writeReport(command.reportDir, results, info, &error)) {
+      std::fprintf(stderr, "crosscheck: %s\n", error.c_str());
+      written = false;
+    }
+  }
+  std::fflush(stderr);
+
+  const std::string summary = summaryText(results);
+  if (!summary.empty()) std::printf("\n%s", summary.c_str());
+  if (!command.junitFile.empty() && written) std::printf("JUnit: %s\n", command.junitFile.c_str());
+  if (!command.outDir.empty()) std::printf("images: %s/<scene>/\n", command.outDir.c_str());
+  if (report && written) {
+    std::printf("report: %s\n", (std::filesystem::path(command.reportDir) / "index.html").string().c_str());
+  }
+  std::printf("ran %zu scene%s in %.2f s with %u job%s\n", results.size(), results.size() == 1 ? "" : "s", seconds,
+              command.jobs, command.jobs == 1 ? "" : "s");
+  std::printf("%s\n", countsLine(counts).c_str());
+  std::fflush(stdout);
+  return counts.failed == 0 && written ? 0 : 1;
+}
+
+}  // namespace crosscheck

@@ -1,0 +1,89 @@
+// Expectations file parsing (see expectations.hpp).
+#include "expectations.hpp"
+
+#include <cerrno>
+#include <cstring>
+#include <fstream>
+#include <sstream>
+
+namespace crosscheck {
+namespace {
+
+std::string_view trim(std::string_view s) {
+  const auto first = s.find_first_not_of(" \t\r");
+  if (first == std::string_view::npos) return {};
+  const auto last = s.find_last_not_of(" \t\r");
+  return s.substr(first, last - first + 1);
+}
+
+}  // namespace
+
+std::optional<Expectations> parseExpectations(std::string_view text, const std::filesystem::path& file,
+                                              std::string* error) {
+  Expectations expectations;
+  expectations.file = file;
+  int lineNumber = 0;
+  while (!text.empty()) {
+    ++lineNumber;
+    const auto newline = text.find('\n');
+    const std::string_view line = text.substr(0, newline);
+    text = newline == std::string_view::npos ? std::string_view{} : text.substr(newline + 1);
+
+    const auto hash = line.find('#');
+    const std::string_view content = trim(line.substr(0, hash));
+    const std::string_view reason = hash == std::string_view::npos ? std::string_view{} : trim(line.substr(hash + 1));
+    if (content.empty()) continue;  // blank or comment
+
+    const auto fail = [&](const std::string& what) {
+      *error = file.string() + ":" + std::to_string(lineNumber) + ": " + what;
+      return std::nullopt;
+    };
+    const auto comma = content.find(',');
+    if (comma == std::string_view::npos || content.find(',', comma + 1) != std::string_view::npos) {
+      return fail("expected 'SCENE,STATUS # reason', got '" + std::string(content) + "'");
+    }
+    const std::string name(trim(content.substr(0, comma)));
+    const std::string_view statusText = trim(content.substr(comma + 1));
+    if (name.empty()) return fail("missing scene name before ','");
+    const auto status = parseStatus(statusText);
+    if (!status || !(*status == Status::Pass || *status == Status::Fail || *status == Status::Crash ||
+                     *status == Status::Skip)) {
+      return fail("'" + std::string(statusText) + "' is not one of Pass, Fail, Crash, Skip");
+    }
+    const auto [it, inserted] = expectations.byScene.emplace(name, Expectation{*status, std::string(reason), lineNumber});
+    if (!inserted) return fail("scene '" + name + "' is already listed on line " + std::to_string(it->second.line));
+  }
+  return expectations;
+}
+
+std::optional<Expectations> loadExpectations(const std::filesystem::path& file, std::string* error) {
+  std::error_code ec;
+  if (std::filesystem::is_directory(file, ec)) {
+    *error = file.string() + ": cannot read expectations file: it is a directory";
+    return std::nullopt;
+  }
+  errno = 0;
+  std::ifstream in(file, std::ios::binary);
+  if (!in) {
+    *error = file.string() + ": cannot read expectations file: " +
+             (errno ? std::strerror(errno) : "cannot open");
+    return std::nullopt;
+  }
+  std::ostringstream text;
+  text << in.rdbuf();
+  if (in.bad()) {
+    *error = file.string() + ": cannot read expectations file: read error";
+    return std::nullopt;
+  }
+  return parseExpectations(text.str(), file, error);
+}
+
+Status applyExpectation(Status actual, const Expectation* expected) {
+  if (!expected || expected->status == Status::Pass) return actual;
+  if (expected->status == Status::Skip) return Status::Skip;  // not run at all
+  if (actual == Status::Pass) return Status::UnexpectedPass;
+  if (actual == expected->status) return Status::ExpectedFail;
+  return actual;
+}
+
+}  // namespace crosscheck

@@ -1,0 +1,20 @@
+// Escaping text for XML and HTML (JUnit files, the report) and for URLs of files next to a page.
+// Deliberately no document model: the writers build their markup as text and escape every value
+// they put into it.
+#pragma once
+
+#include <string>
+#include <string_view>
+
+namespace crosscheck {
+
+// Escapes & < > " ' as entities. Characters XML 1.0 cannot carry at all (control characters other
+// than tab, newline and carriage return) and bytes that are not UTF-8 become U+FFFD, so the result
+// is always well-formed character data or attribute text.
+std::string escapeMarkup(std::string_view text);
+
+// Percent-encodes a relative file path for an href or src: '/' stays, unreserved characters stay,
+// every other byte becomes %XX.
+std::string encodeUrlPath(std::string_view path);
+
+}  // namespace crosscheck

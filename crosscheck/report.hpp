@@ -1,0 +1,48 @@
+// The HTML comparison report: DIR/index.html, one self-contained page (inline CSS and script, no
+// network) over the scenes' PNGs in DIR/<scene>/ (written by artifacts.hpp). A summary table of
+// every scene, sortable, worst first; per scene a collapsed section with softraster, Vulkan and
+// the diff heatmap side by side with a legend, both depth views and their difference, a flicker
+// toggle, nearest-neighbour zoom and the values of both images under the pointer, the description
+// and the tolerance. A section's images are in a <template> until it is first opened, and then
+// load lazily, so 100 scenes stay fast; the page's script is needed to see them.
+// The value readout reads DIR/<scene>/pixels.js (writePixelData): raw RGBA8 and float depth of
+// both frames, zlib-compressed and base64-encoded, loaded with a <script> element because a canvas
+// cannot read PNGs back on a page opened from file://.
+// Deliberately no charts, no history across runs and no server.
+#pragma once
+
+#include "conformance.hpp"
+
+#include <filesystem>
+#include <string>
+#include <vector>
+
+namespace crosscheck {
+
+struct ReportInfo {
+  std::string generated;    // when, for the header
+  std::string commandLine;  // how, for the header
+  double seconds = 0;       // wall time of the run
+  unsigned jobs = 1;
+};
+
+// The text of DIR/<scene>/pixels.js: `crosscheckPixels("name", {w, h, soft, vulkan, softDepth,
+// vulkanDepth})`, each buffer zlib-compressed and base64-encoded; depth as little-endian float32.
+std::string pixelDataScript(const std::string& sceneName, const Frame& soft, const Frame& vulkan);
+
+// Writes pixelDataScript to root / relative and records it in *result; on failure sets *error.
+bool writePixelData(const std::filesystem::path& root, const std::filesystem::path& relative, SceneResult* result,
+                    const Frame& soft, const Frame& vulkan, std::string* error);
+
+// Positions of the results, worst first: Crash, Fail, UnexpectedPass, ExpectedFail, Pass, Skip;
+// then by coverage mismatches, pixels over the colour and depth thresholds (most first), PSNR
+// (lowest first) and name.
+std::vector<std::size_t> worstFirst(const std::vector<SceneResult>& results);
+
+std::string reportHtml(const std::vector<SceneResult>& results, const ReportInfo& info);
+
+// Writes dir/index.html; on failure sets *error ("FILE: cannot write report: reason").
+bool writeReport(const std::filesystem::path& dir, const std::vector<SceneResult>& results, const ReportInfo& info,
+                 std::string* error);
+
+}  // namespace crosscheck

@@ -1,0 +1,235 @@
+#!/usr/bin/env bash
+# Command-line tests of `crosscheck conformance` and `crosscheck report`, one case per ctest test:
+#   conformance_cli_test.sh CASE CROSSCHECK SOURCE_DIR ARTIFACTS_DIR
+# Each case runs the real binary on the fixtures in tests/data/ and checks its exit status and
+# output. Exit 0: passed, 1: failed (with a message), 77: skipped (a tool it needs is missing).
+set -uo pipefail
+case_name=$1
+crosscheck=$2
+src=$3
+artifacts=$4/conformance-cli/$case_name
+rm -rf "$artifacts"
+mkdir -p "$artifacts"
+cd "$src" || exit 1
+
+fixtures=tests/data/conformance
+expectations=tests/data/expectations
+
+# softraster's fmuladd rounding that lavapipe does NOT use on this CPU (softraster's cpuHasFma):
+# with it, depth_slope's depths differ in the last bits and it fails for real.
+case "$(uname -m)" in
+  x86_64 | i?86) if grep -qw fma /proc/cpuinfo; then other_fma=separate; else other_fma=fused; fi ;;
+  aarch64 | arm64) other_fma=separate ;;
+  *) other_fma=fused ;;
+esac
+
+fail() {
+  echo "FAILED: $*"
+  [ -f "$artifacts/out.txt" ] && { echo "--- stdout"; cat "$artifacts/out.txt"; }
+  [ -f "$artifacts/err.txt" ] && { echo "--- stderr"; cat "$artifacts/err.txt"; }
+  exit 1
+}
+
+# run ARGS...: runs crosscheck, stdout to out.txt, stderr to err.txt, exit status to $status.
+run() {
+  "$crosscheck" "$@" >"$artifacts/out.txt" 2>"$artifacts/err.txt"
+  status=$?
+}
+expect_status() { [ "$status" -eq "$1" ] || fail "exit status $status, expected $1"; }
+expect_out() { grep -qE -- "$1" "$artifacts/out.txt" || fail "stdout has no line matching: $1"; }
+expect_err() { grep -qE -- "$1" "$artifacts/err.txt" || fail "stderr has no line matching: $1"; }
+expect_last_line() {
+  local last
+  last=$(tail -n 1 "$artifacts/out.txt")
+  [ "$last" = "$1" ] || fail "last line is '$last', expected '$1'"
+}
+expect_one_error_line() {
+  [ "$(wc -l <"$artifacts/err.txt")" -eq 1 ] || fail "expected exactly one error line"
+  [ ! -s "$artifacts/out.txt" ] || fail "expected nothing on stdout"
+}
+# Scene names of a JUnit file, one a line, sorted.
+junit_names() { xmllint --xpath '//testcase/@name' "$1" | grep -oE 'name="[^"]*"' | sed 's/^name="//; s/"$//' | sort; }
+xpath_number() { xmllint --xpath "string($2)" "$1"; }
+need() { command -v "$1" >/dev/null || { echo "SKIPPED: $1 is not installed"; exit 77; }; }
+
+case $case_name in
+  statuses)
+    # Pass, Fail and Crash (malformed scene, malformed OBJ, missing file) in one run that goes on.
+    run conformance "$fixtures" tests/data/no_such_scene.json --softraster-fma "$other_fma"
+    expect_status 1
+    expect_out '^Fail +depth_slope: (.*; )?depth_pixels_over [0-9]+ > 0 \(depth max \|d\| [0-9.e+-]+, threshold 0\)'
+    expect_out '^Pass +flat_triangle  \(soft [0-9.]+ ms, vulkan [0-9.]+ ms\)$'
+    expect_out '^Crash +malformed: tests/data/conformance/malformed.json: parse error at line 3'
+    expect_out '^Crash +broken_obj: tests/data/conformance/broken_obj.json: /draws/0/obj: .*malformed.obj: '
+    expect_out '^Crash +no_such_scene: tests/data/no_such_scene.json: cannot open scene file$'
+    expect_out '^Failures \(4\):$'
+    expect_out '^Slowest scenes:$'
+    expect_last_line "1 passed, 4 failed"
+    ;;
+  expectations)
+    # Every failure known: ExpectedFail for Fail and Crash, Skip not run; exit 0.
+    run conformance "$fixtures" --softraster-fma "$other_fma" --expectations "$expectations/all_known.txt"
+    expect_status 0
+    expect_out '^ExpectedFail +depth_slope: (.*; )?depth_pixels_over [0-9]+ > 0 .*\[depths differ in the last bits'
+    expect_out '^ExpectedFail +malformed: .*parse error'
+    expect_out '^ExpectedFail +broken_obj: '
+    expect_out '^Skip +flat_triangle: skipped by expectations \[exercises Skip\]$'
+    expect_out '^Expected failures and skips \(4\):$'
+    expect_last_line "3 passed, 0 failed, 1 skipped"
+    ;;
+  unexpected_pass)
+    run conformance "$fixtures/depth_slope.json" "$fixtures/flat_triangle.json" --expectations "$expectations/unexpected_pass.txt"
+    expect_status 1
+    expect_out '^UnexpectedPass +depth_slope: expected Fail \(line 3\), but passed \[only fails with the other fmuladd rounding\]'
+    expect_last_line "1 passed, 1 failed"
+    ;;
+  unknown_scene_in_expectations)
+    run conformance "$fixtures/flat_triangle.json" --expectations "$expectations/unknown_scene.txt"
+    expect_status 0
+    expect_err "^crosscheck: warning: $expectations/unknown_scene.txt:3: no scene named 'no_such_scene' in this suite$"
+    expect_last_line "0 passed, 0 failed, 1 skipped"
+    ;;
+  bad_usage)
+    # Each: exit 2 and one clear error line naming the file or option.
+    check_usage() {
+      local pattern=$1
+      shift
+      run "$@"
+      expect_status 2
+      expect_err "$pattern"
+    }
+    check_usage '--jobs' conformance --jobs 0 "$fixtures"
+    check_usage '^crosscheck: --shard 0/3: needs 1 <= I <= N' conformance --shard 0/3 "$fixtures"
+    check_usage '^crosscheck: --shard 4/3: needs 1 <= I <= N' conformance --shard 4/3 "$fixtures"
+    check_usage '^crosscheck: --shard a/b: expected I/N' conformance --shard a/b "$fixtures"
+    check_usage '^crosscheck: --shard 2: expected I/N' conformance --shard 2 "$fixtures"
+    check_usage "^crosscheck: $expectations/missing.txt: cannot read expectations file: No such file or directory$" \
+      conformance --expectations "$expectations/missing.txt" "$fixtures"
+    expect_one_error_line
+    check_usage "^crosscheck: $expectations: cannot read expectations file: it is a directory$" \
+      conformance --expectations "$expectations" "$fixtures"
+    check_usage "^crosscheck: $expectations/malformed_line.txt:4: expected 'SCENE,STATUS # reason', got 'depth_slope Fail'$" \
+      conformance --expectations "$expectations/malformed_line.txt" "$fixtures"
+    expect_one_error_line
+    check_usage "^crosscheck: $expectations/bad_status.txt:2: 'ExpectedFail' is not one of Pass, Fail, Crash, Skip$" \
+      conformance --expectations "$expectations/bad_status.txt" "$fixtures"
+    mkdir -p "$artifacts/empty"
+    check_usage "^crosscheck: $artifacts/empty: no \*.json scene files in this directory$" conformance "$artifacts/empty"
+    check_usage "^crosscheck: scenez/: no such file or directory$" conformance scenez/
+    touch "$artifacts/a_file"
+    check_usage "^crosscheck: $artifacts/a_file/out: cannot create output directory" \
+      conformance --out "$artifacts/a_file/out" "$fixtures/flat_triangle.json"
+    expect_one_error_line
+    check_usage "^crosscheck: $artifacts/a_file/report: cannot create output directory" \
+      report -o "$artifacts/a_file/report" "$fixtures/flat_triangle.json"
+    check_usage "^crosscheck: $artifacts/a_file/x.xml: cannot write this file$" \
+      conformance --junit "$artifacts/a_file/x.xml" "$fixtures/flat_triangle.json"
+    check_usage 'usage: crosscheck' report "$fixtures"   # -o is required
+    mkdir -p "$artifacts/one" "$artifacts/two"
+    cp "$fixtures/flat_triangle.json" "$artifacts/one/same.json"
+    cp "$fixtures/flat_triangle.json" "$artifacts/two/same.json"
+    check_usage "scene name 'same' is already used by" conformance "$artifacts/one" "$artifacts/two"
+    # No argument and no scenes/ here: the default suite cannot be found.
+    (cd "$artifacts" && "$crosscheck" conformance >out.txt 2>err.txt; echo $? >status.txt)
+    [ "$(cat "$artifacts/status.txt")" -eq 2 ] || fail "default suite outside the repository: exit status not 2"
+    expect_err '^crosscheck: scenes: no such directory \(run crosscheck from the repository root'
+    ;;
+  default_suite)
+    # No argument: every scene in scenes/ of the current directory, all passing.
+    run conformance --jobs 2
+    expect_status 0
+    expected=$(ls scenes/*.json | wc -l)
+    expect_out "^crosscheck conformance: $expected scenes, 2 jobs$"
+    expect_last_line "$expected passed, 0 failed"
+    ;;
+  jobs_stable_order)
+    # --jobs 1 and --jobs 3 give the same lines in the same order (timings aside).
+    suite=(scenes "$fixtures" tests/data)
+    run conformance "${suite[@]}" --jobs 1
+    sed -E 's/  \(soft .*\)$//' "$artifacts/out.txt" | grep -vE '^(crosscheck conformance|ran |  )' >"$artifacts/jobs1.txt"
+    run conformance "${suite[@]}" --jobs 3
+    sed -E 's/  \(soft .*\)$//' "$artifacts/out.txt" | grep -vE '^(crosscheck conformance|ran |  )' >"$artifacts/jobs3.txt"
+    diff "$artifacts/jobs1.txt" "$artifacts/jobs3.txt" || fail "--jobs 3 printed other results or another order than --jobs 1"
+    [ "$(grep -cE '^(Pass|Crash) ' "$artifacts/jobs1.txt")" -ge 10 ] || fail "expected at least 10 scenes in the suite"
+    ;;
+  sharding)
+    # For N in 1..3 the shards' union is the whole suite and no scene runs twice.
+    need xmllint
+    suite=(scenes "$fixtures" tests/data)
+    run conformance "${suite[@]}" --junit "$artifacts/all.xml"
+    junit_names "$artifacts/all.xml" >"$artifacts/all.txt"
+    total=$(wc -l <"$artifacts/all.txt")
+    [ "$total" -ge 10 ] || fail "expected at least 10 scenes, got $total"
+    for n in 1 2 3; do
+      : >"$artifacts/union.txt"
+      for i in $(seq 1 "$n"); do
+        run conformance "${suite[@]}" --shard "$i/$n" --junit "$artifacts/shard$i-of-$n.xml"
+        if [ "$n" -gt 1 ]; then expect_out "\\(shard $i/$n of $total\\)"; fi
+        junit_names "$artifacts/shard$i-of-$n.xml" >>"$artifacts/union.txt"
+        size=$(junit_names "$artifacts/shard$i-of-$n.xml" | wc -l)
+        [ "$size" -ge $((total / n)) ] && [ "$size" -le $(((total + n - 1) / n)) ] || fail "shard $i/$n has $size of $total scenes"
+      done
+      [ -z "$(sort "$artifacts/union.txt" | uniq -d)" ] || fail "with $n shards a scene ran twice: $(sort "$artifacts/union.txt" | uniq -d)"
+      sort "$artifacts/union.txt" | diff - "$artifacts/all.txt" || fail "the union of $n shards is not the whole suite"
+    done
+    ;;
+  junit)
+    # Well-formed JUnit with the right counts; Fail/UnexpectedPass as <failure>, Crash as <error>,
+    # Skip and ExpectedFail as <skipped>, metrics and image paths in <system-out>.
+    need xmllint
+    run conformance "$fixtures" tests/data/bad_enum.json --softraster-fma "$other_fma" \
+      --expectations "$expectations/unknown_scene.txt" --junit "$artifacts/run.xml" --out "$artifacts/images"
+    expect_status 1
+    xmllint --noout "$artifacts/run.xml" || fail "JUnit file is not well-formed XML"
+    [ "$(xpath_number "$artifacts/run.xml" '/testsuites/testsuite/@tests')" = 5 ] || fail "tests != 5"
+    [ "$(xpath_number "$artifacts/run.xml" '/testsuites/testsuite/@failures')" = 1 ] || fail "failures != 1"
+    [ "$(xpath_number "$artifacts/run.xml" '/testsuites/testsuite/@errors')" = 3 ] || fail "errors != 3"
+    [ "$(xpath_number "$artifacts/run.xml" '/testsuites/testsuite/@skipped')" = 1 ] || fail "skipped != 1"
+    [ "$(xpath_number "$artifacts/run.xml" 'count(//testcase)')" = 5 ] || fail "not 5 testcases"
+    [ "$(xpath_number "$artifacts/run.xml" 'count(//testcase[@name="depth_slope"]/failure[@type="Fail"])')" = 1 ] || fail "depth_slope has no <failure>"
+    [ "$(xpath_number "$artifacts/run.xml" 'count(//testcase/error[@type="Crash"])')" = 3 ] || fail "not 3 <error>"
+    [ "$(xpath_number "$artifacts/run.xml" 'count(//testcase[@name="flat_triangle"]/skipped)')" = 1 ] || fail "flat_triangle not <skipped>"
+    xpath_number "$artifacts/run.xml" '//testcase[@name="depth_slope"]/system-out' >"$artifacts/depth_slope.out"
+    grep -qE '^depth_pixels_over: [0-9]+ \(max 0\)$' "$artifacts/depth_slope.out" || fail "no metrics in <system-out>"
+    grep -qE "^image diff: $artifacts/images/depth_slope/diff.png$" "$artifacts/depth_slope.out" || fail "no image path in <system-out>"
+    [ -s "$artifacts/images/depth_slope/diff.png" ] || fail "--out wrote no diff.png"
+    time=$(xpath_number "$artifacts/run.xml" '//testcase[@name="depth_slope"]/@time')
+    [[ "$time" =~ ^[0-9]+\.[0-9]{3}$ ]] && awk -v t="$time" 'BEGIN { exit !(t > 0 && t < 60) }' || fail "time '$time' is not in seconds"
+    # Expected failures are <skipped> too.
+    run conformance "$fixtures" --softraster-fma "$other_fma" --expectations "$expectations/all_known.txt" --junit "$artifacts/known.xml"
+    expect_status 0
+    xmllint --noout "$artifacts/known.xml" || fail "JUnit file is not well-formed XML"
+    [ "$(xpath_number "$artifacts/known.xml" '/testsuites/testsuite/@skipped')" = 4 ] || fail "known: skipped != 4"
+    [ "$(xpath_number "$artifacts/known.xml" '/testsuites/testsuite/@failures')" = 0 ] || fail "known: failures != 0"
+    [ "$(xpath_number "$artifacts/known.xml" '/testsuites/testsuite/@errors')" = 0 ] || fail "known: errors != 0"
+    xpath_number "$artifacts/known.xml" '//testcase[@name="depth_slope"]/skipped/@message' | grep -qE '^expected failure: (.*; )?depth_pixels_over' ||
+      fail "ExpectedFail's <skipped> has no message"
+    ;;
+  progress)
+    # The progress line goes to a terminal only.
+    need script
+    script -qefc "'$crosscheck' conformance $fixtures/flat_triangle.json $fixtures/depth_slope.json" "$artifacts/tty.txt" >/dev/null
+    grep -qE $'\r\\[1/2\\] failures: 0 elapsed: [0-9]+\\.[0-9]s' "$artifacts/tty.txt" || fail "no progress line on a terminal"
+    grep -qE $'\r\\[2/2\\] failures: 0 elapsed: ' "$artifacts/tty.txt" || fail "no final progress line on a terminal"
+    # The last line before script(1)'s own trailer.
+    grep -av '^Script ' "$artifacts/tty.txt" | tr -d '\r' | sed '/^$/d' | tail -n 1 | grep -qx "2 passed, 0 failed" ||
+      fail "last line on a terminal is not the counts"
+    run conformance "$fixtures/flat_triangle.json" "$fixtures/depth_slope.json"
+    expect_status 0
+    ! grep -q 'elapsed:' "$artifacts/err.txt" "$artifacts/out.txt" || fail "progress line printed when not on a terminal"
+    ;;
+  no_vulkan_driver)
+    # Without a driver every scene is a Crash with the one-line error; the run still ends.
+    VK_ICD_FILENAMES=/nonexistent/icd.json VK_DRIVER_FILES=/nonexistent/icd.json \
+      run conformance "$fixtures/flat_triangle.json" "$fixtures/depth_slope.json"
+    expect_status 1
+    expect_out '^Crash +flat_triangle: vulkan: no Vulkan driver found'
+    expect_out '^Crash +depth_slope: vulkan: no Vulkan driver found'
+    expect_last_line "0 passed, 2 failed"
+    ;;
+  *)
+    echo "unknown case $case_name"
+    exit 1
+    ;;
+esac
+echo "passed: $case_name"

@@ -1,0 +1,80 @@
+#!/usr/bin/env bash
+# Opens a generated report in headless Chromium (Debian's chromium, from file://, no network) and
+# checks that the page rendered (its script ran without errors), that every image loaded, that
+# every scene's pixel data for the value readout loaded and decoded, that the readout shows values
+# under the pointer, that the summary table has a row per scene and sorts on a header click, and
+# that the flicker toggle swaps the render. Keeps screenshots:
+#   ARTIFACTS/report/report.png        the page as it opens (1400x1000)
+#   ARTIFACTS/report/report-check.png  every scene opened (?check, 1400x3000)
+# Usage: report_chromium_test.sh CROSSCHECK SOURCE_DIR ARTIFACTS_DIR
+# Exit 0: passed, 1: failed, 77: skipped because chromium is not installed.
+set -uo pipefail
+crosscheck=$1
+src=$2
+artifacts=$3/report
+chromium=$(command -v chromium || command -v chromium-browser) || { echo "SKIPPED: chromium is not installed"; exit 77; }
+rm -rf "$artifacts"
+mkdir -p "$artifacts"
+cd "$src" || exit 1
+
+fail() {
+  echo "FAILED: $*"
+  exit 1
+}
+
+# A suite of the fixtures with Pass (flat_triangle), Fail (depth_slope under the fmuladd rounding
+# lavapipe does not use here), Crash (broken_obj) and Skip (malformed, through expectations).
+case "$(uname -m)" in
+  x86_64 | i?86) if grep -qw fma /proc/cpuinfo; then other_fma=separate; else other_fma=fused; fi ;;
+  aarch64 | arm64) other_fma=separate ;;
+  *) other_fma=fused ;;
+esac
+"$crosscheck" report tests/data/conformance -o "$artifacts/site" --jobs 2 --softraster-fma "$other_fma" \
+  --expectations tests/data/expectations/report.txt >"$artifacts/report.txt" 2>&1
+status=$?
+cat "$artifacts/report.txt"
+[ "$status" -eq 1 ] || fail "report exit status $status, expected 1 (depth_slope fails, broken_obj crashes)"
+[ -s "$artifacts/site/index.html" ] || fail "no index.html"
+[ "$(tail -n 1 "$artifacts/report.txt")" = "1 passed, 2 failed, 1 skipped" ] || fail "unexpected counts line"
+scenes=4
+
+# Offline: the page names no network resource at all.
+if grep -qiE '(src|href)="(https?:)?//' "$artifacts/site/index.html"; then fail "index.html refers to the network"; fi
+
+page="file://$(cd "$artifacts/site" && pwd)/index.html"
+browse() {
+  local profile
+  profile=$(mktemp -d)
+  timeout 120 "$chromium" --headless --no-sandbox --disable-gpu --disable-quic --no-first-run \
+    --disable-background-networking --disable-component-update --disable-sync --user-data-dir="$profile" \
+    --virtual-time-budget=10000 "$@" 2>>"$artifacts/chromium.log"
+  local rc=$?
+  rm -rf "$profile"
+  return $rc
+}
+
+browse --dump-dom "$page?check" >"$artifacts/dom.html" || fail "chromium failed (see $artifacts/chromium.log)"
+body=$(grep -o '<body[^>]*>' "$artifacts/dom.html" | head -n 1)
+echo "$body"
+attr() { sed -nE "s/.* $1=\"([^\"]*)\".*/\\1/p" <<<"$body"; }
+grep -q 'data-js-errors=' "$artifacts/dom.html" && fail "script errors: $(grep -o 'data-js-errors="[^"]*"' "$artifacts/dom.html")"
+[ "$(attr data-ready)" = 1 ] || fail "the page's script did not run"
+[ "$(attr data-check)" = done ] || fail "the self-check did not finish: '$(attr data-check)'"
+loaded=$(attr data-images-loaded)
+[ "$(attr data-images-failed)" = 0 ] || fail "images failed to load: $(attr data-images-failed-list)"
+# Seven images (soft, vulkan, diff, two depth views, depth diff, flicker) per scene that rendered.
+rendered=2
+[ "$loaded" = "$((7 * rendered))/$((7 * rendered))" ] || fail "images loaded: $loaded, expected $((7 * rendered)) of $((7 * rendered))"
+[ "$(attr data-pixels-loaded)" = "$rendered/$rendered" ] || fail "pixel data loaded: $(attr data-pixels-loaded) $(attr data-pixels-errors)"
+[ "$(attr data-summary-rows)" = "$scenes" ] || fail "summary table has $(attr data-summary-rows) rows, expected $scenes"
+grep -q '<table id="summary"' "$artifacts/dom.html" || fail "no summary table"
+[ "$(attr data-sort-probe)" = "malformed,flat_triangle,depth_slope,broken_obj" ] ||
+  fail "sorting by scene name, Z to A, gave '$(attr data-sort-probe)'"
+[ "$(attr data-flicker-probe)" = "depth_slope/vulkan.png" ] || fail "the flicker swap showed '$(attr data-flicker-probe)'"
+attr data-readout | grep -qE '^x [0-9]+, y [0-9]+  \|  softraster RGBA [0-9 ]+  \|  Vulkan RGBA [0-9 ]+  \|' ||
+  fail "the value readout shows no values: '$(attr data-readout)'"
+
+browse --window-size=1400,1000 --screenshot="$artifacts/report.png" "$page" >/dev/null || fail "no screenshot"
+browse --window-size=1400,3000 --screenshot="$artifacts/report-check.png" "$page?check" >/dev/null || fail "no screenshot"
+[ -s "$artifacts/report.png" ] && [ -s "$artifacts/report-check.png" ] || fail "screenshots are empty"
+echo "passed: $loaded images, $(attr data-pixels-loaded) pixel data files, $scenes rows; screenshots in $artifacts"
