@@ -80,3 +80,48 @@ INSTANTIATE_TEST_SUITE_P(CrossCheck, Scene, ::testing::ValuesIn(sceneNames()),
                          [](const ::testing::TestParamInfo<std::string>& info) { return info.param; });
 
 TEST(CrossCheck, SuiteIsNotEmpty) { EXPECT_GE(sceneNames().size(), 20u); }
+
+// A closed mesh covers every pixel inside its silhouette exactly once (no cracks between shared
+// edges, no double hits): sphere_coverage.json counts fragments in the red channel with additive
+// blending. Checked in both renderers: no count above 1, and no uncovered pixel that cannot be
+// reached from the image border through uncovered pixels (a hole inside the silhouette).
+TEST(Stability, ClosedSphereCoversEachPixelOnce) {
+  std::string error;
+  const auto scene = crosscheck::loadScene(kScenes / "sphere_coverage.json", &error);
+  ASSERT_TRUE(scene) << error;
+  auto vulkan = vkref::Renderer::create({}, &error);
+  ASSERT_TRUE(vulkan) << error;
+  const auto soft = crosscheck::renderSoftraster(*scene, &error);
+  ASSERT_TRUE(soft) << error;
+  const auto reference = crosscheck::renderVulkan(*scene, *vulkan, &error);
+  ASSERT_TRUE(reference) << error;
+  for (const auto* frame : {&*soft, &*reference}) {
+    const int w = static_cast<int>(frame->width), h = static_cast<int>(frame->height);
+    std::vector<std::uint8_t> count(static_cast<std::size_t>(w * h));
+    std::size_t once = 0;
+    for (std::size_t i = 0; i < count.size(); ++i) {
+      count[i] = frame->rgba[4 * i];
+      ASSERT_LE(count[i], 1) << "pixel (" << i % w << ", " << i / w << ") hit " << int{count[i]} << " times";
+      once += count[i];
+    }
+    std::vector<bool> outside(count.size(), false);
+    std::vector<int> stack;
+    for (int x = 0; x < w; ++x) stack.insert(stack.end(), {x, (h - 1) * w + x});
+    for (int y = 0; y < h; ++y) stack.insert(stack.end(), {y * w, y * w + w - 1});
+    while (!stack.empty()) {
+      const int i = stack.back();
+      stack.pop_back();
+      if (outside[static_cast<std::size_t>(i)] || count[static_cast<std::size_t>(i)] != 0) continue;
+      outside[static_cast<std::size_t>(i)] = true;
+      const int x = i % w, y = i / w;
+      if (x > 0) stack.push_back(i - 1);
+      if (x + 1 < w) stack.push_back(i + 1);
+      if (y > 0) stack.push_back(i - w);
+      if (y + 1 < h) stack.push_back(i + w);
+    }
+    for (std::size_t i = 0; i < count.size(); ++i) {
+      ASSERT_TRUE(count[i] == 1 || outside[i]) << "crack at (" << i % w << ", " << i / w << ")";
+    }
+    EXPECT_GT(once, 20000u) << "the sphere should cover a disc of radius ~95 px";
+  }
+}

@@ -380,3 +380,13 @@ scene("camera_yaw_pitch.json", "A pinhole camera inside the room turned with yaw
       framebuffer={"width": 320, "height": 240, "clear_colour": [0, 0, 0, 1]},
       camera={"type": "pinhole", "position": [0.2, 0.3, -0.5], "yaw": -35, "pitch": 15, "focal_length": 140,
               "near": 0.05, "far": 10})
+
+# ---- a closed mesh covers every pixel inside its silhouette exactly once ----
+scene("sphere_coverage.json", "A closed sphere of 9800 triangles with back faces culled, depth test off and "
+      "additive blending of 1/255 per fragment: every pixel's red channel counts the fragments that hit it, and "
+      "must be exactly 1 inside the silhouette (no cracks, no double hits on shared edges) in both renderers.",
+      [{"name": "sphere", "obj": "meshes/sphere.obj", "colour": [1 / 255, 1 / 255, 1 / 255, 1 / 255],
+        "cull": "back", "depth_test": False, "blend": {"source": "one", "destination": "one"}}],
+      framebuffer={"width": 256, "height": 256, "clear_colour": [0, 0, 0, 0]},
+      camera={"type": "pinhole", "position": [0.013, -0.021, -3.2], "yaw": 1.3, "pitch": -0.7, "focal_length": 300,
+              "near": 0.5, "far": 10})
