@@ -37,10 +37,12 @@ struct CommonOptions {
   std::string device;
   bool validation = false;
   std::string fma = "auto";
+  std::string softrasterDepth = "z";  // render only: "inverse-z" is the course's 1/z buffer
 
   softraster::ContextOptions softraster() const {
     softraster::ContextOptions options;
     if (fma != "auto") options.fusedMultiplyAdd = fma == "fused";
+    if (softrasterDepth == "inverse-z") options.depthMode = softraster::DepthMode::InverseZ;
     return options;
   }
 };
@@ -139,6 +141,10 @@ int main(int argc, char** argv) {
   render->add_option("--renderer", renderer, "soft or vulkan")->check(CLI::IsMember({"soft", "vulkan"}));
   render->add_option("-o,--output", output, "Colour PNG to write")->required();
   render->add_option("--depth-out", depthOutput, "Depth view PNG to write");
+  render->add_option("--softraster-depth", common.softrasterDepth,
+                     "softraster's depth buffer: z (Vulkan's z/w, default) or inverse-z (the course's 1/z buffer, "
+                     "not a Vulkan mode)")
+      ->check(CLI::IsMember({"z", "inverse-z"}));
   render->add_option("--depth-range", depthRange, "Depth mapped to black..white (LO HI); default: the image's range")
       ->expected(2);
   addCommon(render);

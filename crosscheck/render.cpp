@@ -76,7 +76,9 @@ std::optional<Frame> renderSoftraster(const Scene& scene, std::string* error,
                                      const softraster::ContextOptions& options) {
   const auto start = Clock::now();
   softraster::Framebuffer framebuffer(scene.width, scene.height, scene.depthFormat);
-  framebuffer.clear(scene.clearColour, scene.clearDepth);
+  // The 1/z buffer is cleared to 0 (infinitely far); it is not a Vulkan mode.
+  framebuffer.clear(scene.clearColour,
+                    options.depthMode == softraster::DepthMode::InverseZ ? 0.0f : scene.clearDepth);
   const softraster::Context context(options);
   for (const Draw& draw : scene.draws) {
     const softraster::Status status = withShader(draw.shading, [&](auto shader) {

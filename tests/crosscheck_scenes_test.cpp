@@ -10,6 +10,8 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cmath>
+#include <cstdio>
 #include <filesystem>
 #include <memory>
 #include <string>
@@ -124,4 +126,42 @@ TEST(Stability, ClosedSphereCoversEachPixelOnce) {
     }
     EXPECT_GT(once, 20000u) << "the sphere should cover a disc of radius ~95 px";
   }
+}
+
+// The course's 1/z depth buffer (softraster only, not a Vulkan mode): it holds 1/w, which Vulkan's
+// z/w buffer determines too: z = A + B/w with A = far/(far-near), B = -near*far/(far-near).
+// It resolves visibility like z/w except where surfaces are nearly at the same depth.
+TEST(DepthModes, InverseZBufferHoldsOneOverZ) {
+  std::string error;
+  const auto scene = crosscheck::loadScene(kScenes / "room.json", &error);
+  ASSERT_TRUE(scene) << error;
+  auto vulkan = vkref::Renderer::create({}, &error);
+  ASSERT_TRUE(vulkan) << error;
+  softraster::ContextOptions options;
+  options.depthMode = softraster::DepthMode::InverseZ;
+  const auto inverse = crosscheck::renderSoftraster(*scene, &error, options);
+  ASSERT_TRUE(inverse) << error;
+  const auto reference = crosscheck::renderVulkan(*scene, *vulkan, &error);
+  ASSERT_TRUE(reference) << error;
+  const double nearPlane = 0.05, farPlane = 10;  // room.json's camera
+  const double a = farPlane / (farPlane - nearPlane), b = -nearPlane * farPlane / (farPlane - nearPlane);
+  std::size_t covered = 0, colourDiffers = 0;
+  double worst = 0;
+  for (std::size_t i = 0; i < inverse->depth.size(); ++i) {
+    const bool coveredInverse = inverse->depth[i] != 0.0f, coveredReference = reference->depth[i] != 1.0f;
+    ASSERT_EQ(coveredInverse, coveredReference) << "pixel " << i;
+    if (!coveredInverse) continue;
+    ++covered;
+    colourDiffers += !std::equal(inverse->rgba.begin() + 4 * i, inverse->rgba.begin() + 4 * i + 4,
+                                 reference->rgba.begin() + 4 * i);
+    const double oneOverZ = (reference->depth[i] - a) / b;
+    worst = std::max(worst, std::fabs(inverse->depth[i] - oneOverZ) / oneOverZ);
+  }
+  ::testing::Test::RecordProperty("colour_pixels_differing", std::to_string(colourDiffers));
+  ::testing::Test::RecordProperty("worst_relative_one_over_z_error", std::to_string(worst));
+  EXPECT_GT(covered, 10000u);
+  EXPECT_LT(worst, 2e-4) << "the 1/z buffer should hold 1/w to float precision of the z/w reference";
+  EXPECT_LE(colourDiffers, covered / 1000) << colourDiffers << " of " << covered << " pixels resolve differently";
+  std::printf("1/z buffer: %zu of %zu covered pixels differ in colour from z/w; worst relative 1/z error %.3g\n",
+              colourDiffers, covered, worst);
 }

@@ -26,6 +26,7 @@
 #include <softraster/status.hpp>
 
 #include <algorithm>
+#include <bit>
 #include <cmath>
 #include <cstdint>
 #include <span>
@@ -34,9 +35,19 @@
 
 namespace softraster {
 
+// What the depth buffer holds.
+//   Vulkan:   window z (z/w mapped to the viewport's depth range), as Vulkan and lavapipe do.
+//   InverseZ: the course's 1/z buffer: 1/w (w = camera-space depth for perspective cameras),
+//             interpolated linearly in screen space; NOT a Vulkan mode, so it is never
+//             cross-checked bit for bit, only charted. Clear the depth buffer to 0 (infinitely
+//             far); compare ops keep their meaning in distance (LESS passes the nearer fragment,
+//             i.e. the larger 1/z). Needs D32_SFLOAT; the viewport depth range does not apply.
+enum class DepthMode : std::uint8_t { Vulkan, InverseZ };
+
 struct ContextOptions {
   // How lavapipe's fmuladd rounds on the machine being matched: fused where the CPU has FMA.
   bool fusedMultiplyAdd = detail::cpuHasFma();
+  DepthMode depthMode = DepthMode::Vulkan;
 };
 
 class Context {
@@ -76,9 +87,9 @@ class Context {
                         Framebuffer& framebuffer) const;
 
   template <class Shader, bool Fused, DepthFormat Format>
-  static void drawWithFormat(const PipelineState& state, const typename Shader::Uniforms& uniforms,
-                             std::span<const typename Shader::Vertex> vertices, std::span<const std::uint32_t> indices,
-                             Framebuffer& framebuffer);
+  void drawWithFormat(const PipelineState& state, const typename Shader::Uniforms& uniforms,
+                      std::span<const typename Shader::Vertex> vertices, std::span<const std::uint32_t> indices,
+                      Framebuffer& framebuffer) const;
 
   ContextOptions options_;
 };
@@ -115,6 +126,9 @@ Status Context::drawPrimitives(const PipelineState& state, const typename Shader
   static_assert(Shader::kVaryings >= 0 && Shader::kVaryings <= kMaxVaryings, "too many varyings");
   if (framebuffer.width() == 0 || framebuffer.height() == 0) return Status::error("framebuffer has no pixels");
   if (state.topology > Topology::TriangleFan) return Status::error("unknown topology");
+  if (options_.depthMode == DepthMode::InverseZ && framebuffer.depthFormat() != DepthFormat::D32Sfloat) {
+    return Status::error("the 1/z depth buffer needs a D32_SFLOAT framebuffer");
+  }
   if (!(state.rasterization.lineWidth >= 1.0f)) return Status::error("line width must be at least 1");
   if (state.rasterization.polygonMode != PolygonMode::Fill && state.rasterization.depthBias.enable) {
     return Status::error("depth bias with polygon mode line or point is not supported by softraster yet");
@@ -140,7 +154,7 @@ Status Context::drawPrimitives(const PipelineState& state, const typename Shader
 template <class Shader, bool Fused, DepthFormat Format>
 void Context::drawWithFormat(const PipelineState& state, const typename Shader::Uniforms& uniforms,
                              std::span<const typename Shader::Vertex> vertices, std::span<const std::uint32_t> indices,
-                             Framebuffer& framebuffer) {
+                             Framebuffer& framebuffer) const {
   constexpr int N = Shader::kVaryings;
   constexpr InterpolationSet<N> interpolation = interpolationOf<Shader>();
   using Vertex = detail::ShadedVertex<N>;
@@ -150,6 +164,7 @@ void Context::drawWithFormat(const PipelineState& state, const typename Shader::
   const detail::PixelRect region = drawRegion(state.scissor, viewport, framebuffer);
   if (region.empty()) return;
   const detail::DepthRange depthRange = detail::fragmentDepthRange(viewport, rs.depthClampEnable);
+  const bool inverseZ = options_.depthMode == DepthMode::InverseZ;
   const DepthState& ds = state.depth;
   const std::uint32_t width = framebuffer.width();
   std::uint8_t* colour = framebuffer.colour().data();
@@ -162,9 +177,17 @@ void Context::drawWithFormat(const PipelineState& state, const typename Shader::
     detail::rasterizeEdges(edges, bounds, region, [&](int px, int py) {
       const float fx = static_cast<float>(px), fy = static_cast<float>(py);
       const std::size_t pixel = static_cast<std::size_t>(py) * width + static_cast<std::size_t>(px);
-      const float z = detail::clampDepth(detail::interpolateDepth<Fused>(interpolants, fx, fy), depthRange);
-      const std::uint32_t stored = detail::depthToStorage<Format>(z);
-      if (ds.testEnable && !detail::depthTestPasses<Format>(ds.compareOp, stored, depth[pixel])) return;
+      std::uint32_t stored;
+      bool passes;
+      if (inverseZ) {  // the course's 1/z buffer: larger is nearer, so compare the other way round
+        stored = std::bit_cast<std::uint32_t>(detail::evaluatePlane<Fused>(interpolants.oneOverW, fx, fy));
+        passes = detail::depthTestPasses<Format>(ds.compareOp, depth[pixel], stored);
+      } else {
+        const float z = detail::clampDepth(detail::interpolateDepth<Fused>(interpolants, fx, fy), depthRange);
+        stored = detail::depthToStorage<Format>(z);
+        passes = detail::depthTestPasses<Format>(ds.compareOp, stored, depth[pixel]);
+      }
+      if (ds.testEnable && !passes) return;
       detail::interpolateVaryings<Fused>(interpolants, interpolation, fx, fy, varyings.data());
       detail::blendColour(colour + 4 * pixel, Shader::fragment(uniforms, varyings.data()), state.blend);
       if (ds.testEnable && ds.writeEnable) depth[pixel] = stored;
