@@ -75,7 +75,7 @@ std::vector<std::byte> bytesOf(const T* data, std::size_t count) {
 std::optional<Frame> renderSoftraster(const Scene& scene, std::string* error,
                                      const softraster::ContextOptions& options) {
   const auto start = Clock::now();
-  softraster::Framebuffer framebuffer(scene.width, scene.height, scene.depthFormat);
+  softraster::Framebuffer framebuffer(scene.width, scene.height, scene.depthFormat, scene.samples);
   // The 1/z buffer is cleared to 0 (infinitely far); it is not a Vulkan mode.
   framebuffer.clear(scene.clearColour,
                     options.depthMode == softraster::DepthMode::InverseZ ? 0.0f : scene.clearDepth);
@@ -93,6 +93,7 @@ std::optional<Frame> renderSoftraster(const Scene& scene, std::string* error,
       return std::nullopt;
     }
   }
+  if (framebuffer.samples() > 1) framebuffer = framebuffer.resolve();  // as vkref reads Vulkan's back
   Frame frame;
   frame.milliseconds = millisecondsSince(start);
   frame.width = scene.width;
@@ -114,6 +115,7 @@ std::optional<Frame> renderVulkan(const Scene& scene, vkref::Renderer& renderer,
   request.clearColour = {scene.clearColour.x, scene.clearColour.y, scene.clearColour.z, scene.clearColour.w};
   request.clearDepth = scene.clearDepth;
   request.depthFormat = scene.depthFormat;
+  request.samples = scene.samples;
   for (const Draw& draw : scene.draws) {
     vkref::DrawCall call;
     call.program = &programs.emplace_back(programFor(draw.shading));

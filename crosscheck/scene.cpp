@@ -347,7 +347,9 @@ Scene readScene(json& document, const std::filesystem::path& path, const std::ve
 
   if (document.contains("framebuffer")) {
     const json& fb = document["framebuffer"];
-    checkKeys(fb, "/framebuffer", {"width", "height", "clear_colour", "clear_depth", "depth_format"});
+    checkKeys(fb, "/framebuffer", {"width", "height", "clear_colour", "clear_depth", "depth_format", "samples"});
+    scene.samples = static_cast<std::uint32_t>(readCount(fb, "samples", "/framebuffer", 1));
+    if (scene.samples != 1 && scene.samples != 4) throw SceneError("/framebuffer/samples", "must be 1 or 4");
     scene.depthFormat = readEnum(fb, "depth_format", "/framebuffer", scene.depthFormat,
                                  {{"d16_unorm", softraster::DepthFormat::D16Unorm},
                                   {"x8_d24_unorm", softraster::DepthFormat::X8D24UnormPack32},

@@ -47,6 +47,7 @@ struct Scene {
   softraster::Vec4 clearColour{0, 0, 0, 1};
   float clearDepth = 1.0f;
   softraster::DepthFormat depthFormat = softraster::DepthFormat::D32Sfloat;
+  std::uint32_t samples = 1;  // 1 or 4 (MSAA: compared after the resolve; depth via sample 0)
   softraster::Mat4 viewProjection = softraster::Mat4::identity();
   std::vector<Draw> draws;
   Tolerance tolerance;

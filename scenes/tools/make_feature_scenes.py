@@ -390,3 +390,21 @@ scene("sphere_coverage.json", "A closed sphere of 9800 triangles with back faces
       framebuffer={"width": 256, "height": 256, "clear_colour": [0, 0, 0, 0]},
       camera={"type": "pinhole", "position": [0.013, -0.021, -3.2], "yaw": 1.3, "pitch": -0.7, "focal_length": 300,
               "near": 0.5, "far": 10})
+
+# ---- 4x MSAA ----
+msaa_fb = {"width": 160, "height": 120, "clear_colour": [0.1, 0.1, 0.1, 1], "samples": 4}
+scene("msaa_room.json", "4x MSAA on the room with two boxes: coverage and depth per sample at Vulkan's standard "
+      "positions, one shading per pixel, colour resolved by averaging (as lavapipe's resolve blit: float sum in "
+      "sample order times 0.25), depth compared through sample 0 (VK_RESOLVE_MODE_SAMPLE_ZERO).",
+      [{"name": "cornell_box", "obj": "meshes/cornell_box.obj", "cull": "back"}], framebuffer=msaa_fb,
+      camera={"type": "pinhole", "position": [0, -0.45, -0.98], "pitch": -20, "focal_length": 60, "near": 0.05,
+              "far": 10})
+scene("msaa_triangles.json", "4x MSAA on thin, intersecting and overlapping triangles with per-vertex colours: edge "
+      "pixels with 1, 2 or 3 covered samples, intersection lines resolved per sample by depth, a sub-pixel triangle "
+      "that covers a sample without covering the pixel centre.",
+      [draw("slanted A", [at(10, 20, 1.0), at(10, 180, 6.0), at(240, 100, 1.5)], rainbow(3)),
+       draw("slanted B", [at(240, 20, 6.0), at(30, 100, 1.2), at(240, 180, 1.0)], rainbow(3, 2)),
+       draw("needle", [at(20, 5, 2), at(250, 12, 2), at(20, 6.2, 2)], rainbow(3, 4), cull="none"),
+       draw("sub-pixel", [at(200.3, 150.05, 2), at(200.45, 150.05, 2), at(200.3, 150.2, 2)], [[1, 1, 1]] * 3,
+            cull="none")],
+      framebuffer=dict(FRAMEBUFFER, samples=4))

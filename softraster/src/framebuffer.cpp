@@ -14,12 +14,29 @@ std::uint32_t depthClearValue(DepthFormat format, float depth) {
   return static_cast<std::uint32_t>(std::lrint(static_cast<double>(depth) * ((1u << bits) - 1)));
 }
 
-Framebuffer::Framebuffer(std::uint32_t width, std::uint32_t height, DepthFormat depthFormat)
+Framebuffer::Framebuffer(std::uint32_t width, std::uint32_t height, DepthFormat depthFormat, std::uint32_t samples)
     : width_(width),
       height_(height),
+      samples_(samples),
       depthFormat_(depthFormat),
-      colour_(static_cast<std::size_t>(width) * height * 4, 0),
-      depth_(static_cast<std::size_t>(width) * height, 0) {}
+      colour_(static_cast<std::size_t>(width) * height * samples * 4, 0),
+      depth_(static_cast<std::size_t>(width) * height * samples, 0) {}
+
+Framebuffer Framebuffer::resolve() const {
+  Framebuffer out(width_, height_, depthFormat_, 1);
+  const std::size_t pixels = static_cast<std::size_t>(width_) * height_;
+  const float toFloat = static_cast<float>(1.0 / 255.0);  // how lavapipe's texel fetch converts UNORM8
+  const float average = 1.0f / static_cast<float>(samples_);
+  for (std::size_t p = 0; p < pixels; ++p) {
+    for (int c = 0; c < 4; ++c) {
+      float sum = 0.0f;
+      for (std::uint32_t s = 0; s < samples_; ++s) sum = sum + static_cast<float>(colour_[(p * samples_ + s) * 4 + c]) * toFloat;
+      out.colour_[p * 4 + c] = samples_ == 1 ? colour_[p * 4 + c] : detail::unorm8FromFloat(sum * average);
+    }
+    out.depth_[p] = depth_[p * samples_];
+  }
+  return out;
+}
 
 void Framebuffer::clear(Vec4 colour, float depth) {
   std::uint8_t rgba[4];
@@ -30,10 +47,10 @@ void Framebuffer::clear(Vec4 colour, float depth) {
   std::fill(depth_.begin(), depth_.end(), depthClearValue(depthFormat_, depth));
 }
 
-float Framebuffer::depth(std::size_t pixel) const {
+float Framebuffer::depth(std::size_t sample) const {
   const int bits = unormDepthBits(depthFormat_);
-  if (bits == 0) return std::bit_cast<float>(depth_[pixel]);
-  return static_cast<float>(static_cast<double>(depth_[pixel]) / ((1u << bits) - 1));
+  if (bits == 0) return std::bit_cast<float>(depth_[sample]);
+  return static_cast<float>(static_cast<double>(depth_[sample]) / ((1u << bits) - 1));
 }
 
 }  // namespace softraster

@@ -227,7 +227,8 @@ struct Frame {
 
   // A single-sample, optimally tiled 2D image (device-local where possible) and a view of it.
   Image* createImage(VkFormat format, VkImageUsageFlags usage, VkImageAspectFlags aspect, std::uint32_t width,
-                     std::uint32_t height, std::string* error) {
+                     std::uint32_t height, std::string* error,
+                     VkSampleCountFlagBits samples = VK_SAMPLE_COUNT_1_BIT) {
     Image& i = images.emplace_back();
     const VkImageCreateInfo info{.sType = VK_STRUCTURE_TYPE_IMAGE_CREATE_INFO,
                                  .imageType = VK_IMAGE_TYPE_2D,
@@ -235,7 +236,7 @@ struct Frame {
                                  .extent = {width, height, 1},
                                  .mipLevels = 1,
                                  .arrayLayers = 1,
-                                 .samples = VK_SAMPLE_COUNT_1_BIT,
+                                 .samples = samples,
                                  .tiling = VK_IMAGE_TILING_OPTIMAL,
                                  .usage = usage,
                                  .sharingMode = VK_SHARING_MODE_EXCLUSIVE,
@@ -339,7 +340,8 @@ std::string checkDraw(const DrawCall& d, std::uint32_t width, std::uint32_t heig
 }
 
 bool createPipeline(VkDevice device, VkPipelineLayout layout, const DrawCall& d, std::uint32_t width,
-                    std::uint32_t height, VkFormat depthFormat, VkPipeline* out, std::string* error) {
+                    std::uint32_t height, VkFormat depthFormat, VkSampleCountFlagBits samples, VkPipeline* out,
+                    std::string* error) {
   const ShaderProgram& p = *d.program;
   const std::span<const std::uint32_t> code[2] = {p.vertexSpirv, p.fragmentSpirv};
   VkShaderModule modules[2] = {VK_NULL_HANDLE, VK_NULL_HANDLE};
@@ -402,7 +404,7 @@ bool createPipeline(VkDevice device, VkPipelineLayout layout, const DrawCall& d,
       rasterization.pNext = &lineState;
     const VkPipelineMultisampleStateCreateInfo multisample{
         .sType = VK_STRUCTURE_TYPE_PIPELINE_MULTISAMPLE_STATE_CREATE_INFO,
-        .rasterizationSamples = VK_SAMPLE_COUNT_1_BIT};
+        .rasterizationSamples = samples};
     const VkPipelineDepthStencilStateCreateInfo depth{
         .sType = VK_STRUCTURE_TYPE_PIPELINE_DEPTH_STENCIL_STATE_CREATE_INFO,
         .depthTestEnable = d.state.depth.testEnable ? VK_TRUE : VK_FALSE,
@@ -692,6 +694,12 @@ bool Renderer::render(const FrameRequest& request, FrameImages* out, std::string
   if (depthIndex >= std::size(kDepthFormats) || !im.depthFormatUsable[depthIndex])
     return fail(error, "depth format " + std::to_string(depthIndex) + " cannot be rendered to and copied on this device");
   const VkFormat depthFormat = kDepthFormats[depthIndex];
+  if (request.samples != 1 && request.samples != 4) return fail(error, "sample count must be 1 or 4");
+  const bool multisample = request.samples == 4;
+  const VkSampleCountFlagBits samples = multisample ? VK_SAMPLE_COUNT_4_BIT : VK_SAMPLE_COUNT_1_BIT;
+  if (multisample && (!(im.limits.framebufferColorSampleCounts & VK_SAMPLE_COUNT_4_BIT) ||
+                      !(im.limits.framebufferDepthSampleCounts & VK_SAMPLE_COUNT_4_BIT)))
+    return fail(error, "the device cannot render 4x multisampled colour and depth");
   const std::uint32_t depthTexelBytes = kDepthTexelBytes[depthIndex];
   const std::vector<DrawCall>& draws = request.draws;
   for (std::size_t i = 0; i < draws.size(); ++i) {
@@ -709,6 +717,17 @@ bool Renderer::render(const FrameRequest& request, FrameImages* out, std::string
                                    VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT,
                                    VK_IMAGE_ASPECT_DEPTH_BIT, width, height, error);
   if (!depth) return false;
+  // With MSAA these two single-sample images receive the resolves of the multisampled ones.
+  Image* msColour = nullptr;
+  Image* msDepth = nullptr;
+  if (multisample) {
+    msColour = frame.createImage(kColourFormat, VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT, VK_IMAGE_ASPECT_COLOR_BIT, width,
+                                 height, error, samples);
+    if (!msColour) return false;
+    msDepth = frame.createImage(depthFormat, VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT, VK_IMAGE_ASPECT_DEPTH_BIT,
+                                width, height, error, samples);
+    if (!msDepth) return false;
+  }
   Buffer* colourOut = frame.createBuffer(pixels * 4, VK_BUFFER_USAGE_TRANSFER_DST_BIT, error);
   if (!colourOut) return false;
   Buffer* depthOut = frame.createBuffer(pixels * depthTexelBytes, VK_BUFFER_USAGE_TRANSFER_DST_BIT, error);
@@ -735,7 +754,7 @@ bool Renderer::render(const FrameRequest& request, FrameImages* out, std::string
       if (prepared[j].pipeline && pipelineKey(draws[j]) == pipelineKey(d)) prepared[i].pipeline = prepared[j].pipeline;
     if (!prepared[i].pipeline) {
       VkPipeline& pipeline = frame.pipelines.emplace_back(VK_NULL_HANDLE);
-      if (!createPipeline(im.device, frame.layout, d, width, height, depthFormat, &pipeline, error))
+      if (!createPipeline(im.device, frame.layout, d, width, height, depthFormat, samples, &pipeline, error))
         return fail(error, "draw " + std::to_string(i) + " (program '" + d.program->name + "'): " + *error);
       prepared[i].pipeline = pipeline;
     }
@@ -768,26 +787,46 @@ bool Renderer::render(const FrameRequest& request, FrameImages* out, std::string
 
   constexpr VkPipelineStageFlags2 depthStages =
       VK_PIPELINE_STAGE_2_EARLY_FRAGMENT_TESTS_BIT | VK_PIPELINE_STAGE_2_LATE_FRAGMENT_TESTS_BIT;
-  const VkImageMemoryBarrier2 toAttachments[2] = {
-      imageBarrier(colour->image, VK_IMAGE_ASPECT_COLOR_BIT, VK_PIPELINE_STAGE_2_NONE, VK_ACCESS_2_NONE,
-                   VK_PIPELINE_STAGE_2_COLOR_ATTACHMENT_OUTPUT_BIT, VK_ACCESS_2_COLOR_ATTACHMENT_WRITE_BIT,
-                   VK_IMAGE_LAYOUT_UNDEFINED, VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL),
-      imageBarrier(depth->image, VK_IMAGE_ASPECT_DEPTH_BIT, VK_PIPELINE_STAGE_2_NONE, VK_ACCESS_2_NONE, depthStages,
-                   VK_ACCESS_2_DEPTH_STENCIL_ATTACHMENT_READ_BIT | VK_ACCESS_2_DEPTH_STENCIL_ATTACHMENT_WRITE_BIT,
-                   VK_IMAGE_LAYOUT_UNDEFINED, VK_IMAGE_LAYOUT_DEPTH_STENCIL_ATTACHMENT_OPTIMAL)};
+  // A depth resolve writes in the colour-attachment-output stage.
+  constexpr VkPipelineStageFlags2 depthWriteStages = depthStages | VK_PIPELINE_STAGE_2_COLOR_ATTACHMENT_OUTPUT_BIT;
+  constexpr VkAccessFlags2 depthWriteAccess =
+      VK_ACCESS_2_DEPTH_STENCIL_ATTACHMENT_WRITE_BIT | VK_ACCESS_2_COLOR_ATTACHMENT_WRITE_BIT;
+  std::vector<VkImageMemoryBarrier2> toAttachments;
+  for (Image* image : {colour, msColour}) {
+    if (image)
+      toAttachments.push_back(imageBarrier(image->image, VK_IMAGE_ASPECT_COLOR_BIT, VK_PIPELINE_STAGE_2_NONE,
+                                           VK_ACCESS_2_NONE, VK_PIPELINE_STAGE_2_COLOR_ATTACHMENT_OUTPUT_BIT,
+                                           VK_ACCESS_2_COLOR_ATTACHMENT_WRITE_BIT, VK_IMAGE_LAYOUT_UNDEFINED,
+                                           VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL));
+  }
+  for (Image* image : {depth, msDepth}) {
+    if (image)
+      toAttachments.push_back(imageBarrier(
+          image->image, VK_IMAGE_ASPECT_DEPTH_BIT, VK_PIPELINE_STAGE_2_NONE, VK_ACCESS_2_NONE, depthWriteStages,
+          VK_ACCESS_2_DEPTH_STENCIL_ATTACHMENT_READ_BIT | depthWriteAccess, VK_IMAGE_LAYOUT_UNDEFINED,
+          VK_IMAGE_LAYOUT_DEPTH_STENCIL_ATTACHMENT_OPTIMAL));
+  }
   barrier(cmd, toAttachments);
 
   const auto& c = request.clearColour;
-  const VkRenderingAttachmentInfo colourAttachment{.sType = VK_STRUCTURE_TYPE_RENDERING_ATTACHMENT_INFO,
-                                                   .imageView = colour->view,
-                                                   .imageLayout = VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL,
-                                                   .loadOp = VK_ATTACHMENT_LOAD_OP_CLEAR,
+  const VkRenderingAttachmentInfo colourAttachment{
+      .sType = VK_STRUCTURE_TYPE_RENDERING_ATTACHMENT_INFO,
+      .imageView = multisample ? msColour->view : colour->view,
+      .imageLayout = VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL,
+      .resolveMode = multisample ? VK_RESOLVE_MODE_AVERAGE_BIT : VK_RESOLVE_MODE_NONE,
+      .resolveImageView = multisample ? colour->view : VK_NULL_HANDLE,
+      .resolveImageLayout = VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL,
+      .loadOp = VK_ATTACHMENT_LOAD_OP_CLEAR,
                                                    .storeOp = VK_ATTACHMENT_STORE_OP_STORE,
                                                    .clearValue = {.color = {.float32 = {c[0], c[1], c[2], c[3]}}}};
-  const VkRenderingAttachmentInfo depthAttachment{.sType = VK_STRUCTURE_TYPE_RENDERING_ATTACHMENT_INFO,
-                                                  .imageView = depth->view,
-                                                  .imageLayout = VK_IMAGE_LAYOUT_DEPTH_STENCIL_ATTACHMENT_OPTIMAL,
-                                                  .loadOp = VK_ATTACHMENT_LOAD_OP_CLEAR,
+  const VkRenderingAttachmentInfo depthAttachment{
+      .sType = VK_STRUCTURE_TYPE_RENDERING_ATTACHMENT_INFO,
+      .imageView = multisample ? msDepth->view : depth->view,
+      .imageLayout = VK_IMAGE_LAYOUT_DEPTH_STENCIL_ATTACHMENT_OPTIMAL,
+      .resolveMode = multisample ? VK_RESOLVE_MODE_SAMPLE_ZERO_BIT : VK_RESOLVE_MODE_NONE,
+      .resolveImageView = multisample ? depth->view : VK_NULL_HANDLE,
+      .resolveImageLayout = VK_IMAGE_LAYOUT_DEPTH_STENCIL_ATTACHMENT_OPTIMAL,
+      .loadOp = VK_ATTACHMENT_LOAD_OP_CLEAR,
                                                   .storeOp = VK_ATTACHMENT_STORE_OP_STORE,
                                                   .clearValue = {.depthStencil = {request.clearDepth, 0}}};
   const VkRenderingInfo renderingInfo{.sType = VK_STRUCTURE_TYPE_RENDERING_INFO,
@@ -821,7 +860,7 @@ bool Renderer::render(const FrameRequest& request, FrameImages* out, std::string
       imageBarrier(colour->image, VK_IMAGE_ASPECT_COLOR_BIT, VK_PIPELINE_STAGE_2_COLOR_ATTACHMENT_OUTPUT_BIT,
                    VK_ACCESS_2_COLOR_ATTACHMENT_WRITE_BIT, VK_PIPELINE_STAGE_2_COPY_BIT, VK_ACCESS_2_TRANSFER_READ_BIT,
                    VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL),
-      imageBarrier(depth->image, VK_IMAGE_ASPECT_DEPTH_BIT, depthStages, VK_ACCESS_2_DEPTH_STENCIL_ATTACHMENT_WRITE_BIT,
+      imageBarrier(depth->image, VK_IMAGE_ASPECT_DEPTH_BIT, depthWriteStages, depthWriteAccess,
                    VK_PIPELINE_STAGE_2_COPY_BIT, VK_ACCESS_2_TRANSFER_READ_BIT,
                    VK_IMAGE_LAYOUT_DEPTH_STENCIL_ATTACHMENT_OPTIMAL, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL)};
   barrier(cmd, toTransfer);

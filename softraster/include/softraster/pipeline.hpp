@@ -7,8 +7,10 @@
 // Polygon modes line and point go through the draw-pipeline path for every triangle (clip,
 // float cull, then Mesa's "unfilled" stage: each original edge as a line, each original vertex as
 // a point), as lavapipe does; in point mode x and y are clipped at 2w (measured).
-// Deliberately absent from this slice: depth bias in polygon modes, blending, MSAA, alternative
-// rasterization methods.
+// 4x MSAA: filled triangles only (coverage and depth per sample, one shading per pixel);
+// Framebuffer::resolve() resolves as lavapipe does.
+// Deliberately absent from this slice: MSAA lines, points and polygon modes, depth bias in
+// polygon modes, blend factors beyond ZERO/ONE, alternative rasterization methods.
 #pragma once
 
 #include <softraster/detail/clipping.hpp>
@@ -129,6 +131,12 @@ Status Context::drawPrimitives(const PipelineState& state, const typename Shader
   if (options_.depthMode == DepthMode::InverseZ && framebuffer.depthFormat() != DepthFormat::D32Sfloat) {
     return Status::error("the 1/z depth buffer needs a D32_SFLOAT framebuffer");
   }
+  if (framebuffer.samples() != 1 && framebuffer.samples() != 4) return Status::error("framebuffers have 1 or 4 samples");
+  if (framebuffer.samples() == 4 &&
+      (!detail::isTriangleTopology(state.topology) || state.rasterization.polygonMode != PolygonMode::Fill ||
+       options_.depthMode != DepthMode::Vulkan)) {
+    return Status::error("softraster draws only filled triangles with 4x MSAA so far");
+  }
   if (!(state.rasterization.lineWidth >= 1.0f)) return Status::error("line width must be at least 1");
   if (state.rasterization.polygonMode != PolygonMode::Fill && state.rasterization.depthBias.enable) {
     return Status::error("depth bias with polygon mode line or point is not supported by softraster yet");
@@ -170,6 +178,8 @@ void Context::drawWithFormat(const PipelineState& state, const typename Shader::
   std::uint8_t* colour = framebuffer.colour().data();
   std::uint32_t* depth = framebuffer.depthStorage().data();
   std::array<float, (N == 0 ? 1 : N)> varyings{};  // one fragment's inputs (GCC 12 rejects this inside the lambda)
+  const bool multisample = framebuffer.samples() == 4;
+  const float pixelOffset = multisample ? 0.0f : detail::kPixelCentreOffset;
 
   // Fragment work of one primitive: depth, depth test, shading, writes, for every covered pixel.
   auto shadeFragments = [&](const auto& edges, const detail::PixelRect& bounds,
@@ -191,6 +201,38 @@ void Context::drawWithFormat(const PipelineState& state, const typename Shader::
       detail::interpolateVaryings<Fused>(interpolants, interpolation, fx, fy, varyings.data());
       detail::blendColour(colour + 4 * pixel, Shader::fragment(uniforms, varyings.data()), state.blend);
       if (ds.testEnable && ds.writeEnable) depth[pixel] = stored;
+    });
+  };
+
+  // 4x MSAA (filled triangles): coverage and depth per sample, the fragment shaded once at the
+  // pixel centre, its colour written to the samples that are covered and pass the depth test.
+  auto shadeSamples = [&](const auto& edges, const detail::PixelRect& bounds,
+                          const detail::TriangleInterpolants<N>& interpolants) {
+    detail::rasterizeEdgesSampled(edges, bounds, region, [&](int px, int py, unsigned mask) {
+      const float fx = static_cast<float>(px), fy = static_cast<float>(py);
+      const std::size_t pixel = static_cast<std::size_t>(py) * width + static_cast<std::size_t>(px);
+      std::uint32_t stored[4];
+      unsigned passed = 0;
+      for (int s = 0; s < 4; ++s) {
+        if (!(mask & (1u << s))) continue;
+        const float z = detail::clampDepth(
+            detail::interpolateDepth<Fused>(interpolants, fx + detail::kSamplePositions4x[s][0],
+                                            fy + detail::kSamplePositions4x[s][1]),
+            depthRange);
+        stored[s] = detail::depthToStorage<Format>(z);
+        if (!ds.testEnable || detail::depthTestPasses<Format>(ds.compareOp, stored[s], depth[pixel * 4 + static_cast<std::size_t>(s)])) {
+          passed |= 1u << s;
+        }
+      }
+      if (passed == 0) return;
+      detail::interpolateVaryings<Fused>(interpolants, interpolation, fx + 0.5f, fy + 0.5f, varyings.data());
+      const Vec4 c = Shader::fragment(uniforms, varyings.data());
+      for (int s = 0; s < 4; ++s) {
+        if (!(passed & (1u << s))) continue;
+        const std::size_t sample = pixel * 4 + static_cast<std::size_t>(s);
+        detail::blendColour(colour + 4 * sample, c, state.blend);
+        if (ds.testEnable && ds.writeEnable) depth[sample] = stored[s];
+      }
     });
   };
 
@@ -258,7 +300,7 @@ void Context::drawWithFormat(const PipelineState& state, const typename Shader::
   };
   // Setup and fragments of one triangle (after clipping and culling).
   auto drawTriangle = [&](const Vertex& a, const Vertex& b, const Vertex& c) {
-    detail::FixedTriangle fixed = detail::snapTriangle(a.window, b.window, c.window);
+    detail::FixedTriangle fixed = detail::snapTriangle(a.window, b.window, c.window, pixelOffset);
     const int area = detail::fixedAreaSign(fixed);
     if (area == 0 || (area > 0 ? !winding.drawCounterClockwise : !winding.drawClockwise)) return;
     // From here on the triangle is counter-clockwise: a negative one continues as (a, c, b),
@@ -270,8 +312,13 @@ void Context::drawWithFormat(const PipelineState& state, const typename Shader::
       std::swap(fixed.y[1], fixed.y[2]);
     }
     const detail::TriangleEdges edges = detail::setupEdges(fixed);
-    shadeFragments(edges.edges, edges.bounds,
-                   detail::setupInterpolants(a, v1, v2, interpolation, rs.depthBias, Format));
+    const detail::TriangleInterpolants<N> interpolants =
+        detail::setupInterpolants(a, v1, v2, interpolation, rs.depthBias, Format, pixelOffset);
+    if (multisample) {
+      shadeSamples(edges.edges, edges.bounds, interpolants);
+    } else {
+      shadeFragments(edges.edges, edges.bounds, interpolants);
+    }
   };
 
   const std::vector<detail::TriangleIndices> triangles = detail::assembleTriangles(state.topology, indices);

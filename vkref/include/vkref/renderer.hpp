@@ -43,6 +43,8 @@ struct FrameRequest {
   std::array<float, 4> clearColour{0, 0, 0, 0};
   float clearDepth = 1.0f;
   softraster::DepthFormat depthFormat = softraster::DepthFormat::D32Sfloat;
+  std::uint32_t samples = 1;  // 1, or 4: rendered multisampled, colour resolved (average) and
+                              // depth resolved (sample 0) before read-back
   std::vector<DrawCall> draws;
 };
 

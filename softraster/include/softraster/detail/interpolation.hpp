@@ -32,8 +32,9 @@ struct TriangleInterpolants {
 template <int N>
 inline TriangleInterpolants<N> setupInterpolants(const ShadedVertex<N>& v0, const ShadedVertex<N>& v1,
                                                  const ShadedVertex<N>& v2, const InterpolationSet<N>& interpolation,
-                                                 const DepthBias& bias, DepthFormat depthFormat) {
-  const PlaneSetup setup(v0.window, v1.window, v2.window);
+                                                 const DepthBias& bias, DepthFormat depthFormat,
+                                                 float pixelOffset = kPixelCentreOffset) {
+  const PlaneSetup setup(v0.window, v1.window, v2.window, pixelOffset);
   TriangleInterpolants<N> t;
   t.depth = setup.plane(v0.window.z, v1.window.z, v2.window.z);
   t.depthOffset = setup.depthBias(v0.window.z, v1.window.z, v2.window.z, bias, depthFormat);

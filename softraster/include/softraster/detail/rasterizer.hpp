@@ -18,10 +18,11 @@ inline PixelRect intersect(const PixelRect& a, const PixelRect& b) {
   return {std::max(a.x0, b.x0), std::max(a.y0, b.y0), std::min(a.x1, b.x1), std::min(a.y1, b.y1)};
 }
 
-// Calls covered(px, py) for each pixel of bounds ∩ region inside all N edge functions.
-template <int N, class Covered>
-inline void rasterizeEdges(const EdgeFunction (&edges)[N], const PixelRect& bounds, const PixelRect& region,
-                           Covered&& covered) {
+// Calls visit(px, py, values) for every pixel of bounds ∩ region with the N edge values at the
+// pixel, stepped incrementally.
+template <int N, class Visit>
+inline void rasterizeEdgesAt(const EdgeFunction (&edges)[N], const PixelRect& bounds, const PixelRect& region,
+                             Visit&& visit) {
   const PixelRect box = intersect(bounds, region);
   if (box.empty()) return;
   std::int64_t row[N];
@@ -30,13 +31,46 @@ inline void rasterizeEdges(const EdgeFunction (&edges)[N], const PixelRect& boun
     std::int64_t c[N];
     for (int i = 0; i < N; ++i) c[i] = row[i];
     for (int px = box.x0; px <= box.x1; ++px) {
-      bool inside = true;
-      for (int i = 0; i < N; ++i) inside &= c[i] > 0;
-      if (inside) covered(px, py);
+      visit(px, py, c);
       for (int i = 0; i < N; ++i) c[i] -= edges[i].dcdx;
     }
     for (int i = 0; i < N; ++i) row[i] += edges[i].dcdy;
   }
+}
+
+// Calls covered(px, py) for each pixel of bounds ∩ region inside all N edge functions.
+template <int N, class Covered>
+inline void rasterizeEdges(const EdgeFunction (&edges)[N], const PixelRect& bounds, const PixelRect& region,
+                           Covered&& covered) {
+  rasterizeEdgesAt(edges, bounds, region, [&](int px, int py, const std::int64_t (&value)[N]) {
+    bool inside = true;
+    for (int i = 0; i < N; ++i) inside &= value[i] > 0;
+    if (inside) covered(px, py);
+  });
+}
+
+// 4x MSAA: calls covered(px, py, mask) for each pixel of bounds ∩ region with at least one
+// sample inside all N edge functions; bit s of mask is sample s (kFixedSamplePositions4x). The
+// edge value at a sample is the value at the pixel corner plus sy*DX - sx*DY, as lp_rast does.
+template <int N, class Covered>
+inline void rasterizeEdgesSampled(const EdgeFunction (&edges)[N], const PixelRect& bounds, const PixelRect& region,
+                                  Covered&& covered) {
+  std::int64_t sampleOffset[N][4];
+  for (int i = 0; i < N; ++i) {
+    for (int s = 0; s < 4; ++s) {
+      sampleOffset[i][s] = (kFixedSamplePositions4x[s][1] * edges[i].dcdy - kFixedSamplePositions4x[s][0] * edges[i].dcdx) >>
+                           kSubpixelBits;
+    }
+  }
+  rasterizeEdgesAt(edges, bounds, region, [&](int px, int py, const std::int64_t (&value)[N]) {
+    unsigned mask = 0;
+    for (int s = 0; s < 4; ++s) {
+      bool inside = true;
+      for (int i = 0; i < N; ++i) inside &= value[i] + sampleOffset[i][s] > 0;
+      mask |= inside ? 1u << s : 0u;
+    }
+    if (mask != 0) covered(px, py, mask);
+  });
 }
 
 template <class Covered>

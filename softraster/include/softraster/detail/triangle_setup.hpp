@@ -9,7 +9,9 @@
 //   - the depth bias of lp_do_offset_tri: max(|dz/dx|, |dz/dy|) * slope plus the constant factor
 //     scaled by 2/(2^n - 1) for UNORM depth (a GL factor of 2 lavapipe keeps) or by
 //     2^(exponent(max |z|) - 23) for float depth, then clamped.
-// Deliberately absent: MSAA (pixel offset 0), the bottom-left fill rule.
+//   - with 4x MSAA the pixel offset is 0 (snapping and plane origin at the pixel corner) and
+//     coverage is tested at the Vulkan standard sample positions.
+// Deliberately absent: the bottom-left fill rule.
 #pragma once
 
 #include <softraster/detail/vertex_processing.hpp>
@@ -25,11 +27,15 @@ namespace softraster::detail {
 
 inline constexpr int kSubpixelBits = 8;
 inline constexpr float kSubpixelScale = 256.0f;
-inline constexpr float kPixelCentreOffset = 0.5f;  // lavapipe forces half-pixel centres
+inline constexpr float kPixelCentreOffset = 0.5f;  // lavapipe forces half-pixel centres (single-sample)
+
+// The Vulkan standard 4x sample positions, in pixels and in 1/256 px (lp_sample_pos_4x).
+inline constexpr float kSamplePositions4x[4][2] = {{0.375f, 0.125f}, {0.875f, 0.375f}, {0.125f, 0.625f}, {0.625f, 0.875f}};
+inline constexpr std::int64_t kFixedSamplePositions4x[4][2] = {{96, 32}, {224, 96}, {32, 160}, {160, 224}};
 
 // One window coordinate to 24.8 fixed point, as SSE's cvtps2dq does it in round-to-nearest-even.
-inline std::int32_t snapToSubpixel(float windowCoordinate) {
-  const float scaled = (windowCoordinate - kPixelCentreOffset) * kSubpixelScale;
+inline std::int32_t snapToSubpixel(float windowCoordinate, float pixelOffset = kPixelCentreOffset) {
+  const float scaled = (windowCoordinate - pixelOffset) * kSubpixelScale;
   if (!(scaled >= -2147483648.0f && scaled < 2147483648.0f)) return INT32_MIN;
   return static_cast<std::int32_t>(std::nearbyint(scaled));
 }
@@ -39,9 +45,9 @@ struct FixedTriangle {
   std::int32_t y[3];
 };
 
-inline FixedTriangle snapTriangle(Vec4 w0, Vec4 w1, Vec4 w2) {
-  return {{snapToSubpixel(w0.x), snapToSubpixel(w1.x), snapToSubpixel(w2.x)},
-          {snapToSubpixel(w0.y), snapToSubpixel(w1.y), snapToSubpixel(w2.y)}};
+inline FixedTriangle snapTriangle(Vec4 w0, Vec4 w1, Vec4 w2, float pixelOffset = kPixelCentreOffset) {
+  return {{snapToSubpixel(w0.x, pixelOffset), snapToSubpixel(w1.x, pixelOffset), snapToSubpixel(w2.x, pixelOffset)},
+          {snapToSubpixel(w0.y, pixelOffset), snapToSubpixel(w1.y, pixelOffset), snapToSubpixel(w2.y, pixelOffset)}};
 }
 
 // Sign of (X0-X1)*(Y2-Y0) - (X2-X0)*(Y0-Y1), with lavapipe's 32-bit differences and
@@ -133,7 +139,8 @@ struct PlaneEquation {
 // The shared part of the plane setup of one triangle (init_args in lp_state_setup.c).
 class PlaneSetup {
  public:
-  PlaneSetup(Vec4 w0, Vec4 w1, Vec4 w2) {
+  // pixelOffset: 0.5 puts a0 at the centre of pixel (0, 0) (single-sample), 0 at its corner (MSAA).
+  PlaneSetup(Vec4 w0, Vec4 w1, Vec4 w2, float pixelOffset = kPixelCentreOffset) {
     const float dx01 = w0.x - w1.x, dy01 = w0.y - w1.y;
     const float dx20 = w2.x - w0.x, dy20 = w2.y - w0.y;
     const float e = dx01 * dy20;
@@ -144,8 +151,8 @@ class PlaneSetup {
     dy20_ooa_ = dy20 * ooa;
     dx01_ooa_ = dx01 * ooa;
     dy01_ooa_ = dy01 * ooa;
-    x0Centre_ = w0.x - kPixelCentreOffset;
-    y0Centre_ = w0.y - kPixelCentreOffset;
+    x0Centre_ = w0.x - pixelOffset;
+    y0Centre_ = w0.y - pixelOffset;
   }
 
   // calc_coef4 in lp_state_setup.c.
