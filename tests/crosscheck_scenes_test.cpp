@@ -14,6 +14,7 @@
 #include <cstdio>
 #include <filesystem>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -32,21 +33,36 @@ void writeArtifacts(const std::string& name, const crosscheck::Frame& soft, cons
   ADD_FAILURE() << "images written to " << dir.string();
 }
 
-void crossCheckScene(const std::string& name) {
+// A scene rendered by softraster (with `options`) and by Vulkan on lavapipe (with validation).
+struct RenderedScene {
+  std::optional<crosscheck::Scene> scene;
+  std::optional<crosscheck::Frame> soft, reference;
+  std::vector<std::string> validationMessages;
+};
+
+// Fails the calling test (ASSERT in a void helper) when anything cannot be rendered.
+void renderBoth(const std::string& name, RenderedScene& out, const softraster::ContextOptions& options = {}) {
   std::string error;
-  const auto scene = crosscheck::loadScene(kScenes / (name + ".json"), &error);
-  ASSERT_TRUE(scene) << error;
-
-  vkref::DeviceOptions options;
-  options.validation = true;
-  auto vulkan = vkref::Renderer::create(options, &error);
+  out.scene = crosscheck::loadScene(kScenes / (name + ".json"), &error);
+  ASSERT_TRUE(out.scene) << error;
+  vkref::DeviceOptions device;
+  device.validation = true;
+  auto vulkan = vkref::Renderer::create(device, &error);
   ASSERT_TRUE(vulkan) << error;
+  out.soft = crosscheck::renderSoftraster(*out.scene, &error, options);
+  ASSERT_TRUE(out.soft) << error;
+  out.reference = crosscheck::renderVulkan(*out.scene, *vulkan, &error);
+  ASSERT_TRUE(out.reference) << error;
+  out.validationMessages = vulkan->validationMessages();
+}
 
-  const auto soft = crosscheck::renderSoftraster(*scene, &error);
-  ASSERT_TRUE(soft) << error;
-  const auto reference = crosscheck::renderVulkan(*scene, *vulkan, &error);
-  ASSERT_TRUE(reference) << error;
-  for (const std::string& message : vulkan->validationMessages()) ADD_FAILURE() << "validation: " << message;
+void crossCheckScene(const std::string& name) {
+  RenderedScene r;
+  ASSERT_NO_FATAL_FAILURE(renderBoth(name, r));
+  const auto& scene = r.scene;
+  const auto& soft = r.soft;
+  const auto& reference = r.reference;
+  for (const std::string& message : r.validationMessages) ADD_FAILURE() << "validation: " << message;
 
   const crosscheck::Comparison c = crosscheck::compareFrames(*soft, *reference, *scene);
   ::testing::Test::RecordProperty("coverage_mismatches", std::to_string(c.coverageMismatches));
@@ -88,16 +104,9 @@ TEST(CrossCheck, SuiteIsNotEmpty) { EXPECT_GE(sceneNames().size(), 20u); }
 // blending. Checked in both renderers: no count above 1, and no uncovered pixel that cannot be
 // reached from the image border through uncovered pixels (a hole inside the silhouette).
 TEST(Stability, ClosedSphereCoversEachPixelOnce) {
-  std::string error;
-  const auto scene = crosscheck::loadScene(kScenes / "sphere_coverage.json", &error);
-  ASSERT_TRUE(scene) << error;
-  auto vulkan = vkref::Renderer::create({}, &error);
-  ASSERT_TRUE(vulkan) << error;
-  const auto soft = crosscheck::renderSoftraster(*scene, &error);
-  ASSERT_TRUE(soft) << error;
-  const auto reference = crosscheck::renderVulkan(*scene, *vulkan, &error);
-  ASSERT_TRUE(reference) << error;
-  for (const auto* frame : {&*soft, &*reference}) {
+  RenderedScene r;
+  ASSERT_NO_FATAL_FAILURE(renderBoth("sphere_coverage", r));
+  for (const auto* frame : {&*r.soft, &*r.reference}) {
     const int w = static_cast<int>(frame->width), h = static_cast<int>(frame->height);
     std::vector<std::uint8_t> count(static_cast<std::size_t>(w * h));
     std::size_t once = 0;
@@ -132,17 +141,12 @@ TEST(Stability, ClosedSphereCoversEachPixelOnce) {
 // z/w buffer determines too: z = A + B/w with A = far/(far-near), B = -near*far/(far-near).
 // It resolves visibility like z/w except where surfaces are nearly at the same depth.
 TEST(DepthModes, InverseZBufferHoldsOneOverZ) {
-  std::string error;
-  const auto scene = crosscheck::loadScene(kScenes / "room.json", &error);
-  ASSERT_TRUE(scene) << error;
-  auto vulkan = vkref::Renderer::create({}, &error);
-  ASSERT_TRUE(vulkan) << error;
   softraster::ContextOptions options;
   options.depthMode = softraster::DepthMode::InverseZ;
-  const auto inverse = crosscheck::renderSoftraster(*scene, &error, options);
-  ASSERT_TRUE(inverse) << error;
-  const auto reference = crosscheck::renderVulkan(*scene, *vulkan, &error);
-  ASSERT_TRUE(reference) << error;
+  RenderedScene r;
+  ASSERT_NO_FATAL_FAILURE(renderBoth("room", r, options));
+  const auto& inverse = r.soft;
+  const auto& reference = r.reference;
   const double nearPlane = 0.05, farPlane = 10;  // room.json's camera
   const double a = farPlane / (farPlane - nearPlane), b = -nearPlane * farPlane / (farPlane - nearPlane);
   std::size_t covered = 0, colourDiffers = 0;
