@@ -40,3 +40,24 @@ TEST(Snapping, OutOfRangeAndNaNGiveIntMin) {
   EXPECT_EQ(snapToSubpixel(1e8f), INT32_MIN);
   EXPECT_EQ(snapToSubpixel(-1e8f), INT32_MIN);
 }
+
+#include <softraster/detail/output_merger.hpp>
+
+TEST(ColourStore, Unorm8RoundsHalfToEvenAfterScaling) {
+  using softraster::detail::unorm8FromFloat;
+  EXPECT_EQ(unorm8FromFloat(0.0f), 0);
+  EXPECT_EQ(unorm8FromFloat(1.0f), 255);
+  EXPECT_EQ(unorm8FromFloat(-3.0f), 0);
+  EXPECT_EQ(unorm8FromFloat(7.0f), 255);
+  EXPECT_EQ(unorm8FromFloat(std::numeric_limits<float>::quiet_NaN()), 0);
+  // Every float in [0, 1] against the library's round-half-even of the same product.
+  for (float v = 0.0f; v <= 1.0f; v = std::nextafter(v, 2.0f)) {
+    ASSERT_EQ(unorm8FromFloat(v), static_cast<int>(std::nearbyint(v * 255.0f))) << v;
+    if (v > 1e-3f) v = std::nextafter(v + 1e-5f, 2.0f);  // denser near 0, sampled above
+  }
+  // Exact ties after scaling: 0.5/255 * 255 etc. land on .5 only where representable; check k + 0.5.
+  for (int k = 0; k < 255; ++k) {
+    const float tie = (static_cast<float>(k) + 0.5f) / 255.0f;
+    EXPECT_EQ(unorm8FromFloat(tie), static_cast<int>(std::nearbyint(tie * 255.0f))) << k;
+  }
+}

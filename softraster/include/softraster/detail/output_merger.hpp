@@ -75,9 +75,13 @@ inline bool depthTestPasses(CompareOp op, std::uint32_t incoming, std::uint32_t 
   }
 }
 
+// Round half to even of x in [0, 2^23): adding 2^23 leaves no fraction bits, so the float add
+// itself rounds (to nearest even); it inlines where std::nearbyint is a library call.
+inline float roundHalfEvenSmall(float x) { return (x + 8388608.0f) - 8388608.0f; }
+
 inline std::uint8_t unorm8FromFloat(float v) {
   const float clamped = v > 0.0f ? (v < 1.0f ? v : 1.0f) : 0.0f;  // NaN compares false: 0
-  return static_cast<std::uint8_t>(std::nearbyint(clamped * 255.0f));
+  return static_cast<std::uint8_t>(roundHalfEvenSmall(clamped * 255.0f));
 }
 
 inline void storeColour(std::uint8_t* pixel, Vec4 c) {
@@ -89,7 +93,7 @@ inline void storeColour(std::uint8_t* pixel, Vec4 c) {
 
 // Blending with op ADD in 8-bit integers, as lavapipe blends UNORM8 targets: each side is the
 // value or zero, the sum saturates.
-inline void blendColour(std::uint8_t* pixel, Vec4 c, const BlendState& blend) {
+[[gnu::always_inline]] inline void blendColour(std::uint8_t* pixel, Vec4 c, const BlendState& blend) {
   if (!blend.enable) {
     storeColour(pixel, c);
     return;
