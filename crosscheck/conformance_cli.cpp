@@ -56,21 +56,13 @@ bool prepareOutputFile(const std::string& file, std::string* error) {
   return true;
 }
 
-std::string utcNow() {
+// The current UTC time in strftime `format`.
+std::string utcNow(const char* format) {
   const std::time_t now = std::time(nullptr);
   std::tm tm{};
   gmtime_r(&now, &tm);
   char buffer[32];
-  std::strftime(buffer, sizeof buffer, "%Y-%m-%d %H:%M:%S UTC", &tm);
-  return buffer;
-}
-
-std::string isoNow() {
-  const std::time_t now = std::time(nullptr);
-  std::tm tm{};
-  gmtime_r(&now, &tm);
-  char buffer[32];
-  std::strftime(buffer, sizeof buffer, "%Y-%m-%dT%H:%M:%S", &tm);
+  std::strftime(buffer, sizeof buffer, format, &tm);
   return buffer;
 }
 
@@ -172,7 +164,7 @@ int runConformanceCommand(const ConformanceCommand& command) {
   if (!command.junitFile.empty()) {
     JUnitInfo info;
     info.seconds = seconds;
-    info.timestamp = isoNow();
+    info.timestamp = utcNow("%Y-%m-%dT%H:%M:%S");
     if (shard.count > 1) info.suiteName += ".shard" + std::to_string(shard.index) + "of" + std::to_string(shard.count);
     if (!writeJUnit(command.junitFile, results, info, &error)) {
       std::fprintf(stderr, "crosscheck: %s\n", error.c_str());
@@ -181,7 +173,7 @@ int runConformanceCommand(const ConformanceCommand& command) {
   }
   if (report) {
     ReportInfo info;
-    info.generated = utcNow();
+    info.generated = utcNow("%Y-%m-%d %H:%M:%S UTC");
     info.commandLine = command.commandLine;
     info.seconds = seconds;
     info.jobs = command.jobs;

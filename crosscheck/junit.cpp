@@ -4,11 +4,8 @@
 #include "markup.hpp"
 #include "summary.hpp"
 
-#include <cerrno>
 #include <cmath>
 #include <cstdio>
-#include <cstring>
-#include <fstream>
 
 namespace crosscheck {
 namespace {
@@ -100,19 +97,7 @@ std::string junitXml(const std::vector<SceneResult>& results, const JUnitInfo& i
 
 bool writeJUnit(const std::filesystem::path& file, const std::vector<SceneResult>& results, const JUnitInfo& info,
                 std::string* error) {
-  if (file.has_parent_path()) {
-    std::error_code ec;
-    std::filesystem::create_directories(file.parent_path(), ec);
-  }
-  errno = 0;
-  std::ofstream out(file, std::ios::binary | std::ios::trunc);
-  if (out) out << junitXml(results, info);
-  if (out) out.close();
-  if (!out) {
-    *error = file.string() + ": cannot write JUnit file: " + (errno ? std::strerror(errno) : "write error");
-    return false;
-  }
-  return true;
+  return writeDocument(file, junitXml(results, info), "JUnit file", error);
 }
 
 }  // namespace crosscheck

@@ -1,6 +1,10 @@
 // Markup and URL escaping (see markup.hpp).
 #include "markup.hpp"
 
+#include <cerrno>
+#include <cstring>
+#include <fstream>
+
 #include <cstdint>
 
 namespace crosscheck {
@@ -77,6 +81,23 @@ std::string encodeUrlPath(std::string_view path) {
     }
   }
   return out;
+}
+
+bool writeDocument(const std::filesystem::path& file, std::string_view text, std::string_view what,
+                   std::string* error) {
+  if (file.has_parent_path()) {
+    std::error_code ec;
+    std::filesystem::create_directories(file.parent_path(), ec);
+  }
+  errno = 0;
+  std::ofstream out(file, std::ios::binary | std::ios::trunc);
+  if (out) out << text;
+  if (out) out.close();
+  if (!out) {
+    *error = file.string() + ": cannot write " + std::string(what) + ": " + (errno ? std::strerror(errno) : "write error");
+    return false;
+  }
+  return true;
 }
 
 }  // namespace crosscheck

@@ -1,8 +1,10 @@
-// Escaping text for XML and HTML (JUnit files, the report) and for URLs of files next to a page.
+// Escaping text for XML and HTML (JUnit files, the report), URLs of files next to a page, and
+// writing such a document to disk.
 // Deliberately no document model: the writers build their markup as text and escape every value
 // they put into it.
 #pragma once
 
+#include <filesystem>
 #include <string>
 #include <string_view>
 
@@ -16,5 +18,10 @@ std::string escapeMarkup(std::string_view text);
 // Percent-encodes a relative file path for an href or src: '/' stays, unreserved characters stay,
 // every other byte becomes %XX.
 std::string encodeUrlPath(std::string_view path);
+
+// Writes `text` to `file`, creating its folder. On failure sets *error to
+// "FILE: cannot write WHAT: REASON" and returns false.
+bool writeDocument(const std::filesystem::path& file, std::string_view text, std::string_view what,
+                   std::string* error);
 
 }  // namespace crosscheck

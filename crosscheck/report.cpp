@@ -10,11 +10,8 @@
 
 #include <algorithm>
 #include <bit>
-#include <cerrno>
 #include <cmath>
 #include <cstdio>
-#include <cstring>
-#include <fstream>
 #include <limits>
 #include <numeric>
 #include <tuple>
@@ -274,15 +271,7 @@ std::string pixelDataScript(const std::string& sceneName, const Frame& soft, con
 
 bool writePixelData(const std::filesystem::path& root, const std::filesystem::path& relative, SceneResult* result,
                     const Frame& soft, const Frame& vulkan, std::string* error) {
-  const std::filesystem::path file = root / relative;
-  std::error_code ec;
-  if (file.has_parent_path()) std::filesystem::create_directories(file.parent_path(), ec);
-  errno = 0;
-  std::ofstream out(file, std::ios::binary | std::ios::trunc);
-  if (out) out << pixelDataScript(result->entry.name, soft, vulkan);
-  if (out) out.close();
-  if (!out) {
-    *error = file.string() + ": cannot write pixel data: " + (errno ? std::strerror(errno) : "write error");
+  if (!writeDocument(root / relative, pixelDataScript(result->entry.name, soft, vulkan), "pixel data", error)) {
     return false;
   }
   result->pixelData = relative;
@@ -359,18 +348,7 @@ std::string reportHtml(const std::vector<SceneResult>& results, const ReportInfo
 
 bool writeReport(const std::filesystem::path& dir, const std::vector<SceneResult>& results, const ReportInfo& info,
                  std::string* error) {
-  std::error_code ec;
-  std::filesystem::create_directories(dir, ec);
-  const std::filesystem::path file = dir / "index.html";
-  errno = 0;
-  std::ofstream out(file, std::ios::binary | std::ios::trunc);
-  if (out) out << reportHtml(results, info);
-  if (out) out.close();
-  if (!out) {
-    *error = file.string() + ": cannot write report: " + (errno ? std::strerror(errno) : "write error");
-    return false;
-  }
-  return true;
+  return writeDocument(dir / "index.html", reportHtml(results, info), "report", error);
 }
 
 }  // namespace crosscheck

@@ -199,17 +199,19 @@ void Context::drawWithFormat(const PipelineState& state, const typename Shader::
     detail::rasterizeEdges(edges, bounds, region, [&](int px, int py) {
       const float fx = static_cast<float>(px), fy = static_cast<float>(py);
       const std::size_t pixel = static_cast<std::size_t>(py) * width + static_cast<std::size_t>(px);
-      std::uint32_t stored;
-      bool passes;
-      if (inverseZ) {  // the course's 1/z buffer: larger is nearer, so compare the other way round
-        stored = std::bit_cast<std::uint32_t>(detail::evaluatePlane<Fused>(interpolants.oneOverW, fx, fy));
-        passes = detail::depthTestPasses<Format>(ds.compareOp, depth[pixel], stored);
-      } else {
-        const float z = detail::clampDepth(detail::interpolateDepth<Fused>(interpolants, fx, fy), depthRange);
-        stored = detail::depthToStorage<Format>(z);
-        passes = detail::depthTestPasses<Format>(ds.compareOp, stored, depth[pixel]);
+      std::uint32_t stored = 0;  // Vulkan tests and writes depth only with the depth test on
+      if (ds.testEnable) {
+        bool passes;
+        if (inverseZ) {  // the course's 1/z buffer: larger is nearer, so compare the other way round
+          stored = std::bit_cast<std::uint32_t>(detail::evaluatePlane<Fused>(interpolants.oneOverW, fx, fy));
+          passes = detail::depthTestPasses<Format>(ds.compareOp, depth[pixel], stored);
+        } else {
+          const float z = detail::clampDepth(detail::interpolateDepth<Fused>(interpolants, fx, fy), depthRange);
+          stored = detail::depthToStorage<Format>(z);
+          passes = detail::depthTestPasses<Format>(ds.compareOp, stored, depth[pixel]);
+        }
+        if (!passes) return;
       }
-      if (ds.testEnable && !passes) return;
       detail::interpolateVaryings<Fused>(interpolants, interpolation, fx, fy, varyings.data());
       detail::blendColour(colour + 4 * pixel, Shader::fragment(uniforms, varyings.data()), state.blend);
       if (ds.testEnable && ds.writeEnable) depth[pixel] = stored;
@@ -224,15 +226,15 @@ void Context::drawWithFormat(const PipelineState& state, const typename Shader::
       const float fx = static_cast<float>(px), fy = static_cast<float>(py);
       const std::size_t pixel = static_cast<std::size_t>(py) * width + static_cast<std::size_t>(px);
       std::uint32_t stored[4];
-      unsigned passed = 0;
-      for (int s = 0; s < 4; ++s) {
+      unsigned passed = ds.testEnable ? 0u : mask;  // without the depth test every covered sample passes
+      for (int s = 0; s < 4 && ds.testEnable; ++s) {
         if (!(mask & (1u << s))) continue;
         const float z = detail::clampDepth(
             detail::interpolateDepth<Fused>(interpolants, fx + detail::kSamplePositions4x[s][0],
                                             fy + detail::kSamplePositions4x[s][1]),
             depthRange);
         stored[s] = detail::depthToStorage<Format>(z);
-        if (!ds.testEnable || detail::depthTestPasses<Format>(ds.compareOp, stored[s], depth[pixel * 4 + static_cast<std::size_t>(s)])) {
+        if (detail::depthTestPasses<Format>(ds.compareOp, stored[s], depth[pixel * 4 + static_cast<std::size_t>(s)])) {
           passed |= 1u << s;
         }
       }
