@@ -1,5 +1,5 @@
 // Clipping in clip space as Mesa's draw module does it.
-#include <softraster/detail/clipping.hpp>
+#include <softraster/detail/geometry/clipping.hpp>
 
 #include <gtest/gtest.h>
 

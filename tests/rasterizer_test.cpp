@@ -1,6 +1,6 @@
 // Coverage: the top-left rule makes triangles that share edges cover every pixel exactly once.
-#include <softraster/detail/rasterizer.hpp>
-#include <softraster/detail/triangle_setup.hpp>
+#include <softraster/detail/exact/rasterizer.hpp>
+#include <softraster/detail/exact/triangle_setup.hpp>
 
 #include <gtest/gtest.h>
 

@@ -1,5 +1,5 @@
 // Snapping to 1/256 px: round half to even after subtracting the pixel-centre offset in float.
-#include <softraster/detail/triangle_setup.hpp>
+#include <softraster/detail/exact/triangle_setup.hpp>
 
 #include <gtest/gtest.h>
 
@@ -41,7 +41,7 @@ TEST(Snapping, OutOfRangeAndNaNGiveIntMin) {
   EXPECT_EQ(snapToSubpixel(-1e8f), INT32_MIN);
 }
 
-#include <softraster/detail/output_merger.hpp>
+#include <softraster/detail/fragment/colour.hpp>
 
 TEST(ColourStore, Unorm8RoundsHalfToEvenAfterScaling) {
   using softraster::detail::unorm8FromFloat;

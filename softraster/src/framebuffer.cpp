@@ -1,5 +1,5 @@
 // Framebuffer storage, clears and depth read-out.
-#include <softraster/detail/output_merger.hpp>
+#include <softraster/detail/fragment/colour.hpp>
 #include <softraster/framebuffer.hpp>
 
 #include <algorithm>

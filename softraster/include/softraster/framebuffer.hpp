@@ -1,30 +1,18 @@
-// Framebuffer: an R8G8B8A8_UNORM colour image and a depth image (D16_UNORM, X8_D24_UNORM_PACK32
-// or D32_SFLOAT), row 0 at the top, with 1 or 4 samples per pixel (samples of a pixel are
-// adjacent). Depth is kept as the format stores it: UNORM depth as its integer, D32_SFLOAT as its
-// float's bits. resolve() averages colour samples as lavapipe's resolve blit does and keeps
-// depth sample 0.
+// Framebuffer: an R8G8B8A8_UNORM colour image and a depth image (formats.hpp), row 0 at the top,
+// with 1 or 4 samples per pixel (samples of a pixel are adjacent). Depth is kept as the format
+// stores it: UNORM depth as its integer, D32_SFLOAT as its float's bits. resolve() averages
+// colour samples as lavapipe's resolve blit does and keeps depth sample 0.
 // Deliberately without stencil until a scene needs it.
 #pragma once
 
+#include <softraster/formats.hpp>
 #include <softraster/math.hpp>
-#include <softraster/status.hpp>
 
 #include <cstddef>
 #include <cstdint>
 #include <vector>
 
 namespace softraster {
-
-enum class DepthFormat : std::uint8_t { D16Unorm, X8D24UnormPack32, D32Sfloat };
-
-// Bits of a UNORM depth format (16 or 24), or 0 for D32_SFLOAT.
-constexpr int unormDepthBits(DepthFormat f) {
-  return f == DepthFormat::D16Unorm ? 16 : f == DepthFormat::X8D24UnormPack32 ? 24 : 0;
-}
-
-// A depth clear value as the format stores it: lrint(depth * (2^n - 1)) for UNORM formats, the
-// float's bits for D32_SFLOAT.
-std::uint32_t depthClearValue(DepthFormat format, float depth);
 
 class Framebuffer {
  public:

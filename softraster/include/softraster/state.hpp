@@ -2,8 +2,9 @@
 // The fields mirror Vulkan's pipeline create-info structures one to one, so vkref can build a
 // VkPipeline from the same value softraster draws with. A field here that one renderer cannot
 // honour is an error in that renderer, never a silent default.
+// The sample count is the framebuffer's (framebuffer.hpp), not state here.
 // Deliberately absent until a scene needs it: blend factors other than ZERO and ONE, stencil,
-// MSAA, smooth and stippled lines.
+// multisample state (sample shading, sample mask, alpha to coverage), smooth and stippled lines.
 #pragma once
 
 #include <cstdint>

@@ -14,8 +14,9 @@
 // Deliberately absent: the bottom-left fill rule.
 #pragma once
 
-#include <softraster/detail/vertex_processing.hpp>
-#include <softraster/framebuffer.hpp>
+#include <softraster/detail/geometry/vertex_processing.hpp>
+#include <softraster/detail/geometry/viewport.hpp>
+#include <softraster/formats.hpp>
 #include <softraster/state.hpp>
 
 #include <bit>
@@ -79,32 +80,12 @@ inline WindingFilter windingFilter(const RasterizationState& rs) {
   return {false, false};
 }
 
-// The float-determinant cull of Mesa's draw pipeline (draw_pipe_cull.c). It runs, before setup,
-// on every triangle of a vertex batch that needed clipping. Zero determinant counts as back.
-inline bool survivesPipelineCull(Vec4 w0, Vec4 w1, Vec4 w2, const RasterizationState& rs) {
-  if (rs.cullMode == CullMode::None) return true;
-  const float ex = w0.x - w2.x, ey = w0.y - w2.y;
-  const float fx = w1.x - w2.x, fy = w1.y - w2.y;
-  const float det = ex * fy - ey * fx;
-  const bool cullFront = rs.cullMode == CullMode::Front || rs.cullMode == CullMode::FrontAndBack;
-  const bool cullBack = rs.cullMode == CullMode::Back || rs.cullMode == CullMode::FrontAndBack;
-  if (det == 0.0f) return !cullBack;
-  const bool ccw = det < 0.0f;
-  const bool front = ccw == (rs.frontFace == FrontFace::CounterClockwise);
-  return front ? !cullFront : !cullBack;
-}
-
 // Edge function i (vertex i to i+1) in units of 1/256 px, evaluated at pixel (px, py) as
 // c + dcdy*py - dcdx*px; the pixel centre is inside the edge when the value is > 0.
 struct EdgeFunction {
   std::int64_t c;
   std::int64_t dcdx;  // DY << 8
   std::int64_t dcdy;  // DX << 8
-};
-
-struct PixelRect {  // inclusive bounds
-  int x0, y0, x1, y1;
-  bool empty() const { return x0 > x1 || y0 > y1; }
 };
 
 struct TriangleEdges {

@@ -10,7 +10,7 @@
 // their batches do not change the result.
 #pragma once
 
-#include <softraster/detail/vertex_processing.hpp>
+#include <softraster/detail/geometry/vertex_processing.hpp>
 #include <softraster/state.hpp>
 
 #include <array>

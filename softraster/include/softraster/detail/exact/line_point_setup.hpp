@@ -10,9 +10,9 @@
 // Deliberately absent: smooth and stippled lines, point sprites.
 #pragma once
 
-#include <softraster/detail/interpolation.hpp>
-#include <softraster/detail/rasterizer.hpp>
-#include <softraster/detail/triangle_setup.hpp>
+#include <softraster/detail/exact/interpolation.hpp>
+#include <softraster/detail/exact/rasterizer.hpp>
+#include <softraster/detail/exact/triangle_setup.hpp>
 #include <softraster/shader.hpp>
 #include <softraster/state.hpp>
 

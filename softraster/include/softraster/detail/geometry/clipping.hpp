@@ -14,7 +14,7 @@
 // Deliberately absent: user clip planes, clip distances.
 #pragma once
 
-#include <softraster/detail/vertex_processing.hpp>
+#include <softraster/detail/geometry/vertex_processing.hpp>
 #include <softraster/shader.hpp>
 
 #include <array>

@@ -8,7 +8,7 @@
 #pragma once
 
 #include <softraster/detail/fused_multiply_add.hpp>
-#include <softraster/detail/triangle_setup.hpp>
+#include <softraster/detail/exact/triangle_setup.hpp>
 #include <softraster/shader.hpp>
 
 #include <array>

@@ -7,16 +7,12 @@
 // produce the same set of pixels.
 #pragma once
 
-#include <softraster/detail/triangle_setup.hpp>
+#include <softraster/detail/exact/triangle_setup.hpp>
 
 #include <algorithm>
 #include <cstdint>
 
 namespace softraster::detail {
-
-inline PixelRect intersect(const PixelRect& a, const PixelRect& b) {
-  return {std::max(a.x0, b.x0), std::max(a.y0, b.y0), std::min(a.x1, b.x1), std::min(a.y1, b.y1)};
-}
 
 // Calls visit(px, py, values) for every pixel of bounds ∩ region with the N edge values at the
 // pixel, stepped incrementally.

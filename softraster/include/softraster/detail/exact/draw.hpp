@@ -1,0 +1,205 @@
+// The exact method's draw loop: one draw call as a list of stage calls, each stage in its file:
+//   vertex processing (geometry/vertex_processing) -> primitive assembly and vertex batches
+//   (geometry/primitive_assembly) -> clipping (geometry/clipping) -> the draw pipeline's float
+//   cull (geometry/culling) -> polygon modes (geometry/unfilled) -> snapping, the fixed-point cull
+//   and setup (exact/triangle_setup, exact/line_point_setup) -> coverage and fragments
+//   (fragment/shade, over exact/rasterizer and exact/interpolation).
+// Primitives are drawn one after another in submission order, each to completion.
+// Deliberately absent: validation of the draw (pipeline.hpp's Context does it before any work)
+// and any choice of method or instruction set (the Context makes those and instantiates this).
+#pragma once
+
+#include <softraster/detail/exact/interpolation.hpp>
+#include <softraster/detail/exact/line_point_setup.hpp>
+#include <softraster/detail/exact/triangle_setup.hpp>
+#include <softraster/detail/fragment/shade.hpp>
+#include <softraster/detail/geometry/clipping.hpp>
+#include <softraster/detail/geometry/culling.hpp>
+#include <softraster/detail/geometry/primitive_assembly.hpp>
+#include <softraster/detail/geometry/unfilled.hpp>
+#include <softraster/detail/geometry/vertex_processing.hpp>
+#include <softraster/detail/geometry/viewport.hpp>
+#include <softraster/framebuffer.hpp>
+#include <softraster/shader.hpp>
+#include <softraster/state.hpp>
+
+#include <algorithm>
+#include <cstdint>
+#include <span>
+#include <utility>
+#include <vector>
+
+namespace softraster::detail {
+
+template <class Shader, bool Fused, DepthFormat Format>
+class ExactDraw {
+ public:
+  static constexpr int N = Shader::kVaryings;
+  using Vertex = ShadedVertex<N>;
+
+  ExactDraw(const PipelineState& state, const typename Shader::Uniforms& uniforms, Framebuffer& framebuffer,
+            bool inverseZ)
+      : state_(state),
+        rs_(state.rasterization),
+        uniforms_(uniforms),
+        viewport_(resolveViewport(state.viewport, framebuffer.width(), framebuffer.height())),
+        transform_(makeViewportTransform(viewport_)),
+        region_(drawRegion(state.scissor, viewport_, framebuffer.width(), framebuffer.height())),
+        multisample_(framebuffer.samples() == 4),
+        fragments_(state, uniforms, framebuffer, viewport_, region_, inverseZ) {}
+
+  // Draws vertices[indices[k]] in order, assembled by the state's topology.
+  void run(std::span<const typename Shader::Vertex> vertices, std::span<const std::uint32_t> indices) {
+    if (region_.empty()) return;
+    shadeVertices(vertices);
+    if (state_.topology == Topology::PointList) {
+      drawPoints(indices);
+    } else if (isLineTopology(state_.topology)) {
+      drawLines(indices);
+    } else {
+      drawTriangles(indices);
+    }
+  }
+
+ private:
+  static constexpr InterpolationSet<N> kInterpolation = interpolationOf<Shader>();
+
+  void shadeVertices(std::span<const typename Shader::Vertex> vertices) {
+    shaded_.resize(vertices.size());
+    for (std::size_t i = 0; i < vertices.size(); ++i) {
+      shaded_[i] = shadeVertex<Shader, Fused>(uniforms_, vertices[i], transform_, !rs_.depthClampEnable);
+    }
+  }
+
+  void drawPoints(std::span<const std::uint32_t> indices) {
+    for (const std::uint32_t index : indices) {
+      const Vertex& v = shaded_[index];
+      if (pointSurvivesClipping(v)) drawPoint(v);
+    }
+  }
+
+  void drawLines(std::span<const std::uint32_t> indices) {
+    Vertex clippedA, clippedB;
+    for (const LineIndices& l : assembleLines(state_.topology, indices)) {
+      const Vertex& a = shaded_[l[0]];
+      const Vertex& b = shaded_[l[1]];
+      const std::uint32_t outside = a.clipMask | b.clipMask;
+      if (outside == 0) {
+        drawLine(a, b);
+      } else if ((a.clipMask & b.clipMask) == 0 &&
+                 clipLine(a, b, outside, transform_, kInterpolation, clippedA, clippedB)) {
+        drawLine(clippedA, clippedB);
+      }
+    }
+  }
+
+  // Triangles in vertex batches: a batch with no vertex outside the frustum goes straight to
+  // setup; one that clips goes through the draw pipeline (float cull, clipping, polygon modes).
+  void drawTriangles(std::span<const std::uint32_t> indices) {
+    winding_ = windingFilter(rs_);
+    if (!winding_.drawClockwise && !winding_.drawCounterClockwise) return;
+    const bool unfilled = rs_.polygonMode != PolygonMode::Fill;
+    const std::vector<TriangleIndices> triangles = assembleTriangles(state_.topology, indices);
+    const std::size_t batchSize = trianglesPerBatch(state_.topology);
+    for (std::size_t start = 0; start < triangles.size(); start += batchSize) {
+      const auto batch = std::span(triangles).subspan(start, std::min(batchSize, triangles.size() - start));
+      const bool throughDrawPipeline = unfilled || batchNeedsClipping(batch, shaded_);
+      for (const TriangleIndices& t : batch) {
+        const Vertex& v0 = shaded_[t[0]];
+        const Vertex& v1 = shaded_[t[1]];
+        const Vertex& v2 = shaded_[t[2]];
+        if (throughDrawPipeline) {
+          drawThroughPipeline(v0, v1, v2);
+        } else {
+          drawTriangle(v0, v1, v2);
+        }
+      }
+    }
+  }
+
+  // Mesa's draw pipeline for one triangle: clip, float cull, then fill or the unfilled stage.
+  void drawThroughPipeline(const Vertex& v0, const Vertex& v1, const Vertex& v2) {
+    const std::uint32_t outside = v0.clipMask | v1.clipMask | v2.clipMask;
+    if (outside == 0) {
+      if (survivesPipelineCull(v0.window, v1.window, v2.window, rs_)) drawCulled(v0, v1, v2, 7u);
+      return;
+    }
+    if ((v0.clipMask & v1.clipMask & v2.clipMask) != 0) return;  // entirely outside one plane
+    if (!clipTriangle(v0, v1, v2, outside, transform_, kInterpolation, polygon_,
+                      rs_.polygonMode == PolygonMode::Point)) {
+      return;
+    }
+    for (int i = 2; i < polygon_.count; ++i) {  // emitted as a fan from vertex 0
+      const Vertex& p0 = polygon_.vertices[0];
+      const Vertex& p1 = polygon_.vertices[static_cast<std::size_t>(i - 1)];
+      const Vertex& p2 = polygon_.vertices[static_cast<std::size_t>(i)];
+      if (survivesPipelineCull(p0.window, p1.window, p2.window, rs_)) {
+        drawCulled(p0, p1, p2, fanTriangleEdgeFlags(polygon_, i));
+      }
+    }
+  }
+
+  // A triangle past the draw pipeline's cull: filled, or as lines or points.
+  void drawCulled(const Vertex& a, const Vertex& b, const Vertex& c, unsigned edgeFlags) {
+    if (rs_.polygonMode == PolygonMode::Fill) {
+      drawTriangle(a, b, c);
+      return;
+    }
+    drawUnfilledTriangle(
+        rs_.polygonMode, a, b, c, edgeFlags, kInterpolation, [&](const Vertex& p, const Vertex& q) { drawLine(p, q); },
+        [&](const Vertex& p) { drawPoint(p); });
+  }
+
+  // Snapping, the fixed-point cull, setup and fragments of one filled triangle.
+  void drawTriangle(const Vertex& a, const Vertex& b, const Vertex& c) {
+    const float pixelOffset = multisample_ ? 0.0f : kPixelCentreOffset;
+    FixedTriangle fixed = snapTriangle(a.window, b.window, c.window, pixelOffset);
+    const int area = fixedAreaSign(fixed);
+    if (area == 0 || (area > 0 ? !winding_.drawCounterClockwise : !winding_.drawClockwise)) return;
+    // From here on the triangle is counter-clockwise: a negative one continues as (a, c, b),
+    // keeping the provoking vertex first.
+    const Vertex& v1 = area > 0 ? b : c;
+    const Vertex& v2 = area > 0 ? c : b;
+    if (area < 0) {
+      std::swap(fixed.x[1], fixed.x[2]);
+      std::swap(fixed.y[1], fixed.y[2]);
+    }
+    const TriangleEdges edges = setupEdges(fixed);
+    const TriangleInterpolants<N> interpolants =
+        setupInterpolants(a, v1, v2, kInterpolation, rs_.depthBias, Format, pixelOffset);
+    if (multisample_) {
+      fragments_.shadeSamples(edges.edges, edges.bounds, interpolants);
+    } else {
+      fragments_.shadePixels(edges.edges, edges.bounds, interpolants);
+    }
+  }
+
+  void drawLine(const Vertex& a, const Vertex& b) {
+    const auto line = rs_.lineRasterization == LineRasterization::Bresenham
+                          ? setupBresenhamLine(a.window, b.window, rs_.lineWidth)
+                          : setupRectangularLine(a.window, b.window, rs_.lineWidth);
+    if (!line) return;
+    fragments_.shadePixels(line->quad.edges, line->quad.bounds, setupLineInterpolants(a, b, *line, kInterpolation));
+  }
+
+  void drawPoint(const Vertex& v) {
+    const QuadEdges quad = setupPoint(v.window, v.pointSize);
+    fragments_.shadePixels(quad.edges, quad.bounds, setupPointInterpolants(v, kInterpolation));
+  }
+
+  // Constant for the draw.
+  const PipelineState& state_;
+  const RasterizationState& rs_;
+  const typename Shader::Uniforms& uniforms_;
+  Viewport viewport_;
+  ViewportTransform transform_;
+  PixelRect region_;
+  bool multisample_;
+  FragmentStage<Shader, Fused, Format> fragments_;
+  WindingFilter winding_{true, true};
+  // Scratch, reused across primitives.
+  std::vector<Vertex> shaded_;
+  ClippedPolygon<N> polygon_;
+};
+
+}  // namespace softraster::detail
