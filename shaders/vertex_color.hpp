@@ -45,7 +45,9 @@ struct VertexColorShader {
 
   static float pointSize(const Uniforms& u, const Vertex&) { return u.pointSize; }
 
-  static softraster::Vec4 fragment(const Uniforms&, const float* vColour) {
+  // F: float (one pixel) or softraster::FloatBatch (a block of pixels), as shader.hpp describes.
+  template <class F>
+  static softraster::Vec4T<F> fragment(const Uniforms&, const F* vColour) {
     return {vColour[0], vColour[1], vColour[2], vColour[3]};
   }
 };

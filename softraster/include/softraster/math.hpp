@@ -18,14 +18,24 @@ struct Vec3 {
   float x = 0, y = 0, z = 0;
 };
 
-struct Vec4 {
-  float x = 0, y = 0, z = 0, w = 0;
-  constexpr float& operator[](int i) { return i == 0 ? x : i == 1 ? y : i == 2 ? z : w; }
-  constexpr float operator[](int i) const { return i == 0 ? x : i == 1 ? y : i == 2 ? z : w; }
+// A 4-vector over a float type F: float, or a FloatBatch (simd.hpp) holding one value per lane,
+// so a shader twin written over F shades one pixel or a batch of pixels with the same source.
+template <class F>
+struct Vec4T {
+  F x{}, y{}, z{}, w{};
+  constexpr F& operator[](int i) { return i == 0 ? x : i == 1 ? y : i == 2 ? z : w; }
+  constexpr const F& operator[](int i) const { return i == 0 ? x : i == 1 ? y : i == 2 ? z : w; }
 };
+using Vec4 = Vec4T<float>;
 
-constexpr Vec4 operator+(Vec4 a, Vec4 b) { return {a.x + b.x, a.y + b.y, a.z + b.z, a.w + b.w}; }
-constexpr Vec4 operator*(Vec4 a, float s) { return {a.x * s, a.y * s, a.z * s, a.w * s}; }
+template <class F>
+constexpr Vec4T<F> operator+(const Vec4T<F>& a, const Vec4T<F>& b) {
+  return {a.x + b.x, a.y + b.y, a.z + b.z, a.w + b.w};
+}
+template <class F>
+constexpr Vec4T<F> operator*(const Vec4T<F>& a, const F& s) {
+  return {a.x * s, a.y * s, a.z * s, a.w * s};
+}
 
 // Column-major 4x4 matrix, the layout GLSL uses for a mat4 in a push constant block.
 struct Mat4 {

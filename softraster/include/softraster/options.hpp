@@ -1,7 +1,7 @@
 // How a Context draws: the options that are not Vulkan pipeline state (that is state.hpp) but
-// choices of this library: how lavapipe's fmuladd rounds on the machine being matched, and what
-// the depth buffer holds.
-// Deliberately absent until their issues land: the rasterization method, the thread count.
+// choices of this library: the method, how lavapipe's fmuladd rounds on the machine being
+// matched, and what the depth buffer holds.
+// Deliberately absent until their issue lands: the course's methods.
 #pragma once
 
 #include <softraster/detail/fused_multiply_add.hpp>
@@ -19,7 +19,20 @@ namespace softraster {
 //             i.e. the larger 1/z). Needs D32_SFLOAT; the viewport depth range does not apply.
 enum class DepthMode : std::uint8_t { Vulkan, InverseZ };
 
+// How pixels are found and shaded. Both give the same bits; ExactScalar is the reference the
+// fast one is tested against (and a point on the speed/accuracy chart).
+//   Exact:       lavapipe's rules; filled single-sample triangles take the SIMD fast path (4x2
+//                pixel batches, AVX2) where the CPU has AVX2 and FMA, fmuladd is fused and the
+//                shader's fragment function is written over its float type (shader.hpp);
+//                everything else takes the scalar path.
+//   ExactScalar: lavapipe's rules, one pixel at a time.
+enum class Method : std::uint8_t { Exact, ExactScalar };
+
 struct ContextOptions {
+  Method method = Method::Exact;
+  // Threads that draw, the caller's included: 0 = one per core, 1 = the calling thread only.
+  // The Context owns them; the output is the same bits for every count.
+  unsigned threads = 0;
   // How lavapipe's fmuladd rounds on the machine being matched: fused where the CPU has FMA.
   bool fusedMultiplyAdd = detail::cpuHasFma();
   DepthMode depthMode = DepthMode::Vulkan;

@@ -2,34 +2,46 @@
 // indexed or not, with a shader type into a Framebuffer, following lavapipe's rules to the bit
 // (the "exact" method). A draw is validated as a whole before any work, then handed to the
 // method's draw loop (detail/exact/draw.hpp: the stages, in order), instantiated for the
-// framebuffer's depth format and for how fmuladd rounds (options.hpp).
+// framebuffer's depth format, for how fmuladd rounds and for the fragment stage: the SIMD fast
+// path (detail/fast/) where options.hpp's Method::Exact allows it, else the scalar one.
 // Coverage: polygon modes fill, line and point (lavapipe's draw-pipeline path: in point mode x
 // and y are clipped at 2w, measured); 4x MSAA for filled triangles (Framebuffer::resolve()
 // resolves as lavapipe does); depth bias for filled triangles; the course's 1/z depth buffer.
-// A Context holds no global state and reports errors through Status; it never prints.
+// A Context holds no global state and reports errors through Status; it never prints. It owns
+// its threads (ContextOptions::threads); draws from several threads on one Context are safe and
+// take turns where they use the threads; one Context per thread avoids that wait.
 // Deliberately absent: MSAA lines, points and polygon modes, depth bias in polygon modes, blend
 // factors beyond ZERO/ONE, alternative rasterization methods (each a later issue).
 #pragma once
 
 #include <softraster/detail/exact/draw.hpp>
+#include <softraster/detail/fast/fragments.hpp>
 #include <softraster/framebuffer.hpp>
 #include <softraster/options.hpp>
 #include <softraster/shader.hpp>
 #include <softraster/state.hpp>
 #include <softraster/status.hpp>
 
+#include <algorithm>
 #include <cstdint>
+#include <memory>
 #include <span>
 #include <string>
+#include <thread>
 #include <vector>
 
 namespace softraster {
 
 class Context {
  public:
-  explicit Context(ContextOptions options = {}) : options_(options) {}
+  explicit Context(ContextOptions options = {})
+      : options_(options),
+        pool_(std::make_unique<detail::ThreadPool>(
+            options.threads != 0 ? options.threads : std::max(1u, std::thread::hardware_concurrency()))) {}
 
   const ContextOptions& options() const { return options_; }
+  // Threads drawing, the caller's included (options().threads, or the core count for 0).
+  unsigned threads() const { return pool_->threads(); }
 
   // vkCmdDraw: vertices 0..n-1 in order, assembled by state.topology.
   template <class Shader>
@@ -101,6 +113,14 @@ class Context {
   void drawWithFormat(const PipelineState& state, const typename Shader::Uniforms& uniforms,
                       std::span<const typename Shader::Vertex> vertices, std::span<const std::uint32_t> indices,
                       Framebuffer& framebuffer) const {
+#if SOFTRASTER_HAS_FAST_PATH
+    if constexpr (ShadesBatches<Shader>) {
+      if (options_.method == Method::Exact && options_.fusedMultiplyAdd && detail::fast::cpuRunsFastPath()) {
+        drawFast<Shader, Format>(state, uniforms, vertices, indices, framebuffer);
+        return;
+      }
+    }
+#endif
     if (options_.fusedMultiplyAdd) {
       drawFused<Shader, Format>(state, uniforms, vertices, indices, framebuffer);
     } else {
@@ -112,7 +132,8 @@ class Context {
   void drawExact(const PipelineState& state, const typename Shader::Uniforms& uniforms,
                  std::span<const typename Shader::Vertex> vertices, std::span<const std::uint32_t> indices,
                  Framebuffer& framebuffer) const {
-    detail::ExactDraw<Shader, Fused, Format>(state, uniforms, framebuffer, options_.depthMode == DepthMode::InverseZ)
+    const bool inverseZ = options_.depthMode == DepthMode::InverseZ;
+    detail::ExactDraw<Shader, Fused, Format>(state, uniforms, framebuffer, inverseZ, threadsFor(options_.method))
         .run(vertices, indices);
   }
 
@@ -128,7 +149,26 @@ class Context {
     drawExact<Shader, true, Format>(state, uniforms, vertices, indices, framebuffer);
   }
 
+#if SOFTRASTER_HAS_FAST_PATH
+  // The fast path: the same draw loop with the SIMD fragment stage, compiled for AVX2 and FMA and
+  // flattened so the shader's batch code becomes AVX2 code (simd.hpp says why that works).
+  template <class Shader, DepthFormat Format>
+  [[gnu::target("avx2,fma"), gnu::flatten]]
+  void drawFast(const PipelineState& state, const typename Shader::Uniforms& uniforms,
+                std::span<const typename Shader::Vertex> vertices, std::span<const std::uint32_t> indices,
+                Framebuffer& framebuffer) const {
+    detail::ExactDraw<Shader, true, Format, detail::fast::FastFragmentStage<Shader, Format>>(
+        state, uniforms, framebuffer, options_.depthMode == DepthMode::InverseZ, pool_.get())
+        .run(vertices, indices);
+  }
+#endif
+
+  // The scalar path is the reference the fast one is checked against: it runs on the calling
+  // thread alone, as one primitive after another, whatever the thread count.
+  detail::ThreadPool* threadsFor(Method method) const { return method == Method::Exact ? pool_.get() : nullptr; }
+
   ContextOptions options_;
+  std::unique_ptr<detail::ThreadPool> pool_;
 };
 
 }  // namespace softraster

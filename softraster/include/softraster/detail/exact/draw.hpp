@@ -4,7 +4,9 @@
 //   cull (geometry/culling) -> polygon modes (geometry/unfilled) -> snapping, the fixed-point cull
 //   and setup (exact/triangle_setup, exact/line_point_setup) -> coverage and fragments
 //   (fragment/shade, over exact/rasterizer and exact/interpolation).
-// Primitives are drawn one after another in submission order, each to completion.
+// Primitives reach the fragment stage in submission order; with more than one thread the band
+// queue (fast/bands.hpp) draws them band by band in parallel, each band in that order.
+// The same loop serves the scalar path and the fast path: only the fragment stage differs.
 // Deliberately absent: validation of the draw (pipeline.hpp's Context does it before any work)
 // and any choice of method or instruction set (the Context makes those and instantiates this).
 #pragma once
@@ -12,6 +14,8 @@
 #include <softraster/detail/exact/interpolation.hpp>
 #include <softraster/detail/exact/line_point_setup.hpp>
 #include <softraster/detail/exact/triangle_setup.hpp>
+#include <softraster/detail/fast/bands.hpp>
+#include <softraster/detail/fast/pool.hpp>
 #include <softraster/detail/fragment/shade.hpp>
 #include <softraster/detail/geometry/clipping.hpp>
 #include <softraster/detail/geometry/culling.hpp>
@@ -31,14 +35,17 @@
 
 namespace softraster::detail {
 
-template <class Shader, bool Fused, DepthFormat Format>
+// Fragments: the fragment stage, FragmentStage (scalar, fragment/shade.hpp) or the fast path's
+// fast::FastFragmentStage (fast/fragments.hpp); both take the same calls and give the same bits.
+template <class Shader, bool Fused, DepthFormat Format, class Fragments = FragmentStage<Shader, Fused, Format>>
 class ExactDraw {
  public:
   static constexpr int N = Shader::kVaryings;
   using Vertex = ShadedVertex<N>;
 
+  // pool: the Context's threads (nullptr or one thread: everything on the calling thread).
   ExactDraw(const PipelineState& state, const typename Shader::Uniforms& uniforms, Framebuffer& framebuffer,
-            bool inverseZ)
+            bool inverseZ, ThreadPool* pool = nullptr)
       : state_(state),
         rs_(state.rasterization),
         uniforms_(uniforms),
@@ -46,7 +53,7 @@ class ExactDraw {
         transform_(makeViewportTransform(viewport_)),
         region_(drawRegion(state.scissor, viewport_, framebuffer.width(), framebuffer.height())),
         multisample_(framebuffer.samples() == 4),
-        fragments_(state, uniforms, framebuffer, viewport_, region_, inverseZ) {}
+        fragments_(pool, state, uniforms, framebuffer, viewport_, region_, inverseZ) {}
 
   // Draws vertices[indices[k]] in order, assembled by the state's topology.
   void run(std::span<const typename Shader::Vertex> vertices, std::span<const std::uint32_t> indices) {
@@ -59,6 +66,7 @@ class ExactDraw {
     } else {
       drawTriangles(indices);
     }
+    fragments_.finish();
   }
 
  private:
@@ -195,7 +203,7 @@ class ExactDraw {
   ViewportTransform transform_;
   PixelRect region_;
   bool multisample_;
-  FragmentStage<Shader, Fused, Format> fragments_;
+  BandQueue<Fragments, typename Shader::Uniforms, N> fragments_;  // the stage, on one thread or in bands
   WindingFilter winding_{true, true};
   // Scratch, reused across primitives.
   std::vector<Vertex> shaded_;

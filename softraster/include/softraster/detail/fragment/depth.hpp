@@ -7,6 +7,7 @@
 #pragma once
 
 #include <softraster/formats.hpp>
+#include <softraster/simd.hpp>
 #include <softraster/state.hpp>
 
 #include <bit>
@@ -25,11 +26,7 @@ inline DepthRange fragmentDepthRange(const Viewport& vp, bool depthClamp) {
   return {std::fmin(vp.minDepth, vp.maxDepth), std::fmax(vp.minDepth, vp.maxDepth)};
 }
 
-// SSE minps/maxps, which lavapipe's clamps compile to: the second operand when either is NaN.
-inline float sseMin(float a, float b) { return a < b ? a : b; }
-inline float sseMax(float a, float b) { return a > b ? a : b; }
-
-// lp_build_clamp: max(min(z, hi), lo). A NaN depth (a degenerate plane setup) becomes hi.
+// lp_build_clamp: max(min(z, hi), lo) with SSE minps/maxps (simd.hpp). A NaN depth (a degenerate plane setup) becomes hi.
 inline float clampDepth(float z, DepthRange range) {
   z = sseMax(sseMin(z, 1.0f), 0.0f);
   return sseMax(sseMin(z, range.max), range.min);

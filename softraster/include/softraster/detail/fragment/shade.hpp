@@ -24,10 +24,15 @@
 
 namespace softraster::detail {
 
+// The instructions a fragment stage's code is compiled for (where the draw loop runs it on
+// other threads, fast/bands.hpp compiles it the same way there).
+enum class InstructionSet : std::uint8_t { Baseline, Fma, Avx2Fma };
+
 template <class Shader, bool Fused, DepthFormat Format>
 class FragmentStage {
  public:
   static constexpr int N = Shader::kVaryings;
+  static constexpr InstructionSet kInstructionSet = Fused ? InstructionSet::Fma : InstructionSet::Baseline;
 
   FragmentStage(const PipelineState& state, const typename Shader::Uniforms& uniforms, Framebuffer& framebuffer,
                 const Viewport& viewport, const PixelRect& region, bool inverseZ)
@@ -61,7 +66,7 @@ class FragmentStage {
         if (!passes) return;
       }
       interpolateVaryings<Fused>(t, kInterpolation, fx, fy, varyings.data());
-      blendColour(colour_ + 4 * pixel, Shader::fragment(uniforms_, varyings.data()), blend_);
+      blendColour(colour_ + 4 * pixel, shadeFragment<Shader>(uniforms_, varyings.data()), blend_);
       if (depthState_.testEnable && depthState_.writeEnable) depth_[pixel] = stored;
     });
   }
@@ -85,7 +90,7 @@ class FragmentStage {
       }
       if (passed == 0) return;
       interpolateVaryings<Fused>(t, kInterpolation, fx + 0.5f, fy + 0.5f, varyings.data());
-      const Vec4 c = Shader::fragment(uniforms_, varyings.data());
+      const Vec4 c = shadeFragment<Shader>(uniforms_, varyings.data());
       for (int s = 0; s < 4; ++s) {
         if (!(passed & (1u << s))) continue;
         const std::size_t sample = pixel * 4 + static_cast<std::size_t>(s);

@@ -1,0 +1,216 @@
+// The fast path's SIMD building blocks, for one 4x2 block of pixels (kBatchLanes = 8 lanes;
+// lane = 4 * row + column, so lanes 0-3 are one row and lanes 4-7 the next, and the block is two
+// 2x2 quads side by side): 64-bit edge tests, plane evaluation with the same fmuladd the scalar
+// path uses, the depth range clamp, depth storage conversion and test, UNORM8 colour conversion,
+// blending, and masked loads and stores of one block's colour and depth.
+// Every operation is the scalar path's operation per lane (same order, same rounding, FMA exactly
+// where the scalar path fuses), so the results are the same bits.
+// Compiled for AVX2 + FMA through the target attribute (SOFTRASTER_FAST_TARGET) and only ever
+// called from the fast path's entry point, which the Context takes when the CPU has both.
+// Deliberately absent: coverage walking and shading (fast/fragments.hpp), AVX-512 (16 lanes).
+#pragma once
+
+#if defined(__x86_64__) && (defined(__GNUC__) || defined(__clang__))
+#define SOFTRASTER_HAS_FAST_PATH 1
+#include <immintrin.h>
+#define SOFTRASTER_FAST_TARGET gnu::target("avx2,fma")
+#else
+#define SOFTRASTER_HAS_FAST_PATH 0
+#endif
+
+#if SOFTRASTER_HAS_FAST_PATH
+
+#include <softraster/detail/exact/interpolation.hpp>
+#include <softraster/detail/exact/triangle_setup.hpp>
+#include <softraster/detail/fragment/depth.hpp>
+#include <softraster/formats.hpp>
+#include <softraster/simd.hpp>
+#include <softraster/state.hpp>
+
+#include <cstddef>
+#include <cstdint>
+
+#pragma GCC diagnostic push
+#pragma GCC diagnostic ignored "-Wpsabi"
+
+namespace softraster::detail::fast {
+
+// Whether this CPU runs the fast path (AVX2 for the lanes, FMA for lavapipe's fused fmuladd).
+inline bool cpuRunsFastPath() { return __builtin_cpu_supports("avx2") && __builtin_cpu_supports("fma"); }
+
+inline constexpr int kBatchWidth = 4, kBatchHeight = 2;
+
+using Floats = FloatBatch::Native;
+using Mask = FloatBatch::NativeMask;  // per lane: -1 (true) or 0
+using Words = std::uint32_t __attribute__((vector_size(32)));
+
+inline constexpr Floats kLaneX = {0, 1, 2, 3, 0, 1, 2, 3};
+inline constexpr Floats kLaneY = {0, 0, 0, 0, 1, 1, 1, 1};
+
+[[SOFTRASTER_FAST_TARGET]] inline Floats broadcast(float s) { return reinterpret_cast<Floats>(_mm256_set1_ps(s)); }
+[[SOFTRASTER_FAST_TARGET]] inline Words broadcastWord(std::uint32_t s) {
+  return reinterpret_cast<Words>(_mm256_set1_epi32(static_cast<int>(s)));
+}
+
+// Lane mask (-1 or 0 per lane) of the low 8 bits of `bits`.
+[[SOFTRASTER_FAST_TARGET]] inline Mask laneMask(unsigned bits) {
+  const Mask b = reinterpret_cast<Mask>(_mm256_set1_epi32(static_cast<int>(bits)));
+  return (b & Mask{1, 2, 4, 8, 16, 32, 64, 128}) != 0;
+}
+
+[[SOFTRASTER_FAST_TARGET]] inline unsigned maskBits(Mask m) {
+  return static_cast<unsigned>(_mm256_movemask_ps(reinterpret_cast<__m256>(m)));
+}
+
+// fmuladd(a, b, c) fused, as the scalar path's fmuladd<true>.
+[[SOFTRASTER_FAST_TARGET]] inline Floats fmuladd(Floats a, Floats b, Floats c) {
+  return reinterpret_cast<Floats>(
+      _mm256_fmadd_ps(reinterpret_cast<__m256>(a), reinterpret_cast<__m256>(b), reinterpret_cast<__m256>(c)));
+}
+
+// A plane equation with its coefficients in every lane (set up once per primitive).
+struct BatchPlane {
+  Floats a0, dadx, dady;
+};
+
+[[SOFTRASTER_FAST_TARGET]] inline BatchPlane batchPlane(const PlaneEquation& p) {
+  return {broadcast(p.a0), broadcast(p.dadx), broadcast(p.dady)};
+}
+
+// evaluatePlane<true> per lane: fmuladd(dady, py, fmuladd(dadx, px, a0)).
+[[SOFTRASTER_FAST_TARGET]] inline Floats evaluatePlane(const BatchPlane& p, Floats px, Floats py) {
+  return fmuladd(p.dady, py, fmuladd(p.dadx, px, p.a0));
+}
+
+// The three edge functions of a triangle over one block: value at the block's first lane plus
+// a constant offset per lane (-dcdx * column + dcdy * row), in two halves of four 64-bit lanes
+// (rows 0 and 1).
+struct BlockEdges {
+  __m256i offsetRow0[3], offsetRow1[3];
+};
+
+[[SOFTRASTER_FAST_TARGET]] inline BlockEdges blockEdges(const EdgeFunction (&edges)[3]) {
+  BlockEdges b;
+  for (int i = 0; i < 3; ++i) {
+    const std::int64_t dx = edges[i].dcdx, dy = edges[i].dcdy;
+    b.offsetRow0[i] = _mm256_set_epi64x(-3 * dx, -2 * dx, -dx, 0);
+    b.offsetRow1[i] = _mm256_add_epi64(b.offsetRow0[i], _mm256_set1_epi64x(dy));
+  }
+  return b;
+}
+
+// Bit l set where lane l is strictly inside all three edges (value > 0), `first` the edge values
+// at lane 0.
+[[SOFTRASTER_FAST_TARGET]] inline unsigned insideBits(const BlockEdges& b, const std::int64_t (&first)[3]) {
+  const __m256i zero = _mm256_setzero_si256();
+  __m256i row0 = _mm256_set1_epi64x(-1), row1 = row0;
+  for (int i = 0; i < 3; ++i) {
+    const __m256i base = _mm256_set1_epi64x(first[i]);
+    row0 = _mm256_and_si256(row0, _mm256_cmpgt_epi64(_mm256_add_epi64(base, b.offsetRow0[i]), zero));
+    row1 = _mm256_and_si256(row1, _mm256_cmpgt_epi64(_mm256_add_epi64(base, b.offsetRow1[i]), zero));
+  }
+  const unsigned bits0 = static_cast<unsigned>(_mm256_movemask_pd(_mm256_castsi256_pd(row0)));
+  const unsigned bits1 = static_cast<unsigned>(_mm256_movemask_pd(_mm256_castsi256_pd(row1)));
+  return bits0 | (bits1 << 4);
+}
+
+// clampDepth per lane: SSE max(min(z, 1), 0), then max(min(z, range.max), range.min).
+[[SOFTRASTER_FAST_TARGET]] inline Floats clampDepth(Floats z, DepthRange range) {
+  z = z < broadcast(1.0f) ? z : broadcast(1.0f);
+  z = z > broadcast(0.0f) ? z : broadcast(0.0f);
+  z = z < broadcast(range.max) ? z : broadcast(range.max);
+  return z > broadcast(range.min) ? z : broadcast(range.min);
+}
+
+// depthToStorage<Format> per lane.
+template <DepthFormat Format>
+[[SOFTRASTER_FAST_TARGET]] inline Words depthToStorage(Floats z) {
+  if constexpr (Format == DepthFormat::D32Sfloat) {
+    return reinterpret_cast<Words>(z);
+  } else if constexpr (Format == DepthFormat::X8D24UnormPack32) {
+    // cvtps2dq rounds half to even, as nearbyint does in the default rounding mode.
+    return reinterpret_cast<Words>(_mm256_cvtps_epi32(reinterpret_cast<__m256>(z * broadcast(16777215.0f))));
+  } else {
+    const Floats shifted = z * broadcast(65535.0f / 65536.0f) + broadcast(128.0f);
+    return reinterpret_cast<Words>(shifted) & broadcastWord(0xffffu);
+  }
+}
+
+// compare(op, incoming, stored) per lane: floats for D32_SFLOAT, unsigned integers otherwise.
+template <class V>
+inline Mask compareLanes(CompareOp op, V incoming, V stored) {
+  switch (op) {
+    case CompareOp::Never: return Mask{};
+    case CompareOp::Less: return reinterpret_cast<Mask>(incoming < stored);
+    case CompareOp::Equal: return reinterpret_cast<Mask>(incoming == stored);
+    case CompareOp::LessOrEqual: return reinterpret_cast<Mask>(incoming <= stored);
+    case CompareOp::Greater: return reinterpret_cast<Mask>(incoming > stored);
+    case CompareOp::NotEqual: return reinterpret_cast<Mask>(incoming != stored);
+    case CompareOp::GreaterOrEqual: return reinterpret_cast<Mask>(incoming >= stored);
+    case CompareOp::Always: return ~Mask{};
+  }
+  return Mask{};
+}
+
+template <DepthFormat Format>
+inline Mask depthTestPasses(CompareOp op, Words incoming, Words stored) {
+  if constexpr (Format == DepthFormat::D32Sfloat) {
+    return compareLanes(op, reinterpret_cast<Floats>(incoming), reinterpret_cast<Floats>(stored));
+  } else {
+    return compareLanes(op, incoming, stored);
+  }
+}
+
+// unorm8FromFloat per lane: clamp to [0, 1] (NaN to 0), times 255, round half to even.
+[[SOFTRASTER_FAST_TARGET]] inline Words unorm8FromFloat(Floats v) {
+  const Floats one = broadcast(1.0f), zero = broadcast(0.0f);
+  const Floats clamped = v > zero ? (v < one ? v : one) : zero;
+  const Floats rounded = (clamped * broadcast(255.0f) + broadcast(8388608.0f)) - broadcast(8388608.0f);
+  return __builtin_convertvector(rounded, Words);
+}
+
+[[SOFTRASTER_FAST_TARGET]] inline Words packColour(const Vec4T<FloatBatch>& c) {
+  return unorm8FromFloat(c.x.native()) | (unorm8FromFloat(c.y.native()) << 8) |
+         (unorm8FromFloat(c.z.native()) << 16) | (unorm8FromFloat(c.w.native()) << 24);
+}
+
+// blendColour per lane on packed RGBA8: each side the value or zero, the sum saturating.
+[[SOFTRASTER_FAST_TARGET]] inline Words blendColour(Words source, Words destination, const BlendState& blend) {
+  if (!blend.enable) return source;
+  const Words byte = broadcastWord(0xffu);
+  Words out{};
+  for (int k = 0; k < 4; ++k) {
+    const Words s = blend.source == BlendFactor::One ? (source >> (8 * k)) & byte : Words{};
+    const Words d = blend.destination == BlendFactor::One ? (destination >> (8 * k)) & byte : Words{};
+    const Words sum = s + d;
+    out |= (sum > byte ? byte : sum) << (8 * k);
+  }
+  return out;
+}
+
+// One block's 32-bit values (colour as packed RGBA8, or depth as stored) at `first` (lane 0) in
+// an image `stride` values wide; only the lanes in `bits` are read or written, so a block may
+// overhang the image.
+[[SOFTRASTER_FAST_TARGET]] inline Words loadBlock(const std::uint32_t* first, std::size_t stride, unsigned bits) {
+  const __m256i mask = reinterpret_cast<__m256i>(laneMask(bits));
+  const __m128i row0 = _mm_maskload_epi32(reinterpret_cast<const int*>(first), _mm256_castsi256_si128(mask));
+  __m128i row1 = _mm_setzero_si128();
+  if (bits >> 4) row1 = _mm_maskload_epi32(reinterpret_cast<const int*>(first + stride), _mm256_extracti128_si256(mask, 1));
+  return reinterpret_cast<Words>(_mm256_set_m128i(row1, row0));
+}
+
+[[SOFTRASTER_FAST_TARGET]] inline void storeBlock(std::uint32_t* first, std::size_t stride, unsigned bits, Words values) {
+  const __m256i mask = reinterpret_cast<__m256i>(laneMask(bits));
+  const __m256i v = reinterpret_cast<__m256i>(values);
+  _mm_maskstore_epi32(reinterpret_cast<int*>(first), _mm256_castsi256_si128(mask), _mm256_castsi256_si128(v));
+  if (bits >> 4) {
+    _mm_maskstore_epi32(reinterpret_cast<int*>(first + stride), _mm256_extracti128_si256(mask, 1),
+                        _mm256_extracti128_si256(v, 1));
+  }
+}
+
+}  // namespace softraster::detail::fast
+
+#pragma GCC diagnostic pop
+
+#endif  // SOFTRASTER_HAS_FAST_PATH

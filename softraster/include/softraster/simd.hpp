@@ -1,0 +1,78 @@
+// FloatBatch: the SIMD float type a shader twin is written over, beside plain float. A shader's
+// fragment function is a template over its float type F; with F = float it shades one pixel,
+// with F = FloatBatch it shades kBatchLanes pixels at once (the fast path's 4x2 block: two 2x2
+// quads side by side, lane = 4 * row + column). Every operation rounds per lane exactly as the
+// same float operation does, so both give the same bits.
+//
+// Built on GCC/Clang vector extensions rather than a SIMD library, deliberately: an extension
+// vector carries no instruction-set attribute of its own, so the same shader source (which a
+// library user compiles with their own flags) inlines into the fast path's AVX2 entry point and
+// becomes AVX2 code there, while the binary stays portable and picks the instruction set at run
+// time. Highway, xsimd and std::experimental::simd bind the instruction set at the definition
+// (per-target namespaces, target-specific always_inline operations, or compile-time macros), so a
+// shader twin would have to be compiled once per target inside the library's dispatch machinery.
+//
+// Helpers here follow lavapipe's shader arithmetic (see docs/lavapipe-rules.md): sseMin/sseMax
+// are SSE minps/maxps (the second operand when either is NaN).
+// Deliberately absent until a shader needs them: transcendental functions (lavapipe's own
+// polynomials), integer batches for shaders, gathers.
+#pragma once
+
+#include <cstdint>
+#include <cstring>
+
+// The batch type is 32 bytes wide; outside AVX code GCC notes that passing it by value has a
+// different ABI there. Every function taking one is inline and the fast path inlines them all
+// into its own AVX2 entry point, so no call with that ABI exists.
+#pragma GCC diagnostic push
+#pragma GCC diagnostic ignored "-Wpsabi"
+
+namespace softraster {
+
+inline constexpr int kBatchLanes = 8;
+
+class FloatBatch {
+ public:
+  using Native = float __attribute__((vector_size(32)));
+  using NativeMask = std::int32_t __attribute__((vector_size(32)));
+
+  FloatBatch() : v_{} {}
+  // Every lane s (implicit, so a shader writes `c * 0.5f` for both of its float types).
+  FloatBatch(float s) : v_(Native{} + s) {}  // NOLINT(google-explicit-constructor); a vector-scalar add broadcasts in one instruction
+  explicit FloatBatch(Native v) : v_(v) {}
+
+  static FloatBatch load(const float* p) {
+    Native v;
+    std::memcpy(&v, p, sizeof v);
+    return FloatBatch(v);
+  }
+  void store(float* p) const { std::memcpy(p, &v_, sizeof v_); }
+
+  float operator[](int lane) const { return v_[lane]; }
+  Native native() const { return v_; }
+
+  friend FloatBatch operator+(FloatBatch a, FloatBatch b) { return FloatBatch(a.v_ + b.v_); }
+  friend FloatBatch operator-(FloatBatch a, FloatBatch b) { return FloatBatch(a.v_ - b.v_); }
+  friend FloatBatch operator*(FloatBatch a, FloatBatch b) { return FloatBatch(a.v_ * b.v_); }
+  friend FloatBatch operator/(FloatBatch a, FloatBatch b) { return FloatBatch(a.v_ / b.v_); }
+  friend FloatBatch operator-(FloatBatch a) { return FloatBatch(-a.v_); }
+  FloatBatch& operator+=(FloatBatch b) { return *this = *this + b; }
+  FloatBatch& operator-=(FloatBatch b) { return *this = *this - b; }
+  FloatBatch& operator*=(FloatBatch b) { return *this = *this * b; }
+  FloatBatch& operator/=(FloatBatch b) { return *this = *this / b; }
+
+  // Lane-wise a < b ? a : b (SSE minps) and a > b ? a : b (maxps).
+  friend FloatBatch sseMin(FloatBatch a, FloatBatch b) { return FloatBatch(a.v_ < b.v_ ? a.v_ : b.v_); }
+  friend FloatBatch sseMax(FloatBatch a, FloatBatch b) { return FloatBatch(a.v_ > b.v_ ? a.v_ : b.v_); }
+
+ private:
+  Native v_;
+};
+
+// The same helpers for plain float, so a shader twin calls them unqualified for either type.
+inline float sseMin(float a, float b) { return a < b ? a : b; }
+inline float sseMax(float a, float b) { return a > b ? a : b; }
+
+}  // namespace softraster
+
+#pragma GCC diagnostic pop

@@ -1,0 +1,68 @@
+// ThreadPool (detail/fast/pool.hpp): workers sleep on a condition variable between batches.
+#include <softraster/detail/fast/pool.hpp>
+
+namespace softraster::detail {
+
+ThreadPool::ThreadPool(unsigned threads) {
+  for (unsigned i = 1; i < threads; ++i) workers_.emplace_back([this] { work(); });
+}
+
+ThreadPool::~ThreadPool() {
+  {
+    std::lock_guard lock(mutex_);
+    stopping_ = true;
+  }
+  wake_.notify_all();
+  for (std::thread& t : workers_) t.join();
+}
+
+void ThreadPool::drain(const std::function<void(std::size_t)>& task, std::size_t count) {
+  for (std::size_t i = next_.fetch_add(1); i < count; i = next_.fetch_add(1)) task(i);
+}
+
+void ThreadPool::work() {
+  std::size_t seen = 0;
+  for (;;) {
+    const std::function<void(std::size_t)>* task;
+    std::size_t count;
+    {
+      std::unique_lock lock(mutex_);
+      wake_.wait(lock, [&] { return stopping_ || generation_ != seen; });
+      if (stopping_) return;
+      seen = generation_;
+      task = task_;  // read with the generation, under the lock: this batch's task and size
+      count = count_;
+      ++busy_;
+    }
+    if (task != nullptr) drain(*task, count);
+    {
+      std::lock_guard lock(mutex_);
+      --busy_;
+    }
+    done_.notify_one();
+  }
+}
+
+void ThreadPool::run(std::size_t count, const std::function<void(std::size_t)>& task) {
+  if (workers_.empty() || count <= 1) {
+    for (std::size_t i = 0; i < count; ++i) task(i);
+    return;
+  }
+  std::lock_guard serial(runMutex_);  // two draws on one Context from two threads take turns here
+  {
+    std::lock_guard lock(mutex_);
+    task_ = &task;
+    count_ = count;
+    next_.store(0);
+    ++generation_;
+  }
+  wake_.notify_all();
+  drain(task, count);
+  std::unique_lock lock(mutex_);
+  // Every index has been claimed once the caller's drain() returns; wait for the workers still
+  // running theirs. A worker that wakes after this finds the task cleared and goes back to sleep.
+  done_.wait(lock, [&] { return busy_ == 0; });
+  task_ = nullptr;
+}
+
+}  // namespace softraster::detail
