@@ -128,12 +128,12 @@ std::optional<Frame> renderVulkan(const Scene& scene, vkref::Renderer& renderer,
     request.draws.push_back(std::move(call));
   }
   const auto start = Clock::now();
-  vkref::FrameImages images;
-  std::string vkError;
-  if (!renderer.render(request, &images, &vkError)) {
-    *error = "vulkan: " + vkError;
+  auto rendered = renderer.render(request);
+  if (!rendered) {
+    *error = "vulkan: " + rendered.error();
     return std::nullopt;
   }
+  vkref::FrameImages images = std::move(*rendered);
   Frame frame;
   frame.milliseconds = millisecondsSince(start);
   frame.width = images.width;

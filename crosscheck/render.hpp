@@ -1,6 +1,6 @@
 // Renders a Scene with either renderer into a Frame: RGBA8 colour and float depth, row 0 at the
 // top. Both adapters hand the renderers the same vertices, indices, matrices and PipelineState.
-// Deliberately no caching between frames: one call, one frame.
+// Deliberately one call, one frame (the vkref::Renderer keeps only its compiled pipelines).
 #pragma once
 
 #include "scene.hpp"
