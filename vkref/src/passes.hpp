@@ -56,7 +56,8 @@ void barrier(VkCommandBuffer cmd, std::span<const VkImageMemoryBarrier2> images,
              const VkMemoryBarrier2* memory = nullptr);
 
 // A prepared frame's command pool with its two command buffers (the render pass; the copies to
-// the host) and the fence their submissions wait on. Move-only by its owner's unique_ptr.
+// the host) and the fence their submissions wait on. Neither copied nor moved: its owner holds
+// it by unique_ptr.
 class Commands {
  public:
   static softraster::Result<std::unique_ptr<Commands>> create(const Device& device);

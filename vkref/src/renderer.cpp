@@ -10,7 +10,6 @@
 #include <vkref/renderer.hpp>
 
 #include "device.hpp"
-#include "errors.hpp"
 #include "passes.hpp"
 #include "pipelines.hpp"
 #include "readback.hpp"
