@@ -24,7 +24,9 @@ struct VulkanSlot {
   vkref::Renderer* get(const vkref::DeviceOptions& options, std::string* out) {
     if (!tried) {
       tried = true;
-      renderer = vkref::Renderer::create(options, &error);
+      auto created = vkref::Renderer::create(options);
+      if (created) renderer = std::move(*created);
+      else error = created.error();
     }
     if (!renderer) *out = error;
     return renderer.get();

@@ -51,7 +51,9 @@ std::unique_ptr<vkref::Renderer> openVulkan(const CommonOptions& options, std::s
   vkref::DeviceOptions device;
   device.deviceName = options.device;
   device.validation = options.validation;
-  return vkref::Renderer::create(device, error);
+  auto renderer = vkref::Renderer::create(device);
+  if (!renderer) *error = renderer.error();
+  return renderer ? std::move(*renderer) : nullptr;
 }
 
 std::optional<Frame> renderWith(const std::string& renderer, const Scene& scene, const CommonOptions& options,

@@ -127,15 +127,24 @@ std::optional<Frame> renderVulkan(const Scene& scene, vkref::Renderer& renderer,
     call.pushConstants = bytesOf(&uniforms, 1);
     request.draws.push_back(std::move(call));
   }
-  const auto start = Clock::now();
-  vkref::FrameImages images;
-  std::string vkError;
-  if (!renderer.render(request, &images, &vkError)) {
-    *error = "vulkan: " + vkError;
+  // Only the submission is timed (clear, draws, resolve); preparing (uploads, pipelines,
+  // recording) and reading back are not.
+  auto prepared = renderer.prepare(request);
+  if (!prepared) {
+    *error = "vulkan: " + prepared.error();
     return std::nullopt;
   }
+  const auto start = Clock::now();
+  const softraster::Status submitted = renderer.submit(*prepared);
+  const double milliseconds = millisecondsSince(start);
+  auto readBack = submitted ? renderer.readBack(*prepared) : softraster::Result<vkref::FrameImages>(submitted);
+  if (!readBack) {
+    *error = "vulkan: " + readBack.error();
+    return std::nullopt;
+  }
+  vkref::FrameImages images = std::move(*readBack);
   Frame frame;
-  frame.milliseconds = millisecondsSince(start);
+  frame.milliseconds = milliseconds;
   frame.width = images.width;
   frame.height = images.height;
   frame.rgba = std::move(images.rgba);

@@ -1,6 +1,6 @@
 // Renders a Scene with either renderer into a Frame: RGBA8 colour and float depth, row 0 at the
 // top. Both adapters hand the renderers the same vertices, indices, matrices and PipelineState.
-// Deliberately no caching between frames: one call, one frame.
+// Deliberately one call, one frame (the vkref::Renderer keeps only its compiled pipelines).
 #pragma once
 
 #include "scene.hpp"
@@ -21,7 +21,7 @@ struct Frame {
   std::vector<float> depth;                 // as floats in [0, 1], for views
   softraster::DepthFormat depthFormat = softraster::DepthFormat::D32Sfloat;
   std::vector<std::uint32_t> depthStorage;  // as the format stores it, for exact comparison
-  double milliseconds = 0;                  // wall time of the render call itself
+  double milliseconds = 0;                  // wall time of the rendering itself (vkref: submit only)
 };
 
 std::optional<Frame> renderSoftraster(const Scene& scene, std::string* error,

@@ -47,7 +47,9 @@ void renderBoth(const std::string& name, RenderedScene& out, const softraster::C
   ASSERT_TRUE(out.scene) << error;
   vkref::DeviceOptions device;
   device.validation = true;
-  auto vulkan = vkref::Renderer::create(device, &error);
+  auto created = vkref::Renderer::create(device);
+  if (!created) error = created.error();
+  auto vulkan = created ? std::move(*created) : nullptr;
   ASSERT_TRUE(vulkan) << error;
   out.soft = crosscheck::renderSoftraster(*out.scene, &error, options);
   ASSERT_TRUE(out.soft) << error;

@@ -1,59 +1,23 @@
-// vkref: renders a frame through a real Vulkan pipeline (Mesa lavapipe by default), headless,
-// and reads colour (R8G8B8A8_UNORM) and depth (D16_UNORM, X8_D24_UNORM_PACK32 or D32_SFLOAT)
-// back to host memory.
-// The pipeline is built from softraster::PipelineState, the same value softraster draws with;
-// a state Vulkan here cannot express is reported as an error.
-// Deliberately not a general Vulkan wrapper: no window, no swapchain, one frame per call.
+// vkref: renders frames through a real Vulkan pipeline (Mesa lavapipe by default), headless, and
+// reads colour (R8G8B8A8_UNORM) and depth (D16_UNORM, X8_D24_UNORM_PACK32 or D32_SFLOAT) back to
+// host memory. Each pipeline is built from softraster::PipelineState, the same value softraster
+// draws with; a state Vulkan here cannot express is reported as an error, never defaulted.
+// A frame is prepared once (images, uploads, pipelines, recorded commands) and submitted as often
+// as wanted, so a benchmark times steady-state frames; render() does all three steps at once.
+// Deliberately not a general Vulkan wrapper: no window, no swapchain, no textures, one queue.
+// Errors are softraster::Status / Result values of one line; the library never prints.
 #pragma once
 
-#include <softraster/framebuffer.hpp>
-#include <softraster/shader.hpp>
-#include <softraster/state.hpp>
+#include <vkref/frame.hpp>
 
-#include <array>
+#include <softraster/status.hpp>
+
 #include <cstddef>
-#include <cstdint>
 #include <memory>
-#include <span>
 #include <string>
 #include <vector>
 
 namespace vkref {
-
-// A compiled shader pair and the vertex layout its vertex stage reads.
-struct ShaderProgram {
-  std::string name;
-  std::span<const std::uint32_t> vertexSpirv;
-  std::span<const std::uint32_t> fragmentSpirv;
-  std::vector<softraster::VertexAttribute> attributes;
-  std::uint32_t vertexStride = 0;  // bytes
-};
-
-struct DrawCall {
-  const ShaderProgram* program = nullptr;
-  softraster::PipelineState state;
-  std::vector<std::byte> vertexData;        // vertexStride bytes per vertex
-  bool indexed = true;                      // vkCmdDrawIndexed with `indices`, else vkCmdDraw of all vertices
-  std::vector<std::uint32_t> indices;       // assembled by state.topology
-  std::vector<std::byte> pushConstants;     // visible to vertex and fragment stages, <= 128 bytes
-};
-
-struct FrameRequest {
-  std::uint32_t width = 0, height = 0;
-  std::array<float, 4> clearColour{0, 0, 0, 0};
-  float clearDepth = 1.0f;
-  softraster::DepthFormat depthFormat = softraster::DepthFormat::D32Sfloat;
-  std::uint32_t samples = 1;  // 1, or 4: rendered multisampled, colour resolved (average) and
-                              // depth resolved (sample 0) before read-back
-  std::vector<DrawCall> draws;
-};
-
-struct FrameImages {
-  std::uint32_t width = 0, height = 0;
-  std::vector<std::uint8_t> rgba;          // width*height*4, row 0 at the top
-  std::vector<float> depth;                // width*height, as floats in [0, 1]
-  std::vector<std::uint32_t> depthStorage; // width*height, as stored: UNORM integer or the float's bits
-};
 
 struct DeviceOptions {
   std::string deviceName;   // substring of VkPhysicalDeviceProperties::deviceName; empty: lavapipe
@@ -62,18 +26,28 @@ struct DeviceOptions {
 
 class Renderer {
  public:
-  // Returns nullptr and sets *error (one line) when no usable Vulkan device exists.
-  static std::unique_ptr<Renderer> create(const DeviceOptions& options, std::string* error);
-  ~Renderer();
+  // Opens the device; an error when no usable Vulkan device exists.
+  static softraster::Result<std::unique_ptr<Renderer>> create(const DeviceOptions& options);
+  ~Renderer();  // destroy every PreparedFrame of this Renderer first
   Renderer(const Renderer&) = delete;
   Renderer& operator=(const Renderer&) = delete;
 
-  // Renders the frame; returns false and sets *error on failure.
-  bool render(const FrameRequest& request, FrameImages* out, std::string* error);
+  // Checks the request, creates its images, uploads its vertices and indices, takes its pipelines
+  // from the cache (compiling the ones not seen before) and records its command buffers.
+  softraster::Result<PreparedFrame> prepare(const FrameRequest& request);
+  // Renders the prepared frame (clear, draws, resolve) and waits until it is done.
+  softraster::Status submit(PreparedFrame& frame);
+  // Copies the images of the last submission to host memory: colour resolved, depth as floats
+  // and as stored. An error before the frame's first submission.
+  softraster::Result<FrameImages> readBack(const PreparedFrame& frame);
+  // prepare + submit + readBack, for a frame rendered once.
+  softraster::Result<FrameImages> render(const FrameRequest& request);
 
   std::string deviceName() const;
   // Messages reported by the validation layer since creation (warnings and errors).
   std::vector<std::string> validationMessages() const;
+  // Pipelines compiled so far; each is compiled once and kept until the Renderer is destroyed.
+  std::size_t cachedPipelines() const;
 
   struct Impl;
 

@@ -1,0 +1,81 @@
+// vkref frames: what a caller hands the Renderer (a FrameRequest of DrawCalls, each with its
+// ShaderProgram and softraster::PipelineState), what it gets back (FrameImages: colour, depth as
+// floats and depth as stored) and the handle of a frame prepared once and submitted many times.
+// Deliberately plain values: no Vulkan type appears here, and nothing in a request is kept after
+// Renderer::prepare returns (vertices and indices are uploaded, push constants recorded).
+#pragma once
+
+#include <softraster/framebuffer.hpp>
+#include <softraster/shader.hpp>
+#include <softraster/state.hpp>
+
+#include <array>
+#include <cstddef>
+#include <cstdint>
+#include <memory>
+#include <span>
+#include <string>
+#include <vector>
+
+namespace vkref {
+
+// A compiled shader pair and the vertex layout its vertex stage reads. Programs with the same
+// SPIR-V and layout share their pipelines, whatever object or name they come in.
+struct ShaderProgram {
+  std::string name;  // for messages
+  std::span<const std::uint32_t> vertexSpirv;
+  std::span<const std::uint32_t> fragmentSpirv;
+  std::vector<softraster::VertexAttribute> attributes;
+  std::uint32_t vertexStride = 0;  // bytes
+};
+
+struct DrawCall {
+  const ShaderProgram* program = nullptr;
+  softraster::PipelineState state;
+  std::vector<std::byte> vertexData;        // vertexStride bytes per vertex
+  bool indexed = true;                      // vkCmdDrawIndexed with `indices`, else vkCmdDraw of all vertices
+  std::vector<std::uint32_t> indices;       // assembled by state.topology
+  std::vector<std::byte> pushConstants;     // visible to vertex and fragment stages, <= 128 bytes
+};
+
+struct FrameRequest {
+  std::uint32_t width = 0, height = 0;
+  std::array<float, 4> clearColour{0, 0, 0, 0};
+  float clearDepth = 1.0f;
+  softraster::DepthFormat depthFormat = softraster::DepthFormat::D32Sfloat;
+  std::uint32_t samples = 1;  // 1, or 4: rendered multisampled, colour resolved (average) and
+                              // depth resolved (sample 0) before read-back
+  std::vector<DrawCall> draws;  // drawn in order; a draw with nothing to assemble is skipped
+};
+
+struct FrameImages {
+  std::uint32_t width = 0, height = 0;
+  std::vector<std::uint8_t> rgba;          // width*height*4, row 0 at the top
+  std::vector<float> depth;                // width*height, as floats in [0, 1]
+  std::vector<std::uint32_t> depthStorage; // width*height, as stored: UNORM integer or the float's bits
+};
+
+// A frame made ready by Renderer::prepare: its images, its uploaded vertices and indices and its
+// recorded command buffers (the pipelines stay in the Renderer's cache). Submit it as often as
+// wanted; every submission clears and draws the whole frame again. Movable, not copyable; used by
+// one thread at a time; destroy it before the Renderer that prepared it.
+class PreparedFrame {
+ public:
+  PreparedFrame();  // empty: prepares nothing, and submitting it is an error
+  PreparedFrame(PreparedFrame&&) noexcept;
+  PreparedFrame& operator=(PreparedFrame&&) noexcept;
+  ~PreparedFrame();
+
+  bool empty() const { return !impl_; }
+  std::uint32_t width() const;
+  std::uint32_t height() const;
+
+  struct Impl;
+
+ private:
+  friend class Renderer;
+  explicit PreparedFrame(std::unique_ptr<Impl> impl);
+  std::unique_ptr<Impl> impl_;
+};
+
+}  // namespace vkref

@@ -1,0 +1,66 @@
+// vkref device: the Vulkan instance (with VK_LAYER_KHRONOS_validation and a debug messenger that
+// collects its warnings and errors, when asked), the pick of lavapipe or of a named device, the
+// features and formats it offers, and its one graphics queue.
+// Deliberately nothing per frame (images and buffers: resources; pipelines: pipelines; command
+// buffers: passes) and no printing: validation messages are kept for the caller to read.
+#pragma once
+
+#include <vkref/renderer.hpp>
+
+#include <softraster/framebuffer.hpp>
+#include <softraster/status.hpp>
+
+#include <vulkan/vulkan.h>
+
+#include <array>
+#include <cstdint>
+#include <iterator>
+#include <memory>
+#include <mutex>
+#include <string>
+#include <vector>
+
+namespace vkref::detail {
+
+// Colour is always R8G8B8A8_UNORM; the depth format is the request's.
+inline constexpr VkFormat kColourFormat = VK_FORMAT_R8G8B8A8_UNORM;
+// Indexed by softraster::DepthFormat.
+inline constexpr VkFormat kDepthFormats[] = {VK_FORMAT_D16_UNORM, VK_FORMAT_X8_D24_UNORM_PACK32,
+                                             VK_FORMAT_D32_SFLOAT};
+
+// An open device. Not movable: the debug messenger holds its address.
+class Device {
+ public:
+  static softraster::Result<std::unique_ptr<Device>> create(const DeviceOptions& options);
+  ~Device();  // waits for the device to be idle, then destroys it, the messenger and the instance
+  Device(const Device&) = delete;
+  Device& operator=(const Device&) = delete;
+
+  VkDevice device = VK_NULL_HANDLE;
+  VkQueue queue = VK_NULL_HANDLE;
+  std::uint32_t queueFamily = 0;
+  VkPhysicalDeviceMemoryProperties memory{};
+  VkPhysicalDeviceLimits limits{};
+  VkPhysicalDeviceFeatures features{};  // the core features enabled on `device`
+  bool bresenhamLines = false;          // VK_EXT_line_rasterization with bresenhamLines enabled
+  std::array<bool, std::size(kDepthFormats)> depthFormatUsable{};  // can be rendered to and copied
+  std::string name;
+
+  // Messages the validation layer reported so far (thread-safe: the layer may call from any thread).
+  std::vector<std::string> messages() const;
+  void addMessage(const char* text);
+
+ private:
+  Device() = default;
+  softraster::Status createInstance(bool validation);
+  softraster::Status pickDevice(const std::string& wanted);
+  softraster::Status createDevice();
+
+  VkInstance instance_ = VK_NULL_HANDLE;
+  VkDebugUtilsMessengerEXT messenger_ = VK_NULL_HANDLE;
+  VkPhysicalDevice physicalDevice_ = VK_NULL_HANDLE;
+  mutable std::mutex messagesMutex_;
+  std::vector<std::string> messages_;
+};
+
+}  // namespace vkref::detail

@@ -1,0 +1,352 @@
+// vkref pipelines (see pipelines.hpp): checks, state translation and the pipeline cache.
+#include "pipelines.hpp"
+
+#include "errors.hpp"
+
+#include <bit>
+#include <cmath>
+#include <cstring>
+#include <functional>
+#include <iterator>
+#include <span>
+#include <string_view>
+
+namespace vkref::detail {
+namespace {
+
+using softraster::Status;
+
+// Indexed by the softraster enumerators.
+constexpr VkCullModeFlags kCullModes[] = {VK_CULL_MODE_NONE, VK_CULL_MODE_FRONT_BIT, VK_CULL_MODE_BACK_BIT,
+                                          VK_CULL_MODE_FRONT_AND_BACK};
+constexpr VkFrontFace kFrontFaces[] = {VK_FRONT_FACE_COUNTER_CLOCKWISE, VK_FRONT_FACE_CLOCKWISE};
+constexpr VkFormat kAttributeFormats[] = {VK_FORMAT_R32_SFLOAT, VK_FORMAT_R32G32_SFLOAT, VK_FORMAT_R32G32B32_SFLOAT,
+                                          VK_FORMAT_R32G32B32A32_SFLOAT};
+static_assert(static_cast<int>(softraster::CompareOp::Always) == VK_COMPARE_OP_ALWAYS,
+              "softraster::CompareOp lists Vulkan's compare ops in Vulkan's order");
+// A tripwire: a field added to PipelineState must also join PipelineCache::Key (and compile()),
+// or draws differing only in it would share a pipeline.
+static_assert(sizeof(softraster::PipelineState) == 80, "PipelineState changed: update PipelineCache::Key");
+
+// The viewport a draw uses: a zero width or height means the whole framebuffer.
+VkViewport viewportFor(const softraster::Viewport& v, std::uint32_t width, std::uint32_t height) {
+  if (v.width == 0 || v.height == 0)
+    return {0, 0, static_cast<float>(width), static_cast<float>(height), v.minDepth, v.maxDepth};
+  return {v.x, v.y, v.width, v.height, v.minDepth, v.maxDepth};
+}
+
+// The scissor a draw uses: a zero width or height means the whole framebuffer.
+VkRect2D scissorFor(const softraster::Scissor& s, std::uint32_t width, std::uint32_t height) {
+  if (s.width == 0 || s.height == 0) return {{0, 0}, {width, height}};
+  return {{s.x, s.y}, {s.width, s.height}};
+}
+
+template <class T>
+std::string_view bytesOf(const std::vector<T>& v) {
+  return {reinterpret_cast<const char*>(v.data()), v.size() * sizeof(T)};
+}
+template <class T>
+std::string_view bytesOf(std::span<const T> v) {
+  return {reinterpret_cast<const char*>(v.data()), v.size_bytes()};
+}
+
+}  // namespace
+
+std::uint32_t vertexCount(const DrawCall& d) {
+  const std::uint32_t stride = d.program && d.program->vertexStride ? d.program->vertexStride : 1;
+  return static_cast<std::uint32_t>(d.vertexData.size() / stride);
+}
+
+bool isEmpty(const DrawCall& d) { return d.indexed ? d.indices.empty() : vertexCount(d) == 0; }
+
+// ---- Checks ------------------------------------------------------------------------------------
+
+Status checkFrame(const FrameRequest& request, const Device& device) {
+  const VkPhysicalDeviceLimits& limits = device.limits;
+  const std::uint32_t width = request.width, height = request.height;
+  if (width == 0 || height == 0 || width > limits.maxFramebufferWidth || height > limits.maxFramebufferHeight)
+    return Status::error("frame size " + std::to_string(width) + "x" + std::to_string(height) + " out of range (1.." +
+                         std::to_string(limits.maxFramebufferWidth) + "x" +
+                         std::to_string(limits.maxFramebufferHeight) + ")");
+  if (!(request.clearDepth >= 0 && request.clearDepth <= 1)) return Status::error("clearDepth outside [0, 1]");
+  const auto depthIndex = static_cast<std::size_t>(request.depthFormat);
+  if (depthIndex >= std::size(kDepthFormats) || !device.depthFormatUsable[depthIndex])
+    return Status::error("depth format " + std::to_string(depthIndex) +
+                         " cannot be rendered to and copied on this device");
+  if (request.samples != 1 && request.samples != 4) return Status::error("sample count must be 1 or 4");
+  if (request.samples == 4 && (!(limits.framebufferColorSampleCounts & VK_SAMPLE_COUNT_4_BIT) ||
+                               !(limits.framebufferDepthSampleCounts & VK_SAMPLE_COUNT_4_BIT)))
+    return Status::error("the device cannot render 4x multisampled colour and depth");
+  return {};
+}
+
+Status checkDraw(const DrawCall& d, std::uint32_t width, std::uint32_t height, const Device& device) {
+  const VkPhysicalDeviceLimits& limits = device.limits;
+  const VkPhysicalDeviceFeatures& features = device.features;
+  const ShaderProgram* p = d.program;
+  if (!p) return Status::error("no shader program");
+  constexpr std::uint32_t kSpirvMagic = 0x07230203;
+  for (std::span<const std::uint32_t> code : {p->vertexSpirv, p->fragmentSpirv})
+    if (code.size() < 5 || code[0] != kSpirvMagic) return Status::error("program '" + p->name + "' lacks valid SPIR-V");
+  if (d.pushConstants.size() > kPushConstantBytes || d.pushConstants.size() % 4 != 0)
+    return Status::error(std::to_string(d.pushConstants.size()) +
+                         " bytes of push constants (need a multiple of 4, at most 128)");
+
+  const softraster::PipelineState& s = d.state;
+  if (s.topology > softraster::Topology::TriangleFan) return Status::error("unsupported topology");
+  if (s.rasterization.depthClampEnable && !features.depthClamp)
+    return Status::error("depth clamp is not supported by the device");
+  if (s.rasterization.depthBias.enable && s.rasterization.depthBias.clamp != 0 && !features.depthBiasClamp)
+    return Status::error("depth bias clamp is not supported by the device");
+  if (s.rasterization.lineWidth != 1.0f && !features.wideLines)
+    return Status::error("wide lines are not supported by the device");
+  if (s.rasterization.polygonMode > softraster::PolygonMode::Point) return Status::error("unsupported polygon mode");
+  if (s.rasterization.polygonMode != softraster::PolygonMode::Fill && !features.fillModeNonSolid)
+    return Status::error("polygon modes line and point are not supported by the device");
+  if (s.rasterization.lineWidth < limits.lineWidthRange[0] || s.rasterization.lineWidth > limits.lineWidthRange[1])
+    return Status::error("line width outside the device's range");
+  if (s.rasterization.lineRasterization == softraster::LineRasterization::Bresenham && !device.bresenhamLines)
+    return Status::error("Bresenham lines (VK_EXT_line_rasterization) are not supported by the device");
+  if (s.scissor.x < 0 || s.scissor.y < 0) return Status::error("scissor offset is negative");
+  if (static_cast<std::size_t>(s.rasterization.cullMode) >= std::size(kCullModes))
+    return Status::error("unsupported cull mode");
+  if (static_cast<std::size_t>(s.rasterization.frontFace) >= std::size(kFrontFaces))
+    return Status::error("unsupported front face");
+  if (s.depth.compareOp > softraster::CompareOp::Always) return Status::error("unsupported depth compare op");
+
+  const VkViewport v = viewportFor(s.viewport, width, height);
+  const float* bounds = limits.viewportBoundsRange;
+  if (!(v.width > 0 && v.width <= static_cast<float>(limits.maxViewportDimensions[0]) && v.height != 0 &&
+        std::fabs(v.height) <= static_cast<float>(limits.maxViewportDimensions[1])))
+    return Status::error("viewport size out of range");
+  if (!(v.x >= bounds[0] && v.x + v.width <= bounds[1] && std::fmin(v.y, v.y + v.height) >= bounds[0] &&
+        std::fmax(v.y, v.y + v.height) <= bounds[1]))
+    return Status::error("viewport outside the device's viewport bounds");
+  if (!(v.minDepth >= 0 && v.minDepth <= 1 && v.maxDepth >= 0 && v.maxDepth <= 1))
+    return Status::error("viewport depth range outside [0, 1]");
+
+  if (p->attributes.empty()) return {};  // the vertex shader reads no vertex buffer
+  if (p->vertexStride == 0 || p->vertexStride > limits.maxVertexInputBindingStride)
+    return Status::error("vertex stride " + std::to_string(p->vertexStride) + " out of range");
+  for (const softraster::VertexAttribute& a : p->attributes)
+    if (a.components < 1 || a.components > 4 || a.location >= limits.maxVertexInputAttributes ||
+        a.offset > limits.maxVertexInputAttributeOffset || a.offset + 4 * a.components > p->vertexStride)
+      return Status::error("vertex attribute at location " + std::to_string(a.location) + " does not fit the vertex");
+  const std::size_t vertices = d.vertexData.size() / p->vertexStride;
+  for (std::uint32_t index : d.indices)
+    if (index >= vertices)
+      return Status::error("index " + std::to_string(index) + " out of range (" + std::to_string(vertices) +
+                           " vertices)");
+  return {};
+}
+
+// ---- The cache ---------------------------------------------------------------------------------
+
+softraster::Result<std::unique_ptr<PipelineCache>> PipelineCache::create(const Device& device) {
+  std::unique_ptr<PipelineCache> cache(new PipelineCache(device.device));
+  const VkPushConstantRange pushRange{kPushConstantStages, 0, kPushConstantBytes};
+  const VkPipelineLayoutCreateInfo layoutInfo{.sType = VK_STRUCTURE_TYPE_PIPELINE_LAYOUT_CREATE_INFO,
+                                              .pushConstantRangeCount = 1,
+                                              .pPushConstantRanges = &pushRange};
+  if (Status s = check(vkCreatePipelineLayout(device.device, &layoutInfo, nullptr, &cache->layout_),
+                       "vkCreatePipelineLayout");
+      !s)
+    return s;
+  return cache;
+}
+
+PipelineCache::~PipelineCache() {
+  for (const auto& [key, pipeline] : pipelines_) vkDestroyPipeline(device_, pipeline, nullptr);
+  vkDestroyPipelineLayout(device_, layout_, nullptr);
+}
+
+std::uint32_t PipelineCache::programIndex(const ShaderProgram& p, FrameMemo& memo) {
+  for (const FrameMemo::Entry& e : memo.entries_) {
+    const Program& known = programs_[e.program];
+    if (e.vertex == p.vertexSpirv.data() && e.vertexWords == p.vertexSpirv.size() &&
+        e.fragment == p.fragmentSpirv.data() && e.fragmentWords == p.fragmentSpirv.size() &&
+        known.vertexStride == p.vertexStride && bytesOf(known.attributes) == bytesOf(p.attributes))
+      return e.program;
+  }
+  const std::uint32_t index = internProgram(p);
+  memo.entries_.push_back(
+      {p.vertexSpirv.data(), p.vertexSpirv.size(), p.fragmentSpirv.data(), p.fragmentSpirv.size(), index});
+  return index;
+}
+
+// Programs are told apart by content, not by address or name: callers make a ShaderProgram per
+// draw or per frame, and an address may hold another program later.
+std::uint32_t PipelineCache::internProgram(const ShaderProgram& p) {
+  const std::hash<std::string_view> hash;
+  std::size_t h = hash(bytesOf(p.vertexSpirv));
+  h = h * 31 + hash(bytesOf(p.fragmentSpirv));
+  h = h * 31 + hash(bytesOf(p.attributes));
+  h = h * 31 + p.vertexStride;
+  const auto same = [&](const Program& known) {
+    return known.vertexStride == p.vertexStride && bytesOf(known.vertexSpirv) == bytesOf(p.vertexSpirv) &&
+           bytesOf(known.fragmentSpirv) == bytesOf(p.fragmentSpirv) &&
+           bytesOf(known.attributes) == bytesOf(p.attributes);
+  };
+  for (auto [it, end] = programsByHash_.equal_range(h); it != end; ++it)
+    if (same(programs_[it->second])) return it->second;
+  const auto index = static_cast<std::uint32_t>(programs_.size());
+  programs_.push_back({{p.vertexSpirv.begin(), p.vertexSpirv.end()},
+                       {p.fragmentSpirv.begin(), p.fragmentSpirv.end()},
+                       p.attributes,
+                       p.vertexStride});
+  programsByHash_.emplace(h, index);
+  return index;
+}
+
+softraster::Result<VkPipeline> PipelineCache::get(const DrawCall& d, const TargetFormat& target, FrameMemo& memo) {
+  const softraster::PipelineState& s = d.state;
+  const softraster::RasterizationState& r = s.rasterization;
+  const VkViewport v = viewportFor(s.viewport, target.width, target.height);
+  const VkRect2D sc = scissorFor(s.scissor, target.width, target.height);
+  const auto bits = [](float f) { return std::bit_cast<std::uint32_t>(f); };
+  const auto byte = [](auto e) { return static_cast<std::uint8_t>(e); };
+  Key key;
+  key.program = programIndex(*d.program, memo);
+  key.depthFormat = target.depthFormat;
+  key.samples = target.samples;
+  key.topology = byte(s.topology);
+  key.polygonMode = byte(r.polygonMode);
+  key.cullMode = byte(r.cullMode);
+  key.frontFace = byte(r.frontFace);
+  key.lineRasterization = byte(r.lineRasterization);
+  key.depthClamp = r.depthClampEnable;
+  key.depthBias = r.depthBias.enable;
+  key.biasConstant = bits(r.depthBias.constantFactor);
+  key.biasClamp = bits(r.depthBias.clamp);
+  key.biasSlope = bits(r.depthBias.slopeFactor);
+  key.lineWidth = bits(r.lineWidth);
+  key.viewport = {bits(v.x), bits(v.y), bits(v.width), bits(v.height), bits(v.minDepth), bits(v.maxDepth)};
+  key.scissorX = sc.offset.x;
+  key.scissorY = sc.offset.y;
+  key.scissorWidth = sc.extent.width;
+  key.scissorHeight = sc.extent.height;
+  key.depthTest = s.depth.testEnable;
+  key.depthWrite = s.depth.writeEnable;
+  key.depthCompare = byte(s.depth.compareOp);
+  key.blend = s.blend.enable;
+  key.blendSource = byte(s.blend.source);
+  key.blendDestination = byte(s.blend.destination);
+
+  if (const auto found = pipelines_.find(key); found != pipelines_.end()) return found->second;
+  softraster::Result<VkPipeline> pipeline = compile(programs_[key.program], s, target);
+  if (pipeline) pipelines_.emplace(key, *pipeline);
+  return pipeline;
+}
+
+// ---- State translation -------------------------------------------------------------------------
+
+softraster::Result<VkPipeline> PipelineCache::compile(const Program& p, const softraster::PipelineState& state,
+                                                      const TargetFormat& target) const {
+  const std::vector<std::uint32_t>* code[2] = {&p.vertexSpirv, &p.fragmentSpirv};
+  VkShaderModule modules[2] = {VK_NULL_HANDLE, VK_NULL_HANDLE};
+  Status status;
+  for (int i = 0; i < 2 && status; ++i) {
+    const VkShaderModuleCreateInfo info{.sType = VK_STRUCTURE_TYPE_SHADER_MODULE_CREATE_INFO,
+                                        .codeSize = code[i]->size() * sizeof(std::uint32_t),
+                                        .pCode = code[i]->data()};
+    status = check(vkCreateShaderModule(device_, &info, nullptr, &modules[i]), "vkCreateShaderModule");
+  }
+  VkPipeline pipeline = VK_NULL_HANDLE;
+  if (status) {
+    const VkPipelineShaderStageCreateInfo stages[2] = {
+        {.sType = VK_STRUCTURE_TYPE_PIPELINE_SHADER_STAGE_CREATE_INFO,
+         .stage = VK_SHADER_STAGE_VERTEX_BIT,
+         .module = modules[0],
+         .pName = "main"},
+        {.sType = VK_STRUCTURE_TYPE_PIPELINE_SHADER_STAGE_CREATE_INFO,
+         .stage = VK_SHADER_STAGE_FRAGMENT_BIT,
+         .module = modules[1],
+         .pName = "main"}};
+    const VkVertexInputBindingDescription binding{0, p.vertexStride, VK_VERTEX_INPUT_RATE_VERTEX};
+    std::vector<VkVertexInputAttributeDescription> attributes;
+    for (const softraster::VertexAttribute& a : p.attributes)
+      attributes.push_back({a.location, 0, kAttributeFormats[a.components - 1], a.offset});
+    const VkPipelineVertexInputStateCreateInfo vertexInput{
+        .sType = VK_STRUCTURE_TYPE_PIPELINE_VERTEX_INPUT_STATE_CREATE_INFO,
+        .vertexBindingDescriptionCount = attributes.empty() ? 0u : 1u,
+        .pVertexBindingDescriptions = &binding,
+        .vertexAttributeDescriptionCount = static_cast<std::uint32_t>(attributes.size()),
+        .pVertexAttributeDescriptions = attributes.data()};
+    const VkPipelineInputAssemblyStateCreateInfo inputAssembly{
+        .sType = VK_STRUCTURE_TYPE_PIPELINE_INPUT_ASSEMBLY_STATE_CREATE_INFO,
+        .topology = static_cast<VkPrimitiveTopology>(state.topology)};  // same order as Vulkan's
+    const VkViewport viewport = viewportFor(state.viewport, target.width, target.height);
+    const VkRect2D scissor = scissorFor(state.scissor, target.width, target.height);
+    const VkPipelineViewportStateCreateInfo viewportState{.sType = VK_STRUCTURE_TYPE_PIPELINE_VIEWPORT_STATE_CREATE_INFO,
+                                                          .viewportCount = 1,
+                                                          .pViewports = &viewport,
+                                                          .scissorCount = 1,
+                                                          .pScissors = &scissor};
+    const softraster::RasterizationState& r = state.rasterization;
+    VkPipelineRasterizationStateCreateInfo rasterization{
+        .sType = VK_STRUCTURE_TYPE_PIPELINE_RASTERIZATION_STATE_CREATE_INFO,
+        .depthClampEnable = r.depthClampEnable ? VK_TRUE : VK_FALSE,
+        .rasterizerDiscardEnable = VK_FALSE,
+        .polygonMode = static_cast<VkPolygonMode>(r.polygonMode),  // same order as Vulkan's
+        .cullMode = kCullModes[static_cast<std::size_t>(r.cullMode)],
+        .frontFace = kFrontFaces[static_cast<std::size_t>(r.frontFace)],
+        .depthBiasEnable = r.depthBias.enable ? VK_TRUE : VK_FALSE,
+        .depthBiasConstantFactor = r.depthBias.constantFactor,
+        .depthBiasClamp = r.depthBias.clamp,
+        .depthBiasSlopeFactor = r.depthBias.slopeFactor,
+        .lineWidth = r.lineWidth};
+    // Bresenham lines need VK_EXT_line_rasterization; rectangular ones are Vulkan's default.
+    const VkPipelineRasterizationLineStateCreateInfoEXT lineState{
+        .sType = VK_STRUCTURE_TYPE_PIPELINE_RASTERIZATION_LINE_STATE_CREATE_INFO_EXT,
+        .lineRasterizationMode = VK_LINE_RASTERIZATION_MODE_BRESENHAM_EXT};
+    if (r.lineRasterization == softraster::LineRasterization::Bresenham) rasterization.pNext = &lineState;
+    const VkPipelineMultisampleStateCreateInfo multisample{
+        .sType = VK_STRUCTURE_TYPE_PIPELINE_MULTISAMPLE_STATE_CREATE_INFO,
+        .rasterizationSamples = target.samples};
+    const VkPipelineDepthStencilStateCreateInfo depth{
+        .sType = VK_STRUCTURE_TYPE_PIPELINE_DEPTH_STENCIL_STATE_CREATE_INFO,
+        .depthTestEnable = state.depth.testEnable ? VK_TRUE : VK_FALSE,
+        .depthWriteEnable = state.depth.writeEnable ? VK_TRUE : VK_FALSE,
+        .depthCompareOp = static_cast<VkCompareOp>(state.depth.compareOp)};
+    const softraster::BlendState& b = state.blend;
+    const auto factor = [](softraster::BlendFactor f) {
+      return f == softraster::BlendFactor::One ? VK_BLEND_FACTOR_ONE : VK_BLEND_FACTOR_ZERO;
+    };
+    const VkPipelineColorBlendAttachmentState blendAttachment{
+        .blendEnable = b.enable ? VK_TRUE : VK_FALSE,
+        .srcColorBlendFactor = factor(b.source),
+        .dstColorBlendFactor = factor(b.destination),
+        .colorBlendOp = VK_BLEND_OP_ADD,
+        .srcAlphaBlendFactor = factor(b.source),
+        .dstAlphaBlendFactor = factor(b.destination),
+        .alphaBlendOp = VK_BLEND_OP_ADD,
+        .colorWriteMask = VK_COLOR_COMPONENT_R_BIT | VK_COLOR_COMPONENT_G_BIT | VK_COLOR_COMPONENT_B_BIT |
+                          VK_COLOR_COMPONENT_A_BIT};
+    const VkPipelineColorBlendStateCreateInfo blend{.sType = VK_STRUCTURE_TYPE_PIPELINE_COLOR_BLEND_STATE_CREATE_INFO,
+                                                    .attachmentCount = 1,
+                                                    .pAttachments = &blendAttachment};
+    const VkPipelineRenderingCreateInfo rendering{.sType = VK_STRUCTURE_TYPE_PIPELINE_RENDERING_CREATE_INFO,
+                                                  .colorAttachmentCount = 1,
+                                                  .pColorAttachmentFormats = &kColourFormat,
+                                                  .depthAttachmentFormat = target.depthFormat};
+    const VkGraphicsPipelineCreateInfo info{.sType = VK_STRUCTURE_TYPE_GRAPHICS_PIPELINE_CREATE_INFO,
+                                            .pNext = &rendering,
+                                            .stageCount = 2,
+                                            .pStages = stages,
+                                            .pVertexInputState = &vertexInput,
+                                            .pInputAssemblyState = &inputAssembly,
+                                            .pViewportState = &viewportState,
+                                            .pRasterizationState = &rasterization,
+                                            .pMultisampleState = &multisample,
+                                            .pDepthStencilState = &depth,
+                                            .pColorBlendState = &blend,
+                                            .layout = layout_};
+    status = check(vkCreateGraphicsPipelines(device_, VK_NULL_HANDLE, 1, &info, nullptr, &pipeline),
+                   "vkCreateGraphicsPipelines");
+  }
+  for (VkShaderModule m : modules) vkDestroyShaderModule(device_, m, nullptr);
+  if (!status) return status;
+  return pipeline;
+}
+
+}  // namespace vkref::detail

@@ -1,0 +1,119 @@
+// vkref pipelines: softraster::PipelineState translated into a Vulkan graphics pipeline, the
+// checks of what Vulkan on this device cannot express (each an error, never a silent default),
+// and the cache that compiles each pipeline once per Renderer, keyed by (program, state, target
+// formats, samples), and keeps it for every later draw and frame.
+// Deliberately no dynamic state (viewport and scissor are baked, as the state gives them), no
+// eviction (a Renderer sees a few dozen distinct pipelines) and no VkPipelineCache (nothing is
+// written to disk). Recording the draws is passes' job.
+#pragma once
+
+#include "device.hpp"
+
+#include <vkref/frame.hpp>
+
+#include <softraster/status.hpp>
+
+#include <vulkan/vulkan.h>
+
+#include <array>
+#include <compare>
+#include <cstdint>
+#include <map>
+#include <memory>
+#include <string>
+#include <unordered_map>
+#include <vector>
+
+namespace vkref::detail {
+
+inline constexpr std::uint32_t kPushConstantBytes = 128;
+inline constexpr VkShaderStageFlags kPushConstantStages = VK_SHADER_STAGE_VERTEX_BIT | VK_SHADER_STAGE_FRAGMENT_BIT;
+
+// Vertices in a draw's vertexData (whole vertices of its program's stride).
+std::uint32_t vertexCount(const DrawCall& draw);
+// A draw with nothing to assemble: skipped, and so not checked either.
+bool isEmpty(const DrawCall& draw);
+
+// What about the frame (size, clear depth, depth format, samples) the device cannot honour.
+softraster::Status checkFrame(const FrameRequest& request, const Device& device);
+// What about a draw into a width x height frame Vulkan (or this renderer) cannot honour.
+softraster::Status checkDraw(const DrawCall& draw, std::uint32_t width, std::uint32_t height, const Device& device);
+
+// What a pipeline is compiled for besides its draw: the frame's size (a zero viewport or scissor
+// means the whole frame), depth format and sample count. Colour is always kColourFormat.
+struct TargetFormat {
+  std::uint32_t width = 0, height = 0;
+  VkFormat depthFormat = VK_FORMAT_UNDEFINED;
+  VkSampleCountFlagBits samples = VK_SAMPLE_COUNT_1_BIT;
+};
+
+class PipelineCache {
+ public:
+  static softraster::Result<std::unique_ptr<PipelineCache>> create(const Device& device);
+  ~PipelineCache();  // destroys every pipeline and the layout; no frame may still use them
+  PipelineCache(const PipelineCache&) = delete;
+  PipelineCache& operator=(const PipelineCache&) = delete;
+
+  // Which known program the SPIR-V at an address holds, remembered for one prepare() only: the
+  // request cannot change while it is prepared, so the same spans mean the same code, and each
+  // program's code is hashed and compared once per frame instead of once per draw. Not kept
+  // across frames, where an address may hold other code.
+  class FrameMemo {
+    friend class PipelineCache;
+    struct Entry {
+      const std::uint32_t* vertex;
+      std::size_t vertexWords;
+      const std::uint32_t* fragment;
+      std::size_t fragmentWords;
+      std::uint32_t program;
+    };
+    std::vector<Entry> entries_;
+  };
+
+  // The one layout of every pipeline: kPushConstantBytes of push constants, no descriptor sets.
+  VkPipelineLayout layout() const { return layout_; }
+  // The pipeline for a checked draw (see checkDraw), compiled on its first use.
+  softraster::Result<VkPipeline> get(const DrawCall& draw, const TargetFormat& target, FrameMemo& memo);
+  std::size_t size() const { return pipelines_.size(); }
+
+ private:
+  // A program as the cache knows it: a copy of its code and vertex layout, so an entry never
+  // depends on memory the caller owns.
+  struct Program {
+    std::vector<std::uint32_t> vertexSpirv, fragmentSpirv;
+    std::vector<softraster::VertexAttribute> attributes;
+    std::uint32_t vertexStride = 0;
+  };
+  // Everything a pipeline is built from, floats by their bits (so NaN keys match themselves),
+  // viewport and scissor as resolved against the frame size.
+  struct Key {
+    std::uint32_t program = 0;  // index into programs_
+    VkFormat depthFormat = VK_FORMAT_UNDEFINED;
+    VkSampleCountFlagBits samples = VK_SAMPLE_COUNT_1_BIT;
+    std::uint8_t topology = 0, polygonMode = 0, cullMode = 0, frontFace = 0, lineRasterization = 0;
+    bool depthClamp = false, depthBias = false;
+    std::uint32_t biasConstant = 0, biasClamp = 0, biasSlope = 0, lineWidth = 0;
+    std::array<std::uint32_t, 6> viewport{};  // x, y, width, height, minDepth, maxDepth
+    std::int32_t scissorX = 0, scissorY = 0;
+    std::uint32_t scissorWidth = 0, scissorHeight = 0;
+    bool depthTest = false, depthWrite = false;
+    std::uint8_t depthCompare = 0;
+    bool blend = false;
+    std::uint8_t blendSource = 0, blendDestination = 0;
+    auto operator<=>(const Key&) const = default;
+  };
+
+  explicit PipelineCache(VkDevice device) : device_(device) {}
+  std::uint32_t programIndex(const ShaderProgram& program, FrameMemo& memo);
+  std::uint32_t internProgram(const ShaderProgram& program);
+  softraster::Result<VkPipeline> compile(const Program& program, const softraster::PipelineState& state,
+                                         const TargetFormat& target) const;
+
+  VkDevice device_;
+  VkPipelineLayout layout_ = VK_NULL_HANDLE;
+  std::vector<Program> programs_;
+  std::unordered_multimap<std::size_t, std::uint32_t> programsByHash_;
+  std::map<Key, VkPipeline> pipelines_;
+};
+
+}  // namespace vkref::detail

@@ -1,0 +1,84 @@
+// vkref readback (see readback.hpp): copies to host buffers and depth unpacking.
+#include "readback.hpp"
+
+#include "errors.hpp"
+#include "passes.hpp"
+
+#include <cstring>
+
+namespace vkref::detail {
+namespace {
+
+using softraster::Status;
+
+// Bytes per depth texel as copied out, indexed by softraster::DepthFormat: D16 as 16-bit
+// integers, X8_D24 as 32-bit words with the depth in the low 24 bits, D32_SFLOAT as floats.
+constexpr std::uint32_t kDepthTexelBytes[] = {2, 4, 4};
+
+std::uint32_t depthTexelBytes(softraster::DepthFormat format) {
+  return kDepthTexelBytes[static_cast<std::size_t>(format)];
+}
+
+}  // namespace
+
+softraster::Result<HostImages> createHostImages(const Device& device, const Targets& targets,
+                                                softraster::DepthFormat depthFormat) {
+  HostImages host;
+  host.depthFormat = depthFormat;
+  const VkDeviceSize pixels = VkDeviceSize{targets.width} * targets.height;
+  auto colour = Buffer::create(device, pixels * 4, VK_BUFFER_USAGE_TRANSFER_DST_BIT);
+  if (!colour) return colour.status();
+  host.colour = std::move(*colour);
+  auto depth = Buffer::create(device, pixels * depthTexelBytes(depthFormat), VK_BUFFER_USAGE_TRANSFER_DST_BIT);
+  if (!depth) return depth.status();
+  host.depth = std::move(*depth);
+  return host;
+}
+
+Status recordCopies(VkCommandBuffer cmd, const Targets& targets, const HostImages& host) {
+  const VkCommandBufferBeginInfo begin{.sType = VK_STRUCTURE_TYPE_COMMAND_BUFFER_BEGIN_INFO};
+  if (Status s = check(vkBeginCommandBuffer(cmd, &begin), "vkBeginCommandBuffer"); !s) return s;
+  const VkExtent3D extent{targets.width, targets.height, 1};
+  const VkBufferImageCopy colourRegion{.imageSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, 1}, .imageExtent = extent};
+  const VkBufferImageCopy depthRegion{.imageSubresource = {VK_IMAGE_ASPECT_DEPTH_BIT, 0, 0, 1}, .imageExtent = extent};
+  vkCmdCopyImageToBuffer(cmd, targets.colour.handle(), VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, host.colour.handle(), 1,
+                         &colourRegion);
+  vkCmdCopyImageToBuffer(cmd, targets.depth.handle(), VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, host.depth.handle(), 1,
+                         &depthRegion);
+  const VkMemoryBarrier2 toHost{.sType = VK_STRUCTURE_TYPE_MEMORY_BARRIER_2,
+                                .srcStageMask = VK_PIPELINE_STAGE_2_COPY_BIT,
+                                .srcAccessMask = VK_ACCESS_2_TRANSFER_WRITE_BIT,
+                                .dstStageMask = VK_PIPELINE_STAGE_2_HOST_BIT,
+                                .dstAccessMask = VK_ACCESS_2_HOST_READ_BIT};
+  barrier(cmd, {}, &toHost);
+  return check(vkEndCommandBuffer(cmd), "vkEndCommandBuffer");
+}
+
+FrameImages unpack(const HostImages& host, std::uint32_t width, std::uint32_t height) {
+  FrameImages out;
+  const std::size_t pixels = std::size_t{width} * height;
+  out.width = width;
+  out.height = height;
+  out.rgba.resize(pixels * 4);
+  std::memcpy(out.rgba.data(), host.colour.mapped(), pixels * 4);
+  out.depth.resize(pixels);
+  out.depthStorage.resize(pixels);
+  const std::uint32_t texelBytes = depthTexelBytes(host.depthFormat);
+  const auto* texels = static_cast<const std::uint8_t*>(host.depth.mapped());
+  for (std::size_t i = 0; i < pixels; ++i) {
+    std::uint32_t stored = 0;
+    std::memcpy(&stored, texels + i * texelBytes, texelBytes);
+    switch (host.depthFormat) {
+      case softraster::DepthFormat::D16Unorm: out.depth[i] = static_cast<float>(stored / 65535.0); break;
+      case softraster::DepthFormat::X8D24UnormPack32:
+        stored &= 0xffffffu;
+        out.depth[i] = static_cast<float>(stored / 16777215.0);
+        break;
+      case softraster::DepthFormat::D32Sfloat: std::memcpy(&out.depth[i], &stored, 4); break;
+    }
+    out.depthStorage[i] = stored;
+  }
+  return out;
+}
+
+}  // namespace vkref::detail

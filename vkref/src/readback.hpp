@@ -1,0 +1,36 @@
+// vkref readback: the copies of a frame's single-sample colour and depth images into host
+// buffers, and their unpacking into FrameImages: colour as RGBA8, depth as floats in [0, 1] and
+// as stored (D16 and X8_D24 as UNORM integers, D32_SFLOAT as the float's bits).
+// Deliberately no resolve (passes resolves MSAA while rendering), no layout changes (passes leaves
+// the images ready to copy) and no format conversion beyond depth's: colour is R8G8B8A8 as is.
+#pragma once
+
+#include "device.hpp"
+#include "resources.hpp"
+
+#include <vkref/frame.hpp>
+
+#include <softraster/framebuffer.hpp>
+#include <softraster/status.hpp>
+
+#include <vulkan/vulkan.h>
+
+namespace vkref::detail {
+
+// Where a frame's images are copied to: tightly packed rows, row 0 at the top.
+struct HostImages {
+  softraster::DepthFormat depthFormat = softraster::DepthFormat::D32Sfloat;
+  Buffer colour, depth;
+};
+
+softraster::Result<HostImages> createHostImages(const Device& device, const Targets& targets,
+                                                softraster::DepthFormat depthFormat);
+
+// Records the copies of `targets` (in TRANSFER_SRC_OPTIMAL layout) into `host`, and the barrier
+// that makes them visible to the host, from vkBeginCommandBuffer to vkEndCommandBuffer.
+softraster::Status recordCopies(VkCommandBuffer cmd, const Targets& targets, const HostImages& host);
+
+// The images in `host` after the copies have run.
+FrameImages unpack(const HostImages& host, std::uint32_t width, std::uint32_t height);
+
+}  // namespace vkref::detail

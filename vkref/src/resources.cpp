@@ -1,0 +1,216 @@
+// vkref resources (see resources.hpp): buffers, images, memory and the frame's upload.
+#include "resources.hpp"
+
+#include "errors.hpp"
+
+#include <cstring>
+#include <optional>
+#include <utility>
+
+namespace vkref::detail {
+namespace {
+
+using softraster::Status;
+
+// Where each draw's vertices start: more than any vertex attribute's component needs.
+constexpr VkDeviceSize kVertexAlignment = 16;
+
+std::optional<std::uint32_t> findMemoryType(const VkPhysicalDeviceMemoryProperties& memory, std::uint32_t allowed,
+                                            VkMemoryPropertyFlags wanted) {
+  for (std::uint32_t i = 0; i < memory.memoryTypeCount; ++i)
+    if ((allowed & (1u << i)) != 0 && (memory.memoryTypes[i].propertyFlags & wanted) == wanted) return i;
+  return std::nullopt;
+}
+
+// Memory of a type with the `wanted` properties, else of one with the `required` ones.
+Status allocate(const Device& device, const VkMemoryRequirements& needs, VkMemoryPropertyFlags wanted,
+                VkMemoryPropertyFlags required, VkDeviceMemory* out) {
+  std::optional<std::uint32_t> type = findMemoryType(device.memory, needs.memoryTypeBits, wanted);
+  if (!type) type = findMemoryType(device.memory, needs.memoryTypeBits, required);
+  if (!type) return Status::error("no suitable Vulkan memory type");
+  const VkMemoryAllocateInfo info{
+      .sType = VK_STRUCTURE_TYPE_MEMORY_ALLOCATE_INFO, .allocationSize = needs.size, .memoryTypeIndex = *type};
+  return check(vkAllocateMemory(device.device, &info, nullptr, out), "vkAllocateMemory");
+}
+
+VkDeviceSize alignUp(VkDeviceSize value, VkDeviceSize alignment) { return (value + alignment - 1) / alignment * alignment; }
+
+}  // namespace
+
+// ---- Buffer ------------------------------------------------------------------------------------
+
+softraster::Result<Buffer> Buffer::create(const Device& device, VkDeviceSize size, VkBufferUsageFlags usage) {
+  Buffer b;
+  b.device_ = device.device;
+  const VkBufferCreateInfo info{.sType = VK_STRUCTURE_TYPE_BUFFER_CREATE_INFO,
+                                .size = size,
+                                .usage = usage,
+                                .sharingMode = VK_SHARING_MODE_EXCLUSIVE};
+  if (Status s = check(vkCreateBuffer(device.device, &info, nullptr, &b.buffer_), "vkCreateBuffer"); !s) return s;
+  VkMemoryRequirements needs;
+  vkGetBufferMemoryRequirements(device.device, b.buffer_, &needs);
+  constexpr VkMemoryPropertyFlags host = VK_MEMORY_PROPERTY_HOST_VISIBLE_BIT | VK_MEMORY_PROPERTY_HOST_COHERENT_BIT;
+  if (Status s = allocate(device, needs, host, host, &b.memory_); !s) return s;
+  if (Status s = check(vkBindBufferMemory(device.device, b.buffer_, b.memory_, 0), "vkBindBufferMemory"); !s) return s;
+  if (Status s = check(vkMapMemory(device.device, b.memory_, 0, VK_WHOLE_SIZE, 0, &b.mapped_), "vkMapMemory"); !s)
+    return s;
+  return b;
+}
+
+Buffer::Buffer(Buffer&& other) noexcept
+    : device_(std::exchange(other.device_, VK_NULL_HANDLE)),
+      buffer_(std::exchange(other.buffer_, VK_NULL_HANDLE)),
+      memory_(std::exchange(other.memory_, VK_NULL_HANDLE)),
+      mapped_(std::exchange(other.mapped_, nullptr)) {}
+
+Buffer& Buffer::operator=(Buffer&& other) noexcept {
+  if (this != &other) {
+    destroy();
+    device_ = std::exchange(other.device_, VK_NULL_HANDLE);
+    buffer_ = std::exchange(other.buffer_, VK_NULL_HANDLE);
+    memory_ = std::exchange(other.memory_, VK_NULL_HANDLE);
+    mapped_ = std::exchange(other.mapped_, nullptr);
+  }
+  return *this;
+}
+
+Buffer::~Buffer() { destroy(); }
+
+void Buffer::destroy() {
+  if (!device_) return;
+  vkDestroyBuffer(device_, buffer_, nullptr);  // destroying a null handle is a no-op
+  vkFreeMemory(device_, memory_, nullptr);     // also unmaps
+  device_ = VK_NULL_HANDLE;
+}
+
+// ---- Image -------------------------------------------------------------------------------------
+
+softraster::Result<Image> Image::create(const Device& device, VkFormat format, VkImageUsageFlags usage,
+                                        VkImageAspectFlags aspect, std::uint32_t width, std::uint32_t height,
+                                        VkSampleCountFlagBits samples) {
+  Image i;
+  i.device_ = device.device;
+  const VkImageCreateInfo info{.sType = VK_STRUCTURE_TYPE_IMAGE_CREATE_INFO,
+                               .imageType = VK_IMAGE_TYPE_2D,
+                               .format = format,
+                               .extent = {width, height, 1},
+                               .mipLevels = 1,
+                               .arrayLayers = 1,
+                               .samples = samples,
+                               .tiling = VK_IMAGE_TILING_OPTIMAL,
+                               .usage = usage,
+                               .sharingMode = VK_SHARING_MODE_EXCLUSIVE,
+                               .initialLayout = VK_IMAGE_LAYOUT_UNDEFINED};
+  if (Status s = check(vkCreateImage(device.device, &info, nullptr, &i.image_), "vkCreateImage"); !s) return s;
+  VkMemoryRequirements needs;
+  vkGetImageMemoryRequirements(device.device, i.image_, &needs);
+  if (Status s = allocate(device, needs, VK_MEMORY_PROPERTY_DEVICE_LOCAL_BIT, 0, &i.memory_); !s) return s;
+  if (Status s = check(vkBindImageMemory(device.device, i.image_, i.memory_, 0), "vkBindImageMemory"); !s) return s;
+  const VkImageViewCreateInfo viewInfo{.sType = VK_STRUCTURE_TYPE_IMAGE_VIEW_CREATE_INFO,
+                                       .image = i.image_,
+                                       .viewType = VK_IMAGE_VIEW_TYPE_2D,
+                                       .format = format,
+                                       .subresourceRange = {aspect, 0, 1, 0, 1}};
+  if (Status s = check(vkCreateImageView(device.device, &viewInfo, nullptr, &i.view_), "vkCreateImageView"); !s)
+    return s;
+  return i;
+}
+
+Image::Image(Image&& other) noexcept
+    : device_(std::exchange(other.device_, VK_NULL_HANDLE)),
+      image_(std::exchange(other.image_, VK_NULL_HANDLE)),
+      memory_(std::exchange(other.memory_, VK_NULL_HANDLE)),
+      view_(std::exchange(other.view_, VK_NULL_HANDLE)) {}
+
+Image& Image::operator=(Image&& other) noexcept {
+  if (this != &other) {
+    destroy();
+    device_ = std::exchange(other.device_, VK_NULL_HANDLE);
+    image_ = std::exchange(other.image_, VK_NULL_HANDLE);
+    memory_ = std::exchange(other.memory_, VK_NULL_HANDLE);
+    view_ = std::exchange(other.view_, VK_NULL_HANDLE);
+  }
+  return *this;
+}
+
+Image::~Image() { destroy(); }
+
+void Image::destroy() {
+  if (!device_) return;
+  vkDestroyImageView(device_, view_, nullptr);
+  vkDestroyImage(device_, image_, nullptr);
+  vkFreeMemory(device_, memory_, nullptr);
+  device_ = VK_NULL_HANDLE;
+}
+
+// ---- A frame's images and geometry -------------------------------------------------------------
+
+softraster::Result<Targets> createTargets(const Device& device, std::uint32_t width, std::uint32_t height,
+                                          VkFormat depthFormat, VkSampleCountFlagBits samples) {
+  Targets t;
+  t.width = width;
+  t.height = height;
+  t.depthFormat = depthFormat;
+  t.samples = samples;
+  constexpr VkImageUsageFlags colourUsage = VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT;
+  constexpr VkImageUsageFlags depthUsage = VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT;
+  auto colour = Image::create(device, kColourFormat, colourUsage | VK_IMAGE_USAGE_TRANSFER_SRC_BIT,
+                              VK_IMAGE_ASPECT_COLOR_BIT, width, height, VK_SAMPLE_COUNT_1_BIT);
+  if (!colour) return colour.status();
+  t.colour = std::move(*colour);
+  auto depth = Image::create(device, depthFormat, depthUsage | VK_IMAGE_USAGE_TRANSFER_SRC_BIT,
+                             VK_IMAGE_ASPECT_DEPTH_BIT, width, height, VK_SAMPLE_COUNT_1_BIT);
+  if (!depth) return depth.status();
+  t.depth = std::move(*depth);
+  if (t.multisampled()) {
+    auto msColour = Image::create(device, kColourFormat, colourUsage, VK_IMAGE_ASPECT_COLOR_BIT, width, height, samples);
+    if (!msColour) return msColour.status();
+    t.msColour = std::move(*msColour);
+    auto msDepth = Image::create(device, depthFormat, depthUsage, VK_IMAGE_ASPECT_DEPTH_BIT, width, height, samples);
+    if (!msDepth) return msDepth.status();
+    t.msDepth = std::move(*msDepth);
+  }
+  return t;
+}
+
+softraster::Result<Geometry> uploadGeometry(const Device& device, std::span<const DrawCall* const> draws) {
+  Geometry g;
+  g.ranges.resize(draws.size());
+  // Lay the draws out first, so each buffer is allocated once.
+  VkDeviceSize vertexBytes = 0;
+  std::size_t indexCount = 0;
+  for (std::size_t i = 0; i < draws.size(); ++i) {
+    const DrawCall& d = *draws[i];
+    if (!d.program->attributes.empty()) {
+      vertexBytes = alignUp(vertexBytes, kVertexAlignment);
+      g.ranges[i].vertexOffset = vertexBytes;
+      vertexBytes += d.vertexData.size();
+    }
+    if (d.indexed) {
+      g.ranges[i].firstIndex = static_cast<std::uint32_t>(indexCount);
+      indexCount += d.indices.size();
+    }
+  }
+  if (vertexBytes > 0) {
+    auto vertices = Buffer::create(device, vertexBytes, VK_BUFFER_USAGE_VERTEX_BUFFER_BIT);
+    if (!vertices) return vertices.status();
+    g.vertices = std::move(*vertices);
+  }
+  if (indexCount > 0) {
+    auto indices = Buffer::create(device, indexCount * sizeof(std::uint32_t), VK_BUFFER_USAGE_INDEX_BUFFER_BIT);
+    if (!indices) return indices.status();
+    g.indices = std::move(*indices);
+  }
+  auto* vertexBase = static_cast<std::byte*>(g.vertices.mapped());
+  auto* indexBase = static_cast<std::uint32_t*>(g.indices.mapped());
+  for (std::size_t i = 0; i < draws.size(); ++i) {
+    const DrawCall& d = *draws[i];
+    if (!d.program->attributes.empty() && !d.vertexData.empty())
+      std::memcpy(vertexBase + g.ranges[i].vertexOffset, d.vertexData.data(), d.vertexData.size());
+    if (d.indexed && !d.indices.empty())
+      std::memcpy(indexBase + g.ranges[i].firstIndex, d.indices.data(), d.indices.size() * sizeof(std::uint32_t));
+  }
+  return g;
+}
+
+}  // namespace vkref::detail

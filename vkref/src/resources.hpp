@@ -1,0 +1,97 @@
+// vkref resources: buffers and images with their memory, the images a frame renders into, and
+// the upload of a frame's vertices and indices into one vertex buffer and one index buffer.
+// Deliberately simple: buffers are host-visible, coherent and mapped for their whole life (on
+// lavapipe all memory is host memory, so there are no staging copies), images are 2D with one
+// level and one layer, and every object has its own allocation (a frame has a handful of them,
+// however many draws it holds), so there is no sub-allocator. No command is recorded here.
+#pragma once
+
+#include "device.hpp"
+
+#include <vkref/frame.hpp>
+
+#include <softraster/status.hpp>
+
+#include <vulkan/vulkan.h>
+
+#include <cstdint>
+#include <span>
+#include <vector>
+
+namespace vkref::detail {
+
+// A host-visible, coherent buffer, mapped from creation to destruction. Move-only.
+class Buffer {
+ public:
+  static softraster::Result<Buffer> create(const Device& device, VkDeviceSize size, VkBufferUsageFlags usage);
+  Buffer() = default;  // no buffer
+  Buffer(Buffer&& other) noexcept;
+  Buffer& operator=(Buffer&& other) noexcept;
+  ~Buffer();
+
+  VkBuffer handle() const { return buffer_; }
+  void* mapped() const { return mapped_; }
+
+ private:
+  void destroy();
+  VkDevice device_ = VK_NULL_HANDLE;
+  VkBuffer buffer_ = VK_NULL_HANDLE;
+  VkDeviceMemory memory_ = VK_NULL_HANDLE;
+  void* mapped_ = nullptr;
+};
+
+// An optimally tiled 2D image (device-local where the device has such memory) and a view of it.
+// Move-only.
+class Image {
+ public:
+  static softraster::Result<Image> create(const Device& device, VkFormat format, VkImageUsageFlags usage,
+                                          VkImageAspectFlags aspect, std::uint32_t width, std::uint32_t height,
+                                          VkSampleCountFlagBits samples);
+  Image() = default;  // no image
+  Image(Image&& other) noexcept;
+  Image& operator=(Image&& other) noexcept;
+  ~Image();
+
+  VkImage handle() const { return image_; }
+  VkImageView view() const { return view_; }
+  explicit operator bool() const { return image_ != VK_NULL_HANDLE; }
+
+ private:
+  void destroy();
+  VkDevice device_ = VK_NULL_HANDLE;
+  VkImage image_ = VK_NULL_HANDLE;
+  VkDeviceMemory memory_ = VK_NULL_HANDLE;
+  VkImageView view_ = VK_NULL_HANDLE;
+};
+
+// The images one frame renders into. `colour` and `depth` are single-sampled and copied out;
+// with MSAA the draws go to `msColour` and `msDepth`, which resolve into them.
+struct Targets {
+  std::uint32_t width = 0, height = 0;
+  VkFormat depthFormat = VK_FORMAT_UNDEFINED;
+  VkSampleCountFlagBits samples = VK_SAMPLE_COUNT_1_BIT;
+  Image colour, depth;
+  Image msColour, msDepth;  // empty unless samples > 1
+
+  bool multisampled() const { return samples != VK_SAMPLE_COUNT_1_BIT; }
+};
+
+softraster::Result<Targets> createTargets(const Device& device, std::uint32_t width, std::uint32_t height,
+                                          VkFormat depthFormat, VkSampleCountFlagBits samples);
+
+// Every vertex and index of a frame, in one vertex buffer and one index buffer (either empty when
+// no draw has any), and where each draw's share begins.
+struct Geometry {
+  struct Range {
+    VkDeviceSize vertexOffset = 0;  // bytes into `vertices`
+    std::uint32_t firstIndex = 0;   // indices into `indices`
+  };
+  Buffer vertices, indices;
+  std::vector<Range> ranges;  // one per draw uploaded, in the same order
+};
+
+// Uploads the vertex data of each draw whose program reads vertices and the indices of each
+// indexed draw. Every draw must have a program.
+softraster::Result<Geometry> uploadGeometry(const Device& device, std::span<const DrawCall* const> draws);
+
+}  // namespace vkref::detail
