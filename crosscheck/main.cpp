@@ -6,11 +6,11 @@
 //   crosscheck report [SCENE|DIR ...] -o DIR [--expectations FILE] [--jobs N] [--shard I/N] [--junit FILE]
 // Exit status: 0 success / within tolerance / nothing unexpected, 1 outside tolerance, a failed
 // render or an unexpected conformance result, 2 bad usage.
-#include "compare.hpp"
-#include "conformance_cli.hpp"
-#include "image_io.hpp"
-#include "render.hpp"
-#include "scene.hpp"
+#include "compare/compare.hpp"
+#include "cli/conformance.hpp"
+#include "output/image_io.hpp"
+#include "render/render.hpp"
+#include "scene/scene.hpp"
 
 #include <CLI/CLI.hpp>
 #include <nlohmann/json.hpp>

@@ -2,10 +2,10 @@
 // validation layer on (any message fails), compared within the scene's tolerance. Each scene is
 // its own test case (CrossCheck/Scene.Matches/<name>), found when the test binary starts.
 // On failure the soft, vulkan and diff images are written to build/test-artifacts/<scene>/.
-#include "compare.hpp"
-#include "image_io.hpp"
-#include "render.hpp"
-#include "scene.hpp"
+#include "compare/compare.hpp"
+#include "output/image_io.hpp"
+#include "render/render.hpp"
+#include "scene/scene.hpp"
 
 #include <gtest/gtest.h>
 

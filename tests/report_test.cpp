@@ -1,9 +1,9 @@
 // The HTML report without a browser: page structure (summary table, worst-first order, lazy
 // images, nothing from the network), the images written per scene, and the value readout's pixel
 // data decoded back to the frames' exact bytes. The page in a real browser: report_chromium_test.sh.
-#include "artifacts.hpp"
-#include "conformance.hpp"
-#include "report.hpp"
+#include "output/artifacts.hpp"
+#include "run/conformance.hpp"
+#include "output/report/report.hpp"
 
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>

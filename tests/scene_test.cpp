@@ -1,5 +1,5 @@
 // Scene files: defaults, overrides, and one clear error line for every kind of bad input.
-#include "scene.hpp"
+#include "scene/scene.hpp"
 
 #include <gtest/gtest.h>
 

@@ -6,8 +6,8 @@
 // held to the bit, and edge differences are counted, not forgiven.
 #pragma once
 
-#include "render.hpp"
-#include "scene.hpp"
+#include "render/render.hpp"
+#include "scene/scene.hpp"
 
 #include <array>
 #include <cstdint>

@@ -1,5 +1,5 @@
 // The conformance runner (see conformance.hpp).
-#include "conformance.hpp"
+#include "run/conformance.hpp"
 
 #include <algorithm>
 #include <atomic>

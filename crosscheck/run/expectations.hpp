@@ -5,7 +5,7 @@
 // Deliberately no wildcards and no per-metric expectations: a known failure is a whole scene.
 #pragma once
 
-#include "status.hpp"
+#include "run/outcome.hpp"
 
 #include <filesystem>
 #include <map>

@@ -1,5 +1,5 @@
 // OBJ loading (see obj_mesh.hpp).
-#include "obj_mesh.hpp"
+#include "scene/obj_mesh.hpp"
 
 #include <tiny_obj_loader.h>
 

@@ -1,5 +1,5 @@
 // Markup and URL escaping (see markup.hpp).
-#include "markup.hpp"
+#include "output/markup.hpp"
 
 #include <cerrno>
 #include <cstring>

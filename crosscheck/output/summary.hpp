@@ -4,7 +4,7 @@
 // Deliberately returns strings and prints nothing: the command decides where each goes.
 #pragma once
 
-#include "conformance.hpp"
+#include "run/conformance.hpp"
 
 #include <cstddef>
 #include <string>

@@ -1,5 +1,5 @@
 // Conformance text output (see summary.hpp).
-#include "summary.hpp"
+#include "output/summary.hpp"
 
 #include <algorithm>
 #include <cstdio>

@@ -1,5 +1,5 @@
 // Frame comparison and the diff heatmap (see compare.hpp).
-#include "compare.hpp"
+#include "compare/compare.hpp"
 
 #include <algorithm>
 #include <bit>

@@ -1,5 +1,5 @@
 // Camera matrices (see camera.hpp).
-#include "camera.hpp"
+#include "scene/camera.hpp"
 
 #include <cmath>
 #include <numbers>

@@ -3,7 +3,7 @@
 // Deliberately no caching between frames: one call, one frame.
 #pragma once
 
-#include "scene.hpp"
+#include "scene/scene.hpp"
 
 #include <softraster/pipeline.hpp>
 #include <vkref/renderer.hpp>

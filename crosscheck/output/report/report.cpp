@@ -1,9 +1,9 @@
 // The HTML report and its pixel data (see report.hpp).
-#include "report.hpp"
+#include "output/report/report.hpp"
 
-#include "markup.hpp"
+#include "output/markup.hpp"
 #include "report_assets.hpp"
-#include "summary.hpp"
+#include "output/summary.hpp"
 
 #include <nlohmann/json.hpp>
 #include <zlib.h>

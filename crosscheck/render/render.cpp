@@ -1,5 +1,5 @@
 // Scene -> softraster and Scene -> vkref adapters (see render.hpp).
-#include "render.hpp"
+#include "render/render.hpp"
 
 #include <softraster/pipeline.hpp>
 

@@ -1,8 +1,8 @@
 // Scene file loading and validation (see scene.hpp and scenes/README.md).
-#include "scene.hpp"
+#include "scene/scene.hpp"
 
-#include "camera.hpp"
-#include "obj_mesh.hpp"
+#include "scene/camera.hpp"
+#include "scene/obj_mesh.hpp"
 
 #include <nlohmann/json.hpp>
 

@@ -1,5 +1,5 @@
 // PNG writing and depth visualisation (see image_io.hpp).
-#include "image_io.hpp"
+#include "output/image_io.hpp"
 
 #include <stb_image_write.h>
 

@@ -4,7 +4,7 @@
 // Deliberately no XML library: the writer builds text and escapes every value (markup.hpp).
 #pragma once
 
-#include "conformance.hpp"
+#include "run/conformance.hpp"
 
 #include <filesystem>
 #include <string>

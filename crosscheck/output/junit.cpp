@@ -1,8 +1,8 @@
 // JUnit XML writer (see junit.hpp).
-#include "junit.hpp"
+#include "output/junit.hpp"
 
-#include "markup.hpp"
-#include "summary.hpp"
+#include "output/markup.hpp"
+#include "output/summary.hpp"
 
 #include <cmath>
 #include <cstdio>

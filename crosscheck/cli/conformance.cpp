@@ -1,13 +1,13 @@
-// The conformance and report commands (see conformance_cli.hpp).
-#include "conformance_cli.hpp"
+// The conformance and report commands (see cli/conformance.hpp).
+#include "cli/conformance.hpp"
 
-#include "artifacts.hpp"
-#include "conformance.hpp"
-#include "expectations.hpp"
-#include "junit.hpp"
-#include "report.hpp"
-#include "suite.hpp"
-#include "summary.hpp"
+#include "output/artifacts.hpp"
+#include "run/conformance.hpp"
+#include "run/expectations.hpp"
+#include "output/junit.hpp"
+#include "output/report/report.hpp"
+#include "run/suite.hpp"
+#include "output/summary.hpp"
 
 #include <unistd.h>
 

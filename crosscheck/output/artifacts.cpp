@@ -1,7 +1,7 @@
 // Scene images (see artifacts.hpp).
-#include "artifacts.hpp"
+#include "output/artifacts.hpp"
 
-#include "image_io.hpp"
+#include "output/image_io.hpp"
 
 #include <algorithm>
 #include <cmath>

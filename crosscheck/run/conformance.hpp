@@ -8,12 +8,12 @@
 // no subprocess isolation, no retry and no timeout per scene.
 #pragma once
 
-#include "compare.hpp"
-#include "expectations.hpp"
-#include "render.hpp"
-#include "scene.hpp"
-#include "status.hpp"
-#include "suite.hpp"
+#include "compare/compare.hpp"
+#include "run/expectations.hpp"
+#include "render/render.hpp"
+#include "scene/scene.hpp"
+#include "run/outcome.hpp"
+#include "run/suite.hpp"
 
 #include <softraster/pipeline.hpp>
 #include <vkref/renderer.hpp>

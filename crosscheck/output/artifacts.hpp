@@ -4,7 +4,7 @@
 // Deliberately PNG only and nothing about how a page shows them (that is report.hpp).
 #pragma once
 
-#include "conformance.hpp"
+#include "run/conformance.hpp"
 
 #include <filesystem>
 #include <string>

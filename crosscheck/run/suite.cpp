@@ -1,5 +1,5 @@
 // Suite collection and sharding (see suite.hpp).
-#include "suite.hpp"
+#include "run/suite.hpp"
 
 #include <algorithm>
 #include <charconv>

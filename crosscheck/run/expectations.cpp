@@ -1,5 +1,5 @@
 // Expectations file parsing (see expectations.hpp).
-#include "expectations.hpp"
+#include "run/expectations.hpp"
 
 #include <cerrno>
 #include <cstring>

@@ -11,7 +11,7 @@
 // Deliberately no charts, no history across runs and no server.
 #pragma once
 
-#include "conformance.hpp"
+#include "run/conformance.hpp"
 
 #include <filesystem>
 #include <string>
