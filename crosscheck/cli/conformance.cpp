@@ -73,7 +73,7 @@ class Printer {
 
   void finished(std::size_t position, const SceneResult& result, std::size_t done) {
     finished_[position] = &result;
-    if (isUnexpected(result.status)) ++failures_;
+    if (isUnexpected(result.outcome)) ++failures_;
     if (tty_) std::fputs("\r\033[K", stderr);
     while (next_ < finished_.size() && finished_[next_]) std::printf("%s\n", resultLine(*finished_[next_++]).c_str());
     std::fflush(stdout);

@@ -23,9 +23,9 @@ std::string number(const char* pattern, double value) {
 }
 
 std::string systemOut(const SceneResult& r) {
-  std::string out = "status: " + std::string(statusName(r.status)) + "\nscene: " + r.entry.path.string() + "\n";
+  std::string out = "status: " + std::string(outcomeName(r.outcome)) + "\nscene: " + r.entry.path.string() + "\n";
   if (r.expectation) {
-    out += "expected: " + std::string(statusName(r.expectation->status)) + " (line " +
+    out += "expected: " + std::string(outcomeName(r.expectation->outcome)) + " (line " +
            std::to_string(r.expectation->line) + ")" + (r.expectation->reason.empty() ? "" : ": " + r.expectation->reason) + "\n";
   }
   if (!r.error.empty()) out += "error: " + r.error + "\n";
@@ -53,9 +53,9 @@ std::string systemOut(const SceneResult& r) {
 
 std::string junitXml(const std::vector<SceneResult>& results, const JUnitInfo& info) {
   const Counts counts = countResults(results);
-  const std::size_t failures = counts.of(Status::Fail) + counts.of(Status::UnexpectedPass);
-  const std::size_t errors = counts.of(Status::Crash);
-  const std::size_t skipped = counts.of(Status::Skip) + counts.of(Status::ExpectedFail);
+  const std::size_t failures = counts.of(Outcome::Fail) + counts.of(Outcome::UnexpectedPass);
+  const std::size_t errors = counts.of(Outcome::Crash);
+  const std::size_t skipped = counts.of(Outcome::Skip) + counts.of(Outcome::ExpectedFail);
   const std::string totals = " tests=\"" + std::to_string(results.size()) + "\" failures=\"" + std::to_string(failures) +
                              "\" errors=\"" + std::to_string(errors) + "\" skipped=\"" + std::to_string(skipped) +
                              "\" time=\"" + seconds(info.seconds) + "\"";
@@ -70,21 +70,21 @@ std::string junitXml(const std::vector<SceneResult>& results, const JUnitInfo& i
            escapeMarkup(r.entry.path.string()) + "\" time=\"" + seconds(r.milliseconds / 1000.0) + "\">\n";
     const std::string message = escapeMarkup(resultDetail(r));
     const std::string reason = r.expectation && !r.expectation->reason.empty() ? " [" + r.expectation->reason + "]" : "";
-    switch (r.status) {
-      case Status::Pass: break;
-      case Status::Skip:
+    switch (r.outcome) {
+      case Outcome::Pass: break;
+      case Outcome::Skip:
         xml += "      <skipped message=\"" + escapeMarkup("skipped by expectations" + reason) + "\"/>\n";
         break;
-      case Status::ExpectedFail:
+      case Outcome::ExpectedFail:
         xml += "      <skipped message=\"" + escapeMarkup("expected failure: " + resultDetail(r) + reason) + "\"/>\n";
         break;
-      case Status::Fail:
+      case Outcome::Fail:
         xml += "      <failure type=\"Fail\" message=\"" + message + "\"/>\n";
         break;
-      case Status::UnexpectedPass:
+      case Outcome::UnexpectedPass:
         xml += "      <failure type=\"UnexpectedPass\" message=\"" + message + "\"/>\n";
         break;
-      case Status::Crash:
+      case Outcome::Crash:
         xml += "      <error type=\"Crash\" message=\"" + message + "\"/>\n";
         break;
     }

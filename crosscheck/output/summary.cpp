@@ -48,15 +48,15 @@ std::string reasonSuffix(const SceneResult& r) {
 
 std::string resultDetail(const SceneResult& r) {
   switch (r.actual) {
-    case Status::Crash: return r.error;
-    case Status::Skip: return "skipped by expectations";
-    case Status::Pass:
-      if (r.status == Status::UnexpectedPass) {
-        return "expected " + std::string(statusName(r.expectation->status)) + " (line " +
+    case Outcome::Crash: return r.error;
+    case Outcome::Skip: return "skipped by expectations";
+    case Outcome::Pass:
+      if (r.outcome == Outcome::UnexpectedPass) {
+        return "expected " + std::string(outcomeName(r.expectation->outcome)) + " (line " +
                std::to_string(r.expectation->line) + "), but passed";
       }
       return "";
-    case Status::Fail: {
+    case Outcome::Fail: {
       std::string detail;
       if (r.comparison) {
         for (const std::string& f : r.comparison->failures) detail += (detail.empty() ? "" : "; ") + explainFailure(f, r);
@@ -68,11 +68,11 @@ std::string resultDetail(const SceneResult& r) {
 }
 
 std::string resultLine(const SceneResult& r) {
-  std::string line = padded(statusName(r.status), 15) + r.entry.name;
+  std::string line = padded(outcomeName(r.outcome), 15) + r.entry.name;
   const std::string detail = resultDetail(r);
   if (!detail.empty()) line += ": " + detail;
   line += reasonSuffix(r);
-  if (r.actual == Status::Pass || r.actual == Status::Fail) line += "  (" + timing(r) + ")";
+  if (r.actual == Outcome::Pass || r.actual == Outcome::Fail) line += "  (" + timing(r) + ")";
   return line;
 }
 
@@ -89,18 +89,18 @@ std::string summaryText(const std::vector<SceneResult>& results, std::size_t slo
     for (const SceneResult& r : results) {
       if (!keep(r)) continue;
       ++n;
-      lines += "  " + padded(statusName(r.status), 15) + r.entry.name + ": " + resultDetail(r) + reasonSuffix(r) + "\n";
+      lines += "  " + padded(outcomeName(r.outcome), 15) + r.entry.name + ": " + resultDetail(r) + reasonSuffix(r) + "\n";
     }
     if (n) text += heading + " (" + std::to_string(n) + "):\n" + lines;
   };
-  section("Failures", [](const SceneResult& r) { return isUnexpected(r.status); });
+  section("Failures", [](const SceneResult& r) { return isUnexpected(r.outcome); });
   section("Expected failures and skips", [](const SceneResult& r) {
-    return r.status == Status::ExpectedFail || r.status == Status::Skip;
+    return r.outcome == Outcome::ExpectedFail || r.outcome == Outcome::Skip;
   });
 
   std::vector<const SceneResult*> ran;
   for (const SceneResult& r : results) {
-    if (r.status != Status::Skip) ran.push_back(&r);
+    if (r.outcome != Outcome::Skip) ran.push_back(&r);
   }
   std::stable_sort(ran.begin(), ran.end(), [](const auto* a, const auto* b) { return a->milliseconds > b->milliseconds; });
   if (ran.size() > slowest) ran.resize(slowest);
@@ -108,7 +108,7 @@ std::string summaryText(const std::vector<SceneResult>& results, std::size_t slo
     text += "Slowest scenes:\n";
     for (const SceneResult* r : ran) {
       text += "  " + padded(r->entry.name, 24) + format(" %9.2f ms", r->milliseconds);
-      if (r->actual == Status::Pass || r->actual == Status::Fail) text += "  (" + timing(*r) + ")";
+      if (r->actual == Outcome::Pass || r->actual == Outcome::Fail) text += "  (" + timing(*r) + ")";
       text += "\n";
     }
   }

@@ -32,11 +32,11 @@ struct VulkanSlot {
 };
 
 // Renders and compares one scene; returns Pass, Fail or Crash (with result.error set).
-Status runScene(SceneResult& result, const ConformanceOptions& options, VulkanSlot& vulkan) {
+Outcome runScene(SceneResult& result, const ConformanceOptions& options, VulkanSlot& vulkan) {
   std::string error;
   const auto crash = [&](std::string message) {
     result.error = std::move(message);
-    return Status::Crash;
+    return Outcome::Crash;
   };
   const auto scene = loadScene(result.entry.path, &error);
   if (!scene) return crash(error);
@@ -68,7 +68,7 @@ Status runScene(SceneResult& result, const ConformanceOptions& options, VulkanSl
 
   result.comparison = compareFrames(*soft, *reference, *scene);
   if (options.onFrames && !options.onFrames(result, *scene, *soft, *reference, &error)) return crash(error);
-  return result.comparison->passed() ? Status::Pass : Status::Fail;
+  return result.comparison->passed() ? Outcome::Pass : Outcome::Fail;
 }
 
 SceneResult runOne(const SceneEntry& entry, const ConformanceOptions& options, VulkanSlot& vulkan) {
@@ -77,22 +77,22 @@ SceneResult runOne(const SceneEntry& entry, const ConformanceOptions& options, V
   result.entry = entry;
   const Expectation* expected = options.expectations ? options.expectations->find(entry.name) : nullptr;
   if (expected) result.expectation = *expected;
-  if (expected && expected->status == Status::Skip) {
-    result.actual = result.status = Status::Skip;
+  if (expected && expected->outcome == Outcome::Skip) {
+    result.actual = result.outcome = Outcome::Skip;
     return result;
   }
   try {
     result.actual = runScene(result, options, vulkan);
   } catch (const std::exception& e) {
     result.error = std::string("exception: ") + e.what();
-    result.actual = Status::Crash;
+    result.actual = Outcome::Crash;
   } catch (...) {
     result.error = "exception of unknown type";
-    result.actual = Status::Crash;
+    result.actual = Outcome::Crash;
   }
   // An error message is one line.
   std::replace(result.error.begin(), result.error.end(), '\n', ' ');
-  result.status = applyExpectation(result.actual, expected);
+  result.outcome = applyExpectation(result.actual, expected);
   result.milliseconds = std::chrono::duration<double, std::milli>(Clock::now() - start).count();
   return result;
 }
@@ -128,10 +128,10 @@ std::vector<SceneResult> runConformance(const std::vector<SceneEntry>& suite, co
 Counts countResults(const std::vector<SceneResult>& results) {
   Counts counts;
   for (const SceneResult& r : results) {
-    ++counts.byStatus[static_cast<int>(r.status)];
-    if (r.status == Status::Skip) {
+    ++counts.byOutcome[static_cast<int>(r.outcome)];
+    if (r.outcome == Outcome::Skip) {
       ++counts.skipped;
-    } else if (isUnexpected(r.status)) {
+    } else if (isUnexpected(r.outcome)) {
       ++counts.failed;
     } else {
       ++counts.passed;

@@ -1,5 +1,5 @@
 // The conformance runner: renders every scene of a suite with softraster and with Vulkan
-// (lavapipe), compares them within the scene's tolerance and gives each scene a Status.
+// (lavapipe), compares them within the scene's tolerance and gives each scene an Outcome.
 // Scenes run on `jobs` threads, each with its own vkref::Renderer; results come back in suite
 // order whatever order they finished in. A scene that cannot be loaded, a renderer that returns
 // an error, a validation message (with validation on) or an exception becomes Crash with one
@@ -35,8 +35,8 @@ struct SceneImage {
 
 struct SceneResult {
   SceneEntry entry;
-  Status status = Status::Crash;
-  Status actual = Status::Crash;            // before expectations: Pass, Fail, Crash (or Skip)
+  Outcome outcome = Outcome::Crash;
+  Outcome actual = Outcome::Crash;            // before expectations: Pass, Fail, Crash (or Skip)
   std::optional<Expectation> expectation;   // from the expectations file, if listed
   std::string error;                        // Crash: one line
 
@@ -80,8 +80,8 @@ std::vector<SceneResult> runConformance(const std::vector<SceneEntry>& suite, co
 // Pass and ExpectedFail count as passed; Fail, Crash and UnexpectedPass as failed; Skip as skipped.
 struct Counts {
   std::size_t passed = 0, failed = 0, skipped = 0;
-  std::size_t byStatus[6] = {};
-  std::size_t of(Status s) const { return byStatus[static_cast<int>(s)]; }
+  std::size_t byOutcome[6] = {};
+  std::size_t of(Outcome s) const { return byOutcome[static_cast<int>(s)]; }
 };
 
 Counts countResults(const std::vector<SceneResult>& results);

@@ -43,14 +43,14 @@ std::optional<Expectations> parseExpectations(std::string_view text, const std::
       return fail("expected 'SCENE,STATUS # reason', got '" + std::string(content) + "'");
     }
     const std::string name(trim(content.substr(0, comma)));
-    const std::string_view statusText = trim(content.substr(comma + 1));
+    const std::string_view outcomeText = trim(content.substr(comma + 1));
     if (name.empty()) return fail("missing scene name before ','");
-    const auto status = parseStatus(statusText);
-    if (!status || !(*status == Status::Pass || *status == Status::Fail || *status == Status::Crash ||
-                     *status == Status::Skip)) {
-      return fail("'" + std::string(statusText) + "' is not one of Pass, Fail, Crash, Skip");
+    const auto outcome = parseOutcome(outcomeText);
+    if (!outcome || !(*outcome == Outcome::Pass || *outcome == Outcome::Fail || *outcome == Outcome::Crash ||
+                      *outcome == Outcome::Skip)) {
+      return fail("'" + std::string(outcomeText) + "' is not one of Pass, Fail, Crash, Skip");
     }
-    const auto [it, inserted] = expectations.byScene.emplace(name, Expectation{*status, std::string(reason), lineNumber});
+    const auto [it, inserted] = expectations.byScene.emplace(name, Expectation{*outcome, std::string(reason), lineNumber});
     if (!inserted) return fail("scene '" + name + "' is already listed on line " + std::to_string(it->second.line));
   }
   return expectations;
@@ -78,11 +78,11 @@ std::optional<Expectations> loadExpectations(const std::filesystem::path& file, 
   return parseExpectations(text.str(), file, error);
 }
 
-Status applyExpectation(Status actual, const Expectation* expected) {
-  if (!expected || expected->status == Status::Pass) return actual;
-  if (expected->status == Status::Skip) return Status::Skip;  // not run at all
-  if (actual == Status::Pass) return Status::UnexpectedPass;
-  if (actual == expected->status) return Status::ExpectedFail;
+Outcome applyExpectation(Outcome actual, const Expectation* expected) {
+  if (!expected || expected->outcome == Outcome::Pass) return actual;
+  if (expected->outcome == Outcome::Skip) return Outcome::Skip;  // not run at all
+  if (actual == Outcome::Pass) return Outcome::UnexpectedPass;
+  if (actual == expected->outcome) return Outcome::ExpectedFail;
   return actual;
 }
 

@@ -16,7 +16,7 @@
 namespace crosscheck {
 
 struct Expectation {
-  Status status = Status::Pass;  // Pass, Fail, Crash or Skip
+  Outcome outcome = Outcome::Pass;  // Pass, Fail, Crash or Skip
   std::string reason;
   int line = 0;
 };
@@ -42,6 +42,6 @@ std::optional<Expectations> loadExpectations(const std::filesystem::path& file, 
 // The result a scene gets once its expectation is applied to what actually happened
 // (actual is Pass, Fail or Crash): an expected Fail that fails is ExpectedFail, one that passes
 // is UnexpectedPass, one that crashes stays Crash; likewise for an expected Crash.
-Status applyExpectation(Status actual, const Expectation* expected);
+Outcome applyExpectation(Outcome actual, const Expectation* expected);
 
 }  // namespace crosscheck

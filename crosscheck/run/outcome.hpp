@@ -1,6 +1,8 @@
-// The six outcomes of one scene in a conformance run, and their names as written in output,
-// JUnit files and expectations files.
-// Deliberately no "Flake" status: both renderers are deterministic, so a scene that changes its
+// Outcome: the six results one scene can have in a conformance run, and their names as written in
+// output, JUnit files and expectations files (README and the CLI call them statuses).
+// Not an error type: errors are softraster::Status / Result (softraster/status.hpp); a scene that
+// cannot be run has the outcome Crash and its error line beside it.
+// Deliberately no "Flake" outcome: both renderers are deterministic, so a scene that changes its
 // result between runs is a bug to fix, not a state to record.
 #pragma once
 
@@ -10,33 +12,34 @@
 
 namespace crosscheck {
 
-enum class Status { Pass, Fail, ExpectedFail, UnexpectedPass, Skip, Crash };
+enum class Outcome { Pass, Fail, ExpectedFail, UnexpectedPass, Skip, Crash };
 
-inline constexpr std::array<Status, 6> kAllStatuses{Status::Pass,           Status::Fail, Status::ExpectedFail,
-                                                    Status::UnexpectedPass, Status::Skip, Status::Crash};
+inline constexpr std::array<Outcome, 6> kAllOutcomes{Outcome::Pass,           Outcome::Fail, Outcome::ExpectedFail,
+                                                     Outcome::UnexpectedPass, Outcome::Skip, Outcome::Crash};
 
-constexpr std::string_view statusName(Status status) {
-  switch (status) {
-    case Status::Pass: return "Pass";
-    case Status::Fail: return "Fail";
-    case Status::ExpectedFail: return "ExpectedFail";
-    case Status::UnexpectedPass: return "UnexpectedPass";
-    case Status::Skip: return "Skip";
-    case Status::Crash: return "Crash";
+constexpr std::string_view outcomeName(Outcome outcome) {
+  switch (outcome) {
+    case Outcome::Pass: return "Pass";
+    case Outcome::Fail: return "Fail";
+    case Outcome::ExpectedFail: return "ExpectedFail";
+    case Outcome::UnexpectedPass: return "UnexpectedPass";
+    case Outcome::Skip: return "Skip";
+    case Outcome::Crash: return "Crash";
   }
   return "?";
 }
 
-inline std::optional<Status> parseStatus(std::string_view name) {
-  for (Status s : kAllStatuses) {
-    if (statusName(s) == name) return s;
+// The outcome with this name, or nullopt (a lookup, not an error: the caller names the file).
+inline std::optional<Outcome> parseOutcome(std::string_view name) {
+  for (Outcome o : kAllOutcomes) {
+    if (outcomeName(o) == name) return o;
   }
   return std::nullopt;
 }
 
 // Fail, Crash and UnexpectedPass fail a run; everything else is as expected.
-constexpr bool isUnexpected(Status status) {
-  return status == Status::Fail || status == Status::Crash || status == Status::UnexpectedPass;
+constexpr bool isUnexpected(Outcome outcome) {
+  return outcome == Outcome::Fail || outcome == Outcome::Crash || outcome == Outcome::UnexpectedPass;
 }
 
 }  // namespace crosscheck

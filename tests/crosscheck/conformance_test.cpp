@@ -125,12 +125,12 @@ TEST(Expectations, ParsesNamesStatusesReasonsAndComments) {
   ASSERT_TRUE(e) << error;
   ASSERT_EQ(e->byScene.size(), 3u);
   ASSERT_TRUE(e->find("room"));
-  EXPECT_EQ(e->find("room")->status, Status::Fail);
+  EXPECT_EQ(e->find("room")->outcome, Outcome::Fail);
   EXPECT_EQ(e->find("room")->reason, "edge differs");
   EXPECT_EQ(e->find("room")->line, 3);
-  EXPECT_EQ(e->find("sky")->status, Status::Skip);
+  EXPECT_EQ(e->find("sky")->outcome, Outcome::Skip);
   EXPECT_EQ(e->find("sky")->reason, "");
-  EXPECT_EQ(e->find("x")->status, Status::Crash);
+  EXPECT_EQ(e->find("x")->outcome, Outcome::Crash);
   EXPECT_EQ(e->find("x")->reason, "why");
   EXPECT_EQ(e->find("missing"), nullptr);
 }
@@ -161,17 +161,17 @@ TEST(Expectations, UnreadableFileIsOneLine) {
 }
 
 TEST(Expectations, AppliedToActualResults) {
-  const Expectation fail{Status::Fail, "", 1}, crash{Status::Crash, "", 1}, pass{Status::Pass, "", 1};
-  EXPECT_EQ(applyExpectation(Status::Pass, nullptr), Status::Pass);
-  EXPECT_EQ(applyExpectation(Status::Fail, nullptr), Status::Fail);
-  EXPECT_EQ(applyExpectation(Status::Crash, nullptr), Status::Crash);
-  EXPECT_EQ(applyExpectation(Status::Fail, &pass), Status::Fail);
-  EXPECT_EQ(applyExpectation(Status::Fail, &fail), Status::ExpectedFail);
-  EXPECT_EQ(applyExpectation(Status::Pass, &fail), Status::UnexpectedPass);
-  EXPECT_EQ(applyExpectation(Status::Crash, &fail), Status::Crash);
-  EXPECT_EQ(applyExpectation(Status::Crash, &crash), Status::ExpectedFail);
-  EXPECT_EQ(applyExpectation(Status::Pass, &crash), Status::UnexpectedPass);
-  EXPECT_EQ(applyExpectation(Status::Fail, &crash), Status::Fail);
+  const Expectation fail{Outcome::Fail, "", 1}, crash{Outcome::Crash, "", 1}, pass{Outcome::Pass, "", 1};
+  EXPECT_EQ(applyExpectation(Outcome::Pass, nullptr), Outcome::Pass);
+  EXPECT_EQ(applyExpectation(Outcome::Fail, nullptr), Outcome::Fail);
+  EXPECT_EQ(applyExpectation(Outcome::Crash, nullptr), Outcome::Crash);
+  EXPECT_EQ(applyExpectation(Outcome::Fail, &pass), Outcome::Fail);
+  EXPECT_EQ(applyExpectation(Outcome::Fail, &fail), Outcome::ExpectedFail);
+  EXPECT_EQ(applyExpectation(Outcome::Pass, &fail), Outcome::UnexpectedPass);
+  EXPECT_EQ(applyExpectation(Outcome::Crash, &fail), Outcome::Crash);
+  EXPECT_EQ(applyExpectation(Outcome::Crash, &crash), Outcome::ExpectedFail);
+  EXPECT_EQ(applyExpectation(Outcome::Pass, &crash), Outcome::UnexpectedPass);
+  EXPECT_EQ(applyExpectation(Outcome::Fail, &crash), Outcome::Fail);
 }
 
 // ---- statuses from real runs ----
@@ -192,18 +192,18 @@ TEST(Conformance, PassFailAndCrashFromLoading) {
   ConformanceOptions options;
   const auto results = runConformance({fixture("flat_triangle"), fixture("malformed"), fixture("broken_obj")}, options);
   ASSERT_EQ(results.size(), 3u);
-  EXPECT_EQ(results[0].status, Status::Pass);
+  EXPECT_EQ(results[0].outcome, Outcome::Pass);
   ASSERT_TRUE(results[0].comparison);
   EXPECT_EQ(results[0].comparison->pixels, 32u * 24u);
   EXPECT_GT(results[0].vulkanMilliseconds, 0);
-  EXPECT_EQ(results[1].status, Status::Crash);
+  EXPECT_EQ(results[1].outcome, Outcome::Crash);
   EXPECT_EQ(results[1].error.find((kFixtures / "malformed.json").string() + ": parse error at line 3"), 0u) << results[1].error;
-  EXPECT_EQ(results[2].status, Status::Crash);
+  EXPECT_EQ(results[2].outcome, Outcome::Crash);
   EXPECT_NE(results[2].error.find("malformed.obj"), std::string::npos) << results[2].error;
 
   options.renderSoft = paintedSoftraster;
   const auto failed = runConformance({fixture("flat_triangle")}, options);
-  EXPECT_EQ(failed[0].status, Status::Fail);
+  EXPECT_EQ(failed[0].outcome, Outcome::Fail);
   ASSERT_TRUE(failed[0].comparison);
   EXPECT_EQ(failed[0].comparison->coverageMismatches, 1u);
   EXPECT_EQ(failed[0].comparison->failures.front(), "coverage_mismatches 1 > 0");
@@ -220,9 +220,9 @@ TEST(Conformance, RendererErrorAndExceptionAreCrashAndTheRunGoesOn) {
     throw std::runtime_error("boom");
   };
   const auto results = runConformance({fixture("flat_triangle"), fixture("depth_slope")}, options);
-  EXPECT_EQ(results[0].status, Status::Crash);
+  EXPECT_EQ(results[0].outcome, Outcome::Crash);
   EXPECT_EQ(results[0].error, "softraster: draw 'x': out of memory second line");  // one line
-  EXPECT_EQ(results[1].status, Status::Crash);
+  EXPECT_EQ(results[1].outcome, Outcome::Crash);
   EXPECT_EQ(results[1].error, "exception: boom");
 }
 
@@ -241,15 +241,15 @@ TEST(Conformance, ExpectationsGiveExpectedFailUnexpectedPassAndSkip) {
   };
   const auto results =
       runConformance({fixture("broken_obj"), fixture("depth_slope"), fixture("flat_triangle"), fixture("malformed")}, options);
-  EXPECT_EQ(results[0].status, Status::ExpectedFail);
-  EXPECT_EQ(results[0].actual, Status::Crash);
-  EXPECT_EQ(results[1].status, Status::UnexpectedPass);
+  EXPECT_EQ(results[0].outcome, Outcome::ExpectedFail);
+  EXPECT_EQ(results[0].actual, Outcome::Crash);
+  EXPECT_EQ(results[1].outcome, Outcome::UnexpectedPass);
   EXPECT_EQ(resultDetail(results[1]), "expected Fail (line 2), but passed");
-  EXPECT_EQ(results[2].status, Status::ExpectedFail);
-  EXPECT_EQ(results[2].actual, Status::Fail);
+  EXPECT_EQ(results[2].outcome, Outcome::ExpectedFail);
+  EXPECT_EQ(results[2].actual, Outcome::Fail);
   ASSERT_TRUE(results[2].expectation);
   EXPECT_EQ(results[2].expectation->reason, "painted");
-  EXPECT_EQ(results[3].status, Status::Skip);
+  EXPECT_EQ(results[3].outcome, Outcome::Skip);
   EXPECT_FALSE(results[3].loaded);
   EXPECT_EQ(softCalls, 2);  // skipped and unloadable scenes never render
 
@@ -280,7 +280,7 @@ TEST(Conformance, ParallelRunKeepsSuiteOrderAndReportsEveryScene) {
   ASSERT_EQ(results.size(), suite.size());
   for (std::size_t i = 0; i < suite.size(); ++i) {
     EXPECT_EQ(results[i].entry.name, suite[i].name);
-    EXPECT_EQ(results[i].status, i % 3 == 2 ? Status::Crash : Status::Pass) << suite[i].name << ": " << results[i].error;
+    EXPECT_EQ(results[i].outcome, i % 3 == 2 ? Outcome::Crash : Outcome::Pass) << suite[i].name << ": " << results[i].error;
   }
   std::sort(positions.begin(), positions.end());
   for (std::size_t i = 0; i < suite.size(); ++i) {
@@ -291,19 +291,19 @@ TEST(Conformance, ParallelRunKeepsSuiteOrderAndReportsEveryScene) {
 
 // ---- text output ----
 
-SceneResult madeUp(const std::string& name, Status status, double ms) {
+SceneResult madeUp(const std::string& name, Outcome outcome, double ms) {
   SceneResult r;
   r.entry = {name, name + ".json"};
-  r.status = r.actual = status;
+  r.outcome = r.actual = outcome;
   r.milliseconds = ms;
-  if (status == Status::Crash) r.error = name + ".json: broken";
-  if (status == Status::Pass || status == Status::Fail) {
+  if (outcome == Outcome::Crash) r.error = name + ".json: broken";
+  if (outcome == Outcome::Pass || outcome == Outcome::Fail) {
     r.loaded = true;
     r.comparison = Comparison{};
     r.softMilliseconds = ms / 4;
     r.vulkanMilliseconds = ms / 2;
     r.tolerance.depthThreshold = 0.5;
-    if (status == Status::Fail) {
+    if (outcome == Outcome::Fail) {
       r.comparison->depthMaxDelta = 0.75;
       r.comparison->depthPixelsOver = 3;
       r.comparison->failures = {"depth_pixels_over 3 > 0"};
@@ -314,9 +314,9 @@ SceneResult madeUp(const std::string& name, Status status, double ms) {
 
 TEST(Summary, ListsFailuresWithMetricAndThresholdAndTheFiveSlowest) {
   std::vector<SceneResult> results;
-  for (int i = 0; i < 6; ++i) results.push_back(madeUp("pass" + std::to_string(i), Status::Pass, 10.0 * (i + 1)));
-  results.push_back(madeUp("bad", Status::Fail, 5));
-  results.push_back(madeUp("broken", Status::Crash, 1));
+  for (int i = 0; i < 6; ++i) results.push_back(madeUp("pass" + std::to_string(i), Outcome::Pass, 10.0 * (i + 1)));
+  results.push_back(madeUp("bad", Outcome::Fail, 5));
+  results.push_back(madeUp("broken", Outcome::Crash, 1));
   const std::string text = summaryText(results);
   EXPECT_NE(text.find("Failures (2):\n  Fail           bad: depth_pixels_over 3 > 0 (depth max |d| 0.75, threshold 0.5)\n"
                       "  Crash          broken: broken.json: broken\n"),
@@ -336,13 +336,13 @@ TEST(Summary, ListsFailuresWithMetricAndThresholdAndTheFiveSlowest) {
 // ---- JUnit ----
 
 TEST(JUnit, CountsAndElementsPerStatus) {
-  std::vector<SceneResult> results = {madeUp("a", Status::Pass, 1500), madeUp("b", Status::Fail, 2),
-                                      madeUp("c<&\"'>", Status::Crash, 3), madeUp("d", Status::Pass, 4),
-                                      madeUp("e", Status::Skip, 0), madeUp("f", Status::Fail, 5)};
-  results[3].status = Status::UnexpectedPass;
-  results[3].expectation = Expectation{Status::Fail, "known", 7};
-  results[5].status = Status::ExpectedFail;
-  results[5].expectation = Expectation{Status::Fail, "tracked in issue 9", 8};
+  std::vector<SceneResult> results = {madeUp("a", Outcome::Pass, 1500), madeUp("b", Outcome::Fail, 2),
+                                      madeUp("c<&\"'>", Outcome::Crash, 3), madeUp("d", Outcome::Pass, 4),
+                                      madeUp("e", Outcome::Skip, 0), madeUp("f", Outcome::Fail, 5)};
+  results[3].outcome = Outcome::UnexpectedPass;
+  results[3].expectation = Expectation{Outcome::Fail, "known", 7};
+  results[5].outcome = Outcome::ExpectedFail;
+  results[5].expectation = Expectation{Outcome::Fail, "tracked in issue 9", 8};
   results[0].imageRoot = "out";
   results[0].images = {{"diff", "a/diff.png"}};
   const std::string xml = junitXml(results, {"suite", 2.5, "2025-01-01T00:00:00"});

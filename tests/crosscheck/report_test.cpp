@@ -108,11 +108,11 @@ TEST(Report, PageHasSummaryTableLazyImagesAndNoNetwork) {
 
 TEST(Report, WorstFirstOrdersByStatusThenMetrics) {
   std::vector<SceneResult> results(5);
-  const Status statuses[] = {Status::Pass, Status::Fail, Status::Skip, Status::Fail, Status::Crash};
+  const Outcome outcomes[] = {Outcome::Pass, Outcome::Fail, Outcome::Skip, Outcome::Fail, Outcome::Crash};
   for (std::size_t i = 0; i < results.size(); ++i) {
     results[i].entry.name = "s" + std::to_string(i);
-    results[i].status = statuses[i];
-    if (statuses[i] == Status::Fail || statuses[i] == Status::Pass) results[i].comparison = Comparison{};
+    results[i].outcome = outcomes[i];
+    if (outcomes[i] == Outcome::Fail || outcomes[i] == Outcome::Pass) results[i].comparison = Comparison{};
   }
   results[1].comparison->coverageMismatches = 2;
   results[3].comparison->coverageMismatches = 9;

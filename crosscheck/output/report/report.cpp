@@ -58,14 +58,14 @@ std::string fixed(const char* pattern, double value) {
   return buffer;
 }
 
-int statusRank(Status s) {
+int outcomeRank(Outcome s) {
   switch (s) {
-    case Status::Crash: return 0;
-    case Status::Fail: return 1;
-    case Status::UnexpectedPass: return 2;
-    case Status::ExpectedFail: return 3;
-    case Status::Pass: return 4;
-    case Status::Skip: return 5;
+    case Outcome::Crash: return 0;
+    case Outcome::Fail: return 1;
+    case Outcome::UnexpectedPass: return 2;
+    case Outcome::ExpectedFail: return 3;
+    case Outcome::Pass: return 4;
+    case Outcome::Skip: return 5;
   }
   return 6;
 }
@@ -91,8 +91,8 @@ std::string numberCell(double sortValue, const std::string& shown, bool over, co
 
 std::string emptyCell() { return "<td class=\"num none\" data-v=\"\">&#8212;</td>"; }
 
-std::string badge(Status s) {
-  return "<span class=\"badge st-" + std::string(statusName(s)) + "\">" + std::string(statusName(s)) + "</span>";
+std::string badge(Outcome s) {
+  return "<span class=\"badge st-" + std::string(outcomeName(s)) + "\">" + std::string(outcomeName(s)) + "</span>";
 }
 
 std::string rgbaText(const std::array<int, 4>& v) {
@@ -106,8 +106,8 @@ std::string meanText(const std::array<double, 4>& v) {
 std::string psnrText(double psnr) { return std::isfinite(psnr) ? fixed("%.2f", psnr) : "\xE2\x88\x9E"; }
 
 std::string summaryRow(const SceneResult& r, std::size_t position, std::size_t rank) {
-  std::string row = "<tr class=\"st-" + std::string(statusName(r.status)) + "\" data-rank=\"" + std::to_string(rank) + "\">";
-  row += "<td data-v=\"" + std::to_string(statusRank(r.status)) + "\">" + badge(r.status) + "</td>";
+  std::string row = "<tr class=\"st-" + std::string(outcomeName(r.outcome)) + "\" data-rank=\"" + std::to_string(rank) + "\">";
+  row += "<td data-v=\"" + std::to_string(outcomeRank(r.outcome)) + "\">" + badge(r.outcome) + "</td>";
   row += "<td data-v=\"" + e(r.entry.name) + "\"><a href=\"#s-" + std::to_string(position) + "\">" + e(r.entry.name) + "</a></td>";
   if (r.comparison) {
     const Comparison& c = *r.comparison;
@@ -202,19 +202,19 @@ std::string depthLegend(double threshold) {
 }
 
 std::string sceneSection(const SceneResult& r, std::size_t position, bool open) {
-  std::string s = "<details class=\"scene st-" + std::string(statusName(r.status)) + "\" id=\"s-" + std::to_string(position) +
+  std::string s = "<details class=\"scene st-" + std::string(outcomeName(r.outcome)) + "\" id=\"s-" + std::to_string(position) +
                   "\" data-name=\"" + e(r.entry.name) + "\" data-w=\"" + std::to_string(r.width) + "\" data-h=\"" +
                   std::to_string(r.height) + "\"";
   if (!r.pixelData.empty()) s += " data-pixels=\"" + url(r.pixelData) + "\"";
   s += open ? " open>" : ">";
   const std::string detail = resultDetail(r);
-  s += "<summary>" + badge(r.status) + "<span class=\"name\">" + e(r.entry.name) + "</span><span class=\"path\">" +
+  s += "<summary>" + badge(r.outcome) + "<span class=\"name\">" + e(r.entry.name) + "</span><span class=\"path\">" +
        e(r.entry.path.string()) + "</span>";
-  if (!detail.empty() && r.actual != Status::Crash) s += "<span class=\"brief\">" + e(detail) + "</span>";
+  if (!detail.empty() && r.actual != Outcome::Crash) s += "<span class=\"brief\">" + e(detail) + "</span>";
   s += "</summary>\n<div class=\"scene-body\">\n";
   if (!r.description.empty()) s += "<p class=\"desc\">" + e(r.description) + "</p>\n";
   if (r.expectation) {
-    s += "<p class=\"expect\">expected " + std::string(statusName(r.expectation->status)) + " (expectations line " +
+    s += "<p class=\"expect\">expected " + std::string(outcomeName(r.expectation->outcome)) + " (expectations line " +
          std::to_string(r.expectation->line) + ")" + (r.expectation->reason.empty() ? "" : ": " + e(r.expectation->reason)) +
          "</p>\n";
   }
@@ -286,7 +286,7 @@ std::vector<std::size_t> worstFirst(const std::vector<SceneResult>& results) {
     const Comparison none;
     const Comparison& c = r.comparison ? *r.comparison : none;
     const double psnr = r.comparison ? c.psnr : std::numeric_limits<double>::infinity();
-    return std::make_tuple(statusRank(r.status), ~c.coverageMismatches, ~c.colourPixelsOver, ~c.depthPixelsOver, psnr,
+    return std::make_tuple(outcomeRank(r.outcome), ~c.coverageMismatches, ~c.colourPixelsOver, ~c.depthPixelsOver, psnr,
                            std::string_view(r.entry.name));
   };
   std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return key(a) < key(b); });
@@ -309,8 +309,8 @@ std::string reportHtml(const std::vector<SceneResult>& results, const ReportInfo
   html += "<h1>softraster \xC3\x97 Vulkan (lavapipe): conformance report</h1>\n";
   html += "<p class=\"counts\">" + e(countsLine(counts)) + "</p>\n";
   html += "<p class=\"run\">" + std::to_string(results.size()) + " scenes";
-  for (Status s : kAllStatuses) {
-    if (counts.of(s)) html += " \xC2\xB7 " + std::to_string(counts.of(s)) + " " + std::string(statusName(s));
+  for (Outcome s : kAllOutcomes) {
+    if (counts.of(s)) html += " \xC2\xB7 " + std::to_string(counts.of(s)) + " " + std::string(outcomeName(s));
   }
   html += " \xC2\xB7 " + e(fixed("%.2f s", info.seconds)) + " with " + std::to_string(info.jobs) + (info.jobs == 1 ? " job" : " jobs");
   if (!info.generated.empty()) html += " \xC2\xB7 " + e(info.generated);
@@ -338,7 +338,7 @@ std::string reportHtml(const std::vector<SceneResult>& results, const ReportInfo
   std::size_t opened = 0;
   for (const std::size_t position : order) {
     const SceneResult& r = results[position];
-    const bool open = isUnexpected(r.status) && !r.images.empty() && opened < 3;
+    const bool open = isUnexpected(r.outcome) && !r.images.empty() && opened < 3;
     opened += open;
     html += sceneSection(r, position, open);
   }
