@@ -47,25 +47,24 @@ struct CommonOptions {
   }
 };
 
-std::unique_ptr<vkref::Renderer> openVulkan(const CommonOptions& options, std::string* error) {
+vkref::DeviceOptions deviceOptions(const CommonOptions& options) {
   vkref::DeviceOptions device;
   device.deviceName = options.device;
   device.validation = options.validation;
-  return vkref::Renderer::create(device, error);
+  return device;
 }
 
-std::optional<Frame> renderWith(const std::string& renderer, const Scene& scene, const CommonOptions& options,
-                                std::string* error) {
-  if (renderer == "soft") return renderSoftraster(scene, error, options.softraster());
-  auto vulkan = openVulkan(options, error);
-  if (!vulkan) return std::nullopt;
-  return renderVulkan(scene, *vulkan, error);
+softraster::Result<Frame> renderWith(const std::string& renderer, const Scene& scene, const CommonOptions& options) {
+  if (renderer == "soft") return renderSoftraster(scene, options.softraster());
+  const auto vulkan = openVulkan(deviceOptions(options));
+  if (!vulkan) return vulkan.status();
+  return renderVulkan(scene, **vulkan);
 }
 
-bool writeDepthView(const std::string& path, const Frame& frame, const Scene& scene, const std::vector<float>& range,
-                    std::string* error) {
+softraster::Status writeDepthView(const std::string& path, const Frame& frame, const Scene& scene,
+                                  const std::vector<float>& range) {
   const float lo = range.size() == 2 ? range[0] : 0.0f, hi = range.size() == 2 ? range[1] : 0.0f;
-  return writePng(path, frame.width, frame.height, depthToGrey(frame.depth, scene.clearDepth, lo, hi), error);
+  return writePng(path, frame.width, frame.height, depthToGrey(frame.depth, scene.clearDepth, lo, hi));
 }
 
 nlohmann::json toJson(const Scene& scene, const Comparison& c, const Frame& soft, const Frame& vulkan) {
@@ -195,33 +194,38 @@ int main(int argc, char** argv) {
     return runConformanceCommand(suite);
   }
 
-  std::string error;
-  const auto scene = loadScene(scenePath, &error, common.overrides);
-  if (!scene) return fail(error);
+  const auto scene = loadScene(scenePath, common.overrides);
+  if (!scene) return fail(scene.error());
 
   if (render->parsed()) {
-    const auto frame = renderWith(renderer, *scene, common, &error);
-    if (!frame) return fail(error);
-    if (!writePng(output, frame->width, frame->height, frame->rgba, &error)) return fail(error);
-    if (!depthOutput.empty() && !writeDepthView(depthOutput, *frame, *scene, depthRange, &error)) return fail(error);
+    const auto frame = renderWith(renderer, *scene, common);
+    if (!frame) return fail(frame.error());
+    if (const auto written = writePng(output, frame->width, frame->height, frame->rgba); !written) {
+      return fail(written.message());
+    }
+    if (!depthOutput.empty()) {
+      if (const auto written = writeDepthView(depthOutput, *frame, *scene, depthRange); !written) {
+        return fail(written.message());
+      }
+    }
     return 0;
   }
 
-  const auto soft = renderSoftraster(*scene, &error, common.softraster());
-  if (!soft) return fail(error);
-  auto vulkan = openVulkan(common, &error);
-  if (!vulkan) return fail(error);
-  const auto reference = renderVulkan(*scene, *vulkan, &error);
-  if (!reference) return fail(error);
+  const auto soft = renderSoftraster(*scene, common.softraster());
+  if (!soft) return fail(soft.error());
+  const auto vulkan = openVulkan(deviceOptions(common));
+  if (!vulkan) return fail(vulkan.error());
+  const auto reference = renderVulkan(*scene, **vulkan);
+  if (!reference) return fail(reference.error());
   const Comparison result = compareFrames(*soft, *reference, *scene);
   if (!outDir.empty()) {
     const std::filesystem::path dir(outDir);
-    const bool written = writePng(dir / "soft.png", soft->width, soft->height, soft->rgba, &error) &&
-                         writePng(dir / "vulkan.png", reference->width, reference->height, reference->rgba, &error) &&
-                         writePng(dir / "diff.png", soft->width, soft->height, diffHeatmap(*soft, *reference, *scene), &error) &&
-                         writeDepthView((dir / "soft.depth.png").string(), *soft, *scene, {}, &error) &&
-                         writeDepthView((dir / "vulkan.depth.png").string(), *reference, *scene, {}, &error);
-    if (!written) return fail(error);
+    softraster::Status written = writePng(dir / "soft.png", soft->width, soft->height, soft->rgba);
+    if (written) written = writePng(dir / "vulkan.png", reference->width, reference->height, reference->rgba);
+    if (written) written = writePng(dir / "diff.png", soft->width, soft->height, diffHeatmap(*soft, *reference, *scene));
+    if (written) written = writeDepthView((dir / "soft.depth.png").string(), *soft, *scene, {});
+    if (written) written = writeDepthView((dir / "vulkan.depth.png").string(), *reference, *scene, {});
+    if (!written) return fail(written.message());
   }
   if (json) {
     std::cout << toJson(*scene, result, *soft, *reference).dump() << "\n";

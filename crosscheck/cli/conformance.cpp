@@ -21,6 +21,7 @@ namespace crosscheck {
 namespace {
 
 using Clock = std::chrono::steady_clock;
+using softraster::Status;
 
 int usageError(const std::string& message) {
   std::fprintf(stderr, "crosscheck: %s\n", message.c_str());
@@ -28,32 +29,28 @@ int usageError(const std::string& message) {
 }
 
 // Creates the folder and proves a file can be created in it, so a run does not end in an error.
-bool prepareOutputDir(const std::string& dir, std::string* error) {
+Status prepareOutputDir(const std::string& dir) {
   std::error_code ec;
   std::filesystem::create_directories(dir, ec);
   if (ec || !std::filesystem::is_directory(dir)) {
-    *error = dir + ": cannot create output directory" + (ec ? ": " + ec.message() : std::string(": not a directory"));
-    return false;
+    return Status::error(dir + ": cannot create output directory" +
+                         (ec ? ": " + ec.message() : std::string(": not a directory")));
   }
   const std::filesystem::path probe = std::filesystem::path(dir) / ".crosscheck-write-test";
-  if (!std::ofstream(probe)) {
-    *error = dir + ": cannot write into output directory";
-    return false;
-  }
+  if (!std::ofstream(probe)) return Status::error(dir + ": cannot write into output directory");
   std::filesystem::remove(probe, ec);
-  return true;
+  return {};
 }
 
 // Opens the file for appending (so an existing file is not emptied yet) to prove it is writable.
-bool prepareOutputFile(const std::string& file, std::string* error) {
+Status prepareOutputFile(const std::string& file) {
   const std::filesystem::path path(file);
   std::error_code ec;
   if (path.has_parent_path()) std::filesystem::create_directories(path.parent_path(), ec);
   if (std::filesystem::is_directory(path, ec) || !std::ofstream(path, std::ios::app)) {
-    *error = file + ": cannot write this file";
-    return false;
+    return Status::error(file + ": cannot write this file");
   }
-  return true;
+  return {};
 }
 
 // The current UTC time in strftime `format`.
@@ -100,24 +97,28 @@ class Printer {
 }  // namespace
 
 int runConformanceCommand(const ConformanceCommand& command) {
-  std::string error;
   if (command.jobs < 1) return usageError("--jobs must be at least 1");
   Shard shard;
   if (!command.shard.empty()) {
-    const auto parsed = parseShard(command.shard, &error);
-    if (!parsed) return usageError(error);
+    const auto parsed = parseShard(command.shard);
+    if (!parsed) return usageError(parsed.error());
     shard = *parsed;
   }
   std::optional<Expectations> expectations;
   if (!command.expectationsFile.empty()) {
-    expectations = loadExpectations(command.expectationsFile, &error);
-    if (!expectations) return usageError(error);
+    auto loaded = loadExpectations(command.expectationsFile);
+    if (!loaded) return usageError(loaded.error());
+    expectations = std::move(*loaded);
   }
-  const auto suite = collectScenes(command.inputs, &error);
-  if (!suite) return usageError(error);
-  if (!command.outDir.empty() && !prepareOutputDir(command.outDir, &error)) return usageError(error);
-  if (!command.reportDir.empty() && !prepareOutputDir(command.reportDir, &error)) return usageError(error);
-  if (!command.junitFile.empty() && !prepareOutputFile(command.junitFile, &error)) return usageError(error);
+  const auto suite = collectScenes(command.inputs);
+  if (!suite) return usageError(suite.error());
+  for (const std::string& dir : {command.outDir, command.reportDir}) {
+    if (dir.empty()) continue;
+    if (const Status prepared = prepareOutputDir(dir); !prepared) return usageError(prepared.message());
+  }
+  if (!command.junitFile.empty()) {
+    if (const Status prepared = prepareOutputFile(command.junitFile); !prepared) return usageError(prepared.message());
+  }
 
   if (expectations) {
     std::set<std::string> names;
@@ -149,10 +150,11 @@ int runConformanceCommand(const ConformanceCommand& command) {
   const std::string imageDir = command.reportDir.empty() ? command.outDir : command.reportDir;
   const bool report = !command.reportDir.empty();
   if (!imageDir.empty()) {
-    options.onFrames = [&](SceneResult& result, const Scene& scene, const Frame& soft, const Frame& vulkan, std::string* err) {
+    options.onFrames = [&](SceneResult& result, const Scene& scene, const Frame& soft, const Frame& vulkan) {
       const std::filesystem::path folder = result.entry.name;
-      return writeSceneImages(imageDir, folder, &result, scene, soft, vulkan, err) &&
-             (!report || writePixelData(imageDir, folder / "pixels.js", &result, soft, vulkan, err));
+      const Status images = writeSceneImages(imageDir, folder, &result, scene, soft, vulkan);
+      if (!images || !report) return images;
+      return writePixelData(imageDir, folder / "pixels.js", &result, soft, vulkan);
     };
   }
   const std::vector<SceneResult> results = runConformance(slice, options);
@@ -166,8 +168,8 @@ int runConformanceCommand(const ConformanceCommand& command) {
     info.seconds = seconds;
     info.timestamp = utcNow("%Y-%m-%dT%H:%M:%S");
     if (shard.count > 1) info.suiteName += ".shard" + std::to_string(shard.index) + "of" + std::to_string(shard.count);
-    if (!writeJUnit(command.junitFile, results, info, &error)) {
-      std::fprintf(stderr, "crosscheck: %s\n", error.c_str());
+    if (const Status status = writeJUnit(command.junitFile, results, info); !status) {
+      std::fprintf(stderr, "crosscheck: %s\n", status.message().c_str());
       written = false;
     }
   }
@@ -177,8 +179,8 @@ int runConformanceCommand(const ConformanceCommand& command) {
     info.commandLine = command.commandLine;
     info.seconds = seconds;
     info.jobs = command.jobs;
-    if (!writeReport(command.reportDir, results, info, &error)) {
-      std::fprintf(stderr, "crosscheck: %s\n", error.c_str());
+    if (const Status status = writeReport(command.reportDir, results, info); !status) {
+      std::fprintf(stderr, "crosscheck: %s\n", status.message().c_str());
       written = false;
     }
   }

@@ -20,23 +20,26 @@ std::pair<float, float> sharedDepthRange(const Frame& soft, const Frame& vulkan,
   return {0.0f, 1.0f};
 }
 
-bool writeSceneImages(const std::filesystem::path& root, const std::filesystem::path& folder, SceneResult* result,
-                      const Scene& scene, const Frame& soft, const Frame& vulkan, std::string* error) {
+softraster::Status writeSceneImages(const std::filesystem::path& root, const std::filesystem::path& folder,
+                                    SceneResult* result, const Scene& scene, const Frame& soft, const Frame& vulkan) {
   const auto [lo, hi] = sharedDepthRange(soft, vulkan, scene.clearDepth);
   result->depthViewRange = {lo, hi};
   result->imageRoot = root;
   result->images.clear();
+  softraster::Status status;
   const auto write = [&](const char* kind, const char* file, const Frame& frame, const std::vector<std::uint8_t>& rgba) {
     const std::filesystem::path relative = folder / file;
-    if (!writePng(root / relative, frame.width, frame.height, rgba, error)) return false;
-    result->images.push_back({kind, relative});
-    return true;
+    status = writePng(root / relative, frame.width, frame.height, rgba);
+    if (status) result->images.push_back({kind, relative});
+    return status.ok();
   };
-  return write("soft", "soft.png", soft, soft.rgba) && write("vulkan", "vulkan.png", vulkan, vulkan.rgba) &&
-         write("diff", "diff.png", soft, diffHeatmap(soft, vulkan, scene)) &&
-         write("soft.depth", "soft.depth.png", soft, depthToGrey(soft.depth, scene.clearDepth, lo, hi)) &&
-         write("vulkan.depth", "vulkan.depth.png", vulkan, depthToGrey(vulkan.depth, scene.clearDepth, lo, hi)) &&
-         write("depth.diff", "depth.diff.png", soft, depthDiffHeatmap(soft, vulkan, scene));
+  // Stops at the first image that cannot be written (the later ones are not even computed).
+  static_cast<void>(write("soft", "soft.png", soft, soft.rgba) && write("vulkan", "vulkan.png", vulkan, vulkan.rgba) &&
+                    write("diff", "diff.png", soft, diffHeatmap(soft, vulkan, scene)) &&
+                    write("soft.depth", "soft.depth.png", soft, depthToGrey(soft.depth, scene.clearDepth, lo, hi)) &&
+                    write("vulkan.depth", "vulkan.depth.png", vulkan, depthToGrey(vulkan.depth, scene.clearDepth, lo, hi)) &&
+                    write("depth.diff", "depth.diff.png", soft, depthDiffHeatmap(soft, vulkan, scene)));
+  return status;
 }
 
 }  // namespace crosscheck

@@ -6,8 +6,9 @@
 
 #include "run/conformance.hpp"
 
+#include <softraster/status.hpp>
+
 #include <filesystem>
-#include <string>
 
 namespace crosscheck {
 
@@ -17,8 +18,8 @@ namespace crosscheck {
 std::pair<float, float> sharedDepthRange(const Frame& soft, const Frame& vulkan, float clearDepth);
 
 // Writes the six images into root / folder and records them (and the depth range) in *result.
-// On failure sets *error to "FILE: cannot write PNG" and returns false.
-bool writeSceneImages(const std::filesystem::path& root, const std::filesystem::path& folder, SceneResult* result,
-                      const Scene& scene, const Frame& soft, const Frame& vulkan, std::string* error);
+// The error is "FILE: cannot write PNG".
+softraster::Status writeSceneImages(const std::filesystem::path& root, const std::filesystem::path& folder,
+                                    SceneResult* result, const Scene& scene, const Frame& soft, const Frame& vulkan);
 
 }  // namespace crosscheck

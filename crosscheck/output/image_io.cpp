@@ -8,18 +8,17 @@
 
 namespace crosscheck {
 
-bool writePng(const std::filesystem::path& path, std::uint32_t width, std::uint32_t height,
-              const std::vector<std::uint8_t>& rgba, std::string* error) {
+softraster::Status writePng(const std::filesystem::path& path, std::uint32_t width, std::uint32_t height,
+                            const std::vector<std::uint8_t>& rgba) {
   if (path.has_parent_path()) {
     std::error_code ec;
     std::filesystem::create_directories(path.parent_path(), ec);
   }
   if (!stbi_write_png(path.string().c_str(), static_cast<int>(width), static_cast<int>(height), 4, rgba.data(),
                       static_cast<int>(width * 4))) {
-    *error = path.string() + ": cannot write PNG";
-    return false;
+    return softraster::Status::error(path.string() + ": cannot write PNG");
   }
-  return true;
+  return {};
 }
 
 std::vector<std::uint8_t> depthToGrey(const std::vector<float>& depth, float clearDepth, float lo, float hi) {

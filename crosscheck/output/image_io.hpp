@@ -2,16 +2,17 @@
 // Deliberately write-only: the tool never needs to read images back.
 #pragma once
 
+#include <softraster/status.hpp>
+
 #include <cstdint>
 #include <filesystem>
-#include <string>
 #include <vector>
 
 namespace crosscheck {
 
-// Writes RGBA8 pixels; returns false and sets *error ("FILE: cannot write PNG") on failure.
-bool writePng(const std::filesystem::path& path, std::uint32_t width, std::uint32_t height,
-              const std::vector<std::uint8_t>& rgba, std::string* error);
+// Writes RGBA8 pixels (creating the folder); the error is "FILE: cannot write PNG".
+softraster::Status writePng(const std::filesystem::path& path, std::uint32_t width, std::uint32_t height,
+                            const std::vector<std::uint8_t>& rgba);
 
 // Depth in [lo, hi] to grey levels 0..255 (near is dark); values outside saturate. With lo >= hi
 // the range is taken from the depths that differ from clearDepth.

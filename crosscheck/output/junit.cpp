@@ -95,9 +95,9 @@ std::string junitXml(const std::vector<SceneResult>& results, const JUnitInfo& i
   return xml;
 }
 
-bool writeJUnit(const std::filesystem::path& file, const std::vector<SceneResult>& results, const JUnitInfo& info,
-                std::string* error) {
-  return writeDocument(file, junitXml(results, info), "JUnit file", error);
+softraster::Status writeJUnit(const std::filesystem::path& file, const std::vector<SceneResult>& results,
+                              const JUnitInfo& info) {
+  return writeDocument(file, junitXml(results, info), "JUnit file");
 }
 
 }  // namespace crosscheck

@@ -6,6 +6,8 @@
 
 #include "run/conformance.hpp"
 
+#include <softraster/status.hpp>
+
 #include <filesystem>
 #include <string>
 #include <vector>
@@ -20,8 +22,8 @@ struct JUnitInfo {
 
 std::string junitXml(const std::vector<SceneResult>& results, const JUnitInfo& info);
 
-// Writes the file (creating its folder); on failure sets *error "FILE: cannot write JUnit file: reason".
-bool writeJUnit(const std::filesystem::path& file, const std::vector<SceneResult>& results, const JUnitInfo& info,
-                std::string* error);
+// Writes the file (creating its folder); the error is "FILE: cannot write JUnit file: reason".
+softraster::Status writeJUnit(const std::filesystem::path& file, const std::vector<SceneResult>& results,
+                              const JUnitInfo& info);
 
 }  // namespace crosscheck

@@ -83,8 +83,7 @@ std::string encodeUrlPath(std::string_view path) {
   return out;
 }
 
-bool writeDocument(const std::filesystem::path& file, std::string_view text, std::string_view what,
-                   std::string* error) {
+softraster::Status writeDocument(const std::filesystem::path& file, std::string_view text, std::string_view what) {
   if (file.has_parent_path()) {
     std::error_code ec;
     std::filesystem::create_directories(file.parent_path(), ec);
@@ -94,10 +93,10 @@ bool writeDocument(const std::filesystem::path& file, std::string_view text, std
   if (out) out << text;
   if (out) out.close();
   if (!out) {
-    *error = file.string() + ": cannot write " + std::string(what) + ": " + (errno ? std::strerror(errno) : "write error");
-    return false;
+    return softraster::Status::error(file.string() + ": cannot write " + std::string(what) + ": " +
+                                     (errno ? std::strerror(errno) : "write error"));
   }
-  return true;
+  return {};
 }
 
 }  // namespace crosscheck

@@ -4,6 +4,8 @@
 // they put into it.
 #pragma once
 
+#include <softraster/status.hpp>
+
 #include <filesystem>
 #include <string>
 #include <string_view>
@@ -19,9 +21,7 @@ std::string escapeMarkup(std::string_view text);
 // every other byte becomes %XX.
 std::string encodeUrlPath(std::string_view path);
 
-// Writes `text` to `file`, creating its folder. On failure sets *error to
-// "FILE: cannot write WHAT: REASON" and returns false.
-bool writeDocument(const std::filesystem::path& file, std::string_view text, std::string_view what,
-                   std::string* error);
+// Writes `text` to `file`, creating its folder. The error is "FILE: cannot write WHAT: REASON".
+softraster::Status writeDocument(const std::filesystem::path& file, std::string_view text, std::string_view what);
 
 }  // namespace crosscheck

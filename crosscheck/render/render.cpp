@@ -72,8 +72,7 @@ std::vector<std::byte> bytesOf(const T* data, std::size_t count) {
 
 }  // namespace
 
-std::optional<Frame> renderSoftraster(const Scene& scene, std::string* error,
-                                     const softraster::ContextOptions& options) {
+softraster::Result<Frame> renderSoftraster(const Scene& scene, const softraster::ContextOptions& options) {
   const auto start = Clock::now();
   softraster::Framebuffer framebuffer(scene.width, scene.height, scene.depthFormat, scene.samples);
   // The 1/z buffer is cleared to 0 (infinitely far); it is not a Vulkan mode.
@@ -88,10 +87,7 @@ std::optional<Frame> renderSoftraster(const Scene& scene, std::string* error,
       return draw.indexed ? context.drawIndexed<Shader>(draw.state, uniforms, vertices, draw.indices, framebuffer)
                           : context.draw<Shader>(draw.state, uniforms, vertices, framebuffer);
     });
-    if (!status) {
-      *error = "softraster: draw '" + draw.name + "': " + status.message();
-      return std::nullopt;
-    }
+    if (!status) return status.prefixed("softraster: draw '" + draw.name + "'");
   }
   if (framebuffer.samples() > 1) framebuffer = framebuffer.resolve();  // as vkref reads Vulkan's back
   Frame frame;
@@ -106,7 +102,7 @@ std::optional<Frame> renderSoftraster(const Scene& scene, std::string* error,
   return frame;
 }
 
-std::optional<Frame> renderVulkan(const Scene& scene, vkref::Renderer& renderer, std::string* error) {
+softraster::Result<Frame> renderVulkan(const Scene& scene, vkref::Renderer& renderer) {
   std::vector<vkref::ShaderProgram> programs;  // one per draw, alive until the frame is rendered
   programs.reserve(scene.draws.size());
   vkref::FrameRequest request;
@@ -131,8 +127,7 @@ std::optional<Frame> renderVulkan(const Scene& scene, vkref::Renderer& renderer,
   vkref::FrameImages images;
   std::string vkError;
   if (!renderer.render(request, &images, &vkError)) {
-    *error = "vulkan: " + vkError;
-    return std::nullopt;
+    return softraster::Status::error("vulkan: " + vkError);
   }
   Frame frame;
   frame.milliseconds = millisecondsSince(start);
@@ -143,6 +138,13 @@ std::optional<Frame> renderVulkan(const Scene& scene, vkref::Renderer& renderer,
   frame.depthFormat = scene.depthFormat;
   frame.depthStorage = std::move(images.depthStorage);
   return frame;
+}
+
+softraster::Result<std::unique_ptr<vkref::Renderer>> openVulkan(const vkref::DeviceOptions& options) {
+  std::string error;
+  std::unique_ptr<vkref::Renderer> renderer = vkref::Renderer::create(options, &error);
+  if (!renderer) return softraster::Status::error(error);
+  return renderer;
 }
 
 }  // namespace crosscheck

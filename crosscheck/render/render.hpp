@@ -6,11 +6,11 @@
 #include "scene/scene.hpp"
 
 #include <softraster/pipeline.hpp>
+#include <softraster/status.hpp>
 #include <vkref/renderer.hpp>
 
 #include <cstdint>
-#include <optional>
-#include <string>
+#include <memory>
 #include <vector>
 
 namespace crosscheck {
@@ -24,8 +24,12 @@ struct Frame {
   double milliseconds = 0;                  // wall time of the render call itself
 };
 
-std::optional<Frame> renderSoftraster(const Scene& scene, std::string* error,
-                                     const softraster::ContextOptions& options = {});
-std::optional<Frame> renderVulkan(const Scene& scene, vkref::Renderer& renderer, std::string* error);
+// Errors: "softraster: draw 'NAME': what is wrong", "vulkan: what is wrong".
+softraster::Result<Frame> renderSoftraster(const Scene& scene, const softraster::ContextOptions& options = {});
+softraster::Result<Frame> renderVulkan(const Scene& scene, vkref::Renderer& renderer);
+
+// A Vulkan renderer on the device the options pick (lavapipe by default); the error is vkref's
+// one line, without a prefix ("no Vulkan driver found ...").
+softraster::Result<std::unique_ptr<vkref::Renderer>> openVulkan(const vkref::DeviceOptions& options);
 
 }  // namespace crosscheck

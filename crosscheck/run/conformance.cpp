@@ -17,45 +17,38 @@ using Clock = std::chrono::steady_clock;
 // One worker's Vulkan renderer, opened when the worker starts (so no scene's time includes it);
 // a failure to open is remembered, and every scene of this worker reports it.
 struct VulkanSlot {
-  std::unique_ptr<vkref::Renderer> renderer;
-  std::string error;
-  bool tried = false;
+  std::optional<softraster::Result<std::unique_ptr<vkref::Renderer>>> opened;
 
-  vkref::Renderer* get(const vkref::DeviceOptions& options, std::string* out) {
-    if (!tried) {
-      tried = true;
-      renderer = vkref::Renderer::create(options, &error);
-    }
-    if (!renderer) *out = error;
-    return renderer.get();
+  const softraster::Result<std::unique_ptr<vkref::Renderer>>& get(const vkref::DeviceOptions& options) {
+    if (!opened) opened = openVulkan(options);
+    return *opened;
   }
 };
 
 // Renders and compares one scene; returns Pass, Fail or Crash (with result.error set).
 Outcome runScene(SceneResult& result, const ConformanceOptions& options, VulkanSlot& vulkan) {
-  std::string error;
   const auto crash = [&](std::string message) {
     result.error = std::move(message);
     return Outcome::Crash;
   };
-  const auto scene = loadScene(result.entry.path, &error);
-  if (!scene) return crash(error);
+  const auto scene = loadScene(result.entry.path);
+  if (!scene) return crash(scene.error());
   result.loaded = true;
   result.description = scene->description;
   result.width = scene->width;
   result.height = scene->height;
   result.tolerance = scene->tolerance;
 
-  const auto soft = options.renderSoft ? options.renderSoft(*scene, &error)
-                                       : renderSoftraster(*scene, &error, options.softraster);
-  if (!soft) return crash(error);
+  const auto soft = options.renderSoft ? options.renderSoft(*scene) : renderSoftraster(*scene, options.softraster);
+  if (!soft) return crash(soft.error());
   result.softMilliseconds = soft->milliseconds;
 
-  vkref::Renderer* renderer = vulkan.get(options.device, &error);
-  if (!renderer) return crash("vulkan: " + error);
+  const auto& opened = vulkan.get(options.device);
+  if (!opened) return crash("vulkan: " + opened.error());
+  vkref::Renderer* renderer = opened->get();
   const std::size_t messagesBefore = options.device.validation ? renderer->validationMessages().size() : 0;
-  const auto reference = renderVulkan(*scene, *renderer, &error);
-  if (!reference) return crash(error);
+  const auto reference = renderVulkan(*scene, *renderer);
+  if (!reference) return crash(reference.error());
   result.vulkanMilliseconds = reference->milliseconds;
   if (options.device.validation) {
     const auto messages = renderer->validationMessages();
@@ -67,7 +60,11 @@ Outcome runScene(SceneResult& result, const ConformanceOptions& options, VulkanS
   }
 
   result.comparison = compareFrames(*soft, *reference, *scene);
-  if (options.onFrames && !options.onFrames(result, *scene, *soft, *reference, &error)) return crash(error);
+  if (options.onFrames) {
+    if (const softraster::Status written = options.onFrames(result, *scene, *soft, *reference); !written) {
+      return crash(written.message());
+    }
+  }
   return result.comparison->passed() ? Outcome::Pass : Outcome::Fail;
 }
 
@@ -106,8 +103,7 @@ std::vector<SceneResult> runConformance(const std::vector<SceneEntry>& suite, co
   std::size_t done = 0;
   const auto worker = [&] {
     VulkanSlot vulkan;
-    std::string ignored;  // reported per scene
-    vulkan.get(options.device, &ignored);
+    vulkan.get(options.device);  // a failure is reported per scene
     for (std::size_t i = next++; i < suite.size(); i = next++) {
       SceneResult result = runOne(suite[i], options, vulkan);
       const std::lock_guard guard(lock);

@@ -16,6 +16,7 @@
 #include "run/suite.hpp"
 
 #include <softraster/pipeline.hpp>
+#include <softraster/status.hpp>
 #include <vkref/renderer.hpp>
 
 #include <cstddef>
@@ -57,9 +58,9 @@ struct SceneResult {
 };
 
 // What one scene's frames are handed to, on the worker thread, before they are dropped (to write
-// images or report data). Returning false with *error makes the scene Crash.
-using FrameSink = std::function<bool(SceneResult& result, const Scene& scene, const Frame& soft,
-                                     const Frame& vulkan, std::string* error)>;
+// images or report data). An error makes the scene Crash with that line.
+using FrameSink = std::function<softraster::Status(SceneResult& result, const Scene& scene, const Frame& soft,
+                                                   const Frame& vulkan)>;
 
 struct ConformanceOptions {
   unsigned jobs = 1;
@@ -72,7 +73,7 @@ struct ConformanceOptions {
   // runConformance returns.
   std::function<void(std::size_t position, const SceneResult& result, std::size_t done)> onFinished;
   // The softraster renderer; empty means renderSoftraster with `softraster`. Tests replace it.
-  std::function<std::optional<Frame>(const Scene&, std::string* error)> renderSoft;
+  std::function<softraster::Result<Frame>(const Scene&)> renderSoft;
 };
 
 std::vector<SceneResult> runConformance(const std::vector<SceneEntry>& suite, const ConformanceOptions& options);

@@ -9,6 +9,8 @@
 namespace crosscheck {
 namespace {
 
+using softraster::Status;
+
 std::string_view trim(std::string_view s) {
   const auto first = s.find_first_not_of(" \t\r");
   if (first == std::string_view::npos) return {};
@@ -18,8 +20,7 @@ std::string_view trim(std::string_view s) {
 
 }  // namespace
 
-std::optional<Expectations> parseExpectations(std::string_view text, const std::filesystem::path& file,
-                                              std::string* error) {
+softraster::Result<Expectations> parseExpectations(std::string_view text, const std::filesystem::path& file) {
   Expectations expectations;
   expectations.file = file;
   int lineNumber = 0;
@@ -35,8 +36,7 @@ std::optional<Expectations> parseExpectations(std::string_view text, const std::
     if (content.empty()) continue;  // blank or comment
 
     const auto fail = [&](const std::string& what) {
-      *error = file.string() + ":" + std::to_string(lineNumber) + ": " + what;
-      return std::nullopt;
+      return Status::error(file.string() + ":" + std::to_string(lineNumber) + ": " + what);
     };
     const auto comma = content.find(',');
     if (comma == std::string_view::npos || content.find(',', comma + 1) != std::string_view::npos) {
@@ -56,26 +56,17 @@ std::optional<Expectations> parseExpectations(std::string_view text, const std::
   return expectations;
 }
 
-std::optional<Expectations> loadExpectations(const std::filesystem::path& file, std::string* error) {
+softraster::Result<Expectations> loadExpectations(const std::filesystem::path& file) {
+  const std::string context = file.string() + ": cannot read expectations file: ";
   std::error_code ec;
-  if (std::filesystem::is_directory(file, ec)) {
-    *error = file.string() + ": cannot read expectations file: it is a directory";
-    return std::nullopt;
-  }
+  if (std::filesystem::is_directory(file, ec)) return Status::error(context + "it is a directory");
   errno = 0;
   std::ifstream in(file, std::ios::binary);
-  if (!in) {
-    *error = file.string() + ": cannot read expectations file: " +
-             (errno ? std::strerror(errno) : "cannot open");
-    return std::nullopt;
-  }
+  if (!in) return Status::error(context + (errno ? std::strerror(errno) : "cannot open"));
   std::ostringstream text;
   text << in.rdbuf();
-  if (in.bad()) {
-    *error = file.string() + ": cannot read expectations file: read error";
-    return std::nullopt;
-  }
-  return parseExpectations(text.str(), file, error);
+  if (in.bad()) return Status::error(context + "read error");
+  return parseExpectations(text.str(), file);
 }
 
 Outcome applyExpectation(Outcome actual, const Expectation* expected) {

@@ -7,9 +7,10 @@
 
 #include "run/outcome.hpp"
 
+#include <softraster/status.hpp>
+
 #include <filesystem>
 #include <map>
-#include <optional>
 #include <string>
 #include <string_view>
 
@@ -31,13 +32,12 @@ struct Expectations {
   }
 };
 
-// Parses the text of an expectations file; `file` names it in errors. On failure returns nullopt
-// and sets *error to one line: "FILE:LINE: what is wrong".
-std::optional<Expectations> parseExpectations(std::string_view text, const std::filesystem::path& file,
-                                              std::string* error);
+// Parses the text of an expectations file; `file` names it in errors. The error is one line:
+// "FILE:LINE: what is wrong".
+softraster::Result<Expectations> parseExpectations(std::string_view text, const std::filesystem::path& file);
 
 // Reads and parses a file; an unreadable file is "FILE: cannot read expectations file: reason".
-std::optional<Expectations> loadExpectations(const std::filesystem::path& file, std::string* error);
+softraster::Result<Expectations> loadExpectations(const std::filesystem::path& file);
 
 // The result a scene gets once its expectation is applied to what actually happened
 // (actual is Pass, Fail or Crash): an expected Fail that fails is ExpectedFail, one that passes

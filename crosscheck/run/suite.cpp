@@ -9,6 +9,8 @@
 namespace crosscheck {
 namespace {
 
+using softraster::Status;
+
 std::string identity(const std::filesystem::path& path) {
   std::error_code ec;
   const auto canonical = std::filesystem::weakly_canonical(path, ec);
@@ -23,7 +25,7 @@ bool parseCount(std::string_view text, std::size_t* value) {
 
 }  // namespace
 
-std::optional<std::vector<SceneEntry>> collectScenes(const std::vector<std::string>& inputs, std::string* error) {
+softraster::Result<std::vector<SceneEntry>> collectScenes(const std::vector<std::string>& inputs) {
   const bool useDefault = inputs.empty();
   const std::vector<std::string> roots = useDefault ? std::vector<std::string>{std::string(kDefaultSceneDir)} : inputs;
   std::vector<std::filesystem::path> files;
@@ -32,12 +34,11 @@ std::optional<std::vector<SceneEntry>> collectScenes(const std::vector<std::stri
     std::error_code ec;
     if (!std::filesystem::is_directory(path, ec)) {
       if (useDefault) {
-        *error = root + ": no such directory (run crosscheck from the repository root, or name scene files or directories)";
-        return std::nullopt;
+        return Status::error(root + ": no such directory (run crosscheck from the repository root, or name scene files "
+                                    "or directories)");
       }
       if (!std::filesystem::exists(path, ec) && path.extension() != ".json") {
-        *error = root + ": no such file or directory";  // a mistyped folder, most likely
-        return std::nullopt;
+        return Status::error(root + ": no such file or directory");  // a mistyped folder, most likely
       }
       files.push_back(path);  // a file, or a missing scene file that will be reported as a Crash
       continue;
@@ -51,14 +52,8 @@ std::optional<std::vector<SceneEntry>> collectScenes(const std::vector<std::stri
         ++found;
       }
     }
-    if (ec) {
-      *error = root + ": cannot read directory: " + ec.message();
-      return std::nullopt;
-    }
-    if (found == 0) {
-      *error = root + ": no *.json scene files in this directory";
-      return std::nullopt;
-    }
+    if (ec) return Status::error(root + ": cannot read directory: " + ec.message());
+    if (found == 0) return Status::error(root + ": no *.json scene files in this directory");
   }
 
   std::sort(files.begin(), files.end(), [](const auto& a, const auto& b) { return a.generic_string() < b.generic_string(); });
@@ -68,31 +63,25 @@ std::optional<std::vector<SceneEntry>> collectScenes(const std::vector<std::stri
   for (const auto& file : files) {
     if (!seenFiles.emplace(identity(file), file).second) continue;
     const std::string name = file.stem().string();
-    if (name.empty()) {
-      *error = file.string() + ": not a scene file name";
-      return std::nullopt;
-    }
+    if (name.empty()) return Status::error(file.string() + ": not a scene file name");
     if (const auto [it, inserted] = seenNames.emplace(name, file); !inserted) {
-      *error = file.string() + ": scene name '" + name + "' is already used by " + it->second.string() +
-               " (scene names are file stems and must be unique in a run)";
-      return std::nullopt;
+      return Status::error(file.string() + ": scene name '" + name + "' is already used by " + it->second.string() +
+                           " (scene names are file stems and must be unique in a run)");
     }
     suite.push_back({name, file});
   }
   return suite;
 }
 
-std::optional<Shard> parseShard(std::string_view text, std::string* error) {
+softraster::Result<Shard> parseShard(std::string_view text) {
   const auto slash = text.find('/');
   Shard shard;
   if (slash == std::string_view::npos || !parseCount(text.substr(0, slash), &shard.index) ||
       !parseCount(text.substr(slash + 1), &shard.count)) {
-    *error = "--shard " + std::string(text) + ": expected I/N with whole numbers, e.g. 1/3";
-    return std::nullopt;
+    return Status::error("--shard " + std::string(text) + ": expected I/N with whole numbers, e.g. 1/3");
   }
   if (shard.count == 0 || shard.index == 0 || shard.index > shard.count) {
-    *error = "--shard " + std::string(text) + ": needs 1 <= I <= N (shards are numbered from 1)";
-    return std::nullopt;
+    return Status::error("--shard " + std::string(text) + ": needs 1 <= I <= N (shards are numbered from 1)");
   }
   return shard;
 }

@@ -7,9 +7,10 @@
 // Deliberately no patterns or filters: name the files or folders to run.
 #pragma once
 
+#include <softraster/status.hpp>
+
 #include <cstddef>
 #include <filesystem>
-#include <optional>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -28,7 +29,7 @@ inline constexpr std::string_view kDefaultSceneDir = "scenes";
 // the rest of the suite still runs). Errors (one line, naming the path): any other path that does
 // not exist, a directory that cannot be read or holds no *.json file, two different scene files
 // with one name.
-std::optional<std::vector<SceneEntry>> collectScenes(const std::vector<std::string>& inputs, std::string* error);
+softraster::Result<std::vector<SceneEntry>> collectScenes(const std::vector<std::string>& inputs);
 
 // Shard I of N, 1-based: "1/3", "2/3", "3/3". Scene k of the sorted suite (0-based) belongs to
 // shard (k mod N) + 1, so shards differ in size by at most one and every scene is in exactly one.
@@ -37,8 +38,8 @@ struct Shard {
   std::size_t count = 1;
 };
 
-// Parses "I/N" with 1 <= I <= N; on failure sets *error (one line) and returns nullopt.
-std::optional<Shard> parseShard(std::string_view text, std::string* error);
+// Parses "I/N" with 1 <= I <= N; the error is one line starting "--shard TEXT: ".
+softraster::Result<Shard> parseShard(std::string_view text);
 
 bool inShard(std::size_t position, Shard shard);
 

@@ -17,26 +17,19 @@ std::string oneLine(std::string message) {
 
 }  // namespace
 
-std::optional<ObjMesh> loadObjMesh(const std::filesystem::path& path, softraster::Vec4 fallbackColour,
-                                   std::string* error) {
+softraster::Result<ObjMesh> loadObjMesh(const std::filesystem::path& path, softraster::Vec4 fallbackColour) {
+  using softraster::Status;
   tinyobj::ObjReaderConfig config;
   config.triangulate = false;  // we split polygons ourselves, as a fan, so the split is known
   config.mtl_search_path = path.parent_path().string();
   tinyobj::ObjReader reader;
-  if (!std::filesystem::is_regular_file(path)) {
-    *error = path.string() + ": file not found";
-    return std::nullopt;
-  }
+  if (!std::filesystem::is_regular_file(path)) return Status::error(path.string() + ": file not found");
   if (!reader.ParseFromFile(path.string(), config)) {
     const std::string message = oneLine(reader.Error());
-    *error = path.string() + ": " + (message.empty() ? "cannot be parsed as OBJ" : message);
-    return std::nullopt;
+    return Status::error(path.string() + ": " + (message.empty() ? "cannot be parsed as OBJ" : message));
   }
   // Warnings (e.g. a missing .mtl) are errors here: a scene must render what its author meant.
-  if (!reader.Warning().empty()) {
-    *error = path.string() + ": " + oneLine(reader.Warning());
-    return std::nullopt;
-  }
+  if (!reader.Warning().empty()) return Status::error(path.string() + ": " + oneLine(reader.Warning()));
 
   const tinyobj::attrib_t& attrib = reader.GetAttrib();
   const auto& materials = reader.GetMaterials();
@@ -58,9 +51,8 @@ std::optional<ObjMesh> loadObjMesh(const std::filesystem::path& path, softraster
       for (std::size_t c = 0; c < corners; ++c) {
         const int p = shape.mesh.indices[offset + c].vertex_index;
         if (p < 0 || static_cast<std::size_t>(p) >= positionCount) {
-          *error = path.string() + ": shape '" + shape.name + "' face " + std::to_string(face + 1) +
-                   " refers to a vertex that does not exist";
-          return std::nullopt;
+          return Status::error(path.string() + ": shape '" + shape.name + "' face " + std::to_string(face + 1) +
+                               " refers to a vertex that does not exist");
         }
         const auto i = static_cast<std::size_t>(p);
         shaders::VertexColorVertex v;
@@ -77,10 +69,7 @@ std::optional<ObjMesh> loadObjMesh(const std::filesystem::path& path, softraster
       offset += corners;
     }
   }
-  if (mesh.indices.empty()) {
-    *error = path.string() + ": no faces";
-    return std::nullopt;
-  }
+  if (mesh.indices.empty()) return Status::error(path.string() + ": no faces");
   return mesh;
 }
 

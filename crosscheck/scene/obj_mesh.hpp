@@ -3,12 +3,12 @@
 // Deliberately ignores normals and texture coordinates until a shading model reads them.
 #pragma once
 
+#include <softraster/status.hpp>
+
 #include <vertex_color.hpp>
 
 #include <cstdint>
 #include <filesystem>
-#include <optional>
-#include <string>
 #include <vector>
 
 namespace crosscheck {
@@ -18,8 +18,7 @@ struct ObjMesh {
   std::vector<std::uint32_t> indices;
 };
 
-// On failure returns nullopt and sets *error to "FILE: what is wrong".
-std::optional<ObjMesh> loadObjMesh(const std::filesystem::path& path, softraster::Vec4 fallbackColour,
-                                   std::string* error);
+// The mesh, or the error "FILE: what is wrong".
+softraster::Result<ObjMesh> loadObjMesh(const std::filesystem::path& path, softraster::Vec4 fallbackColour);
 
 }  // namespace crosscheck

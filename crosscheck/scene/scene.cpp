@@ -258,9 +258,8 @@ Draw readDraw(const json& d, const std::string& place, const std::filesystem::pa
       throw SceneError(placeOf(place, "topology"), "an OBJ mesh is a triangle list");
     }
     const std::string file = readString(d, "obj", place, "");
-    std::string error;
-    auto mesh = loadObjMesh(sceneDir / file, colour, &error);
-    if (!mesh) throw SceneError(placeOf(place, "obj"), error);
+    auto mesh = loadObjMesh(sceneDir / file, colour);
+    if (!mesh) throw SceneError(placeOf(place, "obj"), mesh.error());
     draw.vertices = std::move(mesh->vertices);
     draw.indices = std::move(mesh->indices);
     return draw;
@@ -391,13 +390,10 @@ Scene readScene(json& document, const std::filesystem::path& path, const std::ve
 
 }  // namespace
 
-std::optional<Scene> loadScene(const std::filesystem::path& path, std::string* error,
-                               const std::vector<std::string>& overrides) {
+softraster::Result<Scene> loadScene(const std::filesystem::path& path, const std::vector<std::string>& overrides) {
+  using softraster::Status;
   std::ifstream file(path);
-  if (!file) {
-    *error = path.string() + ": cannot open scene file";
-    return std::nullopt;
-  }
+  if (!file) return Status::error(path.string() + ": cannot open scene file");
   json document;
   try {
     document = json::parse(file);
@@ -405,17 +401,15 @@ std::optional<Scene> loadScene(const std::filesystem::path& path, std::string* e
     // nlohmann's message: "[json.exception.parse_error.101] parse error at line 3, column 5: ..."
     std::string message = e.what();
     const auto at = message.find("parse error");
-    *error = path.string() + ": " + (at == std::string::npos ? message : message.substr(at));
-    return std::nullopt;
+    return Status::error(path.string() + ": " + (at == std::string::npos ? message : message.substr(at)));
   }
   try {
     return readScene(document, path, overrides);
   } catch (const SceneError& e) {
-    *error = path.string() + ": " + (e.place.empty() ? "/" : e.place) + ": " + e.what();
+    return Status::error(path.string() + ": " + (e.place.empty() ? "/" : e.place) + ": " + e.what());
   } catch (const json::exception& e) {
-    *error = path.string() + ": " + e.what();
+    return Status::error(path.string() + ": " + e.what());
   }
-  return std::nullopt;
 }
 
 }  // namespace crosscheck

@@ -7,12 +7,12 @@
 #include <softraster/framebuffer.hpp>
 #include <softraster/math.hpp>
 #include <softraster/state.hpp>
+#include <softraster/status.hpp>
 
 #include <vertex_color.hpp>
 
 #include <cstdint>
 #include <filesystem>
-#include <optional>
 #include <string>
 #include <vector>
 
@@ -54,9 +54,8 @@ struct Scene {
 };
 
 // Loads and validates a scene. `overrides` are "key.path=JSON value" assignments applied to the
-// file's JSON before it is read (e.g. "camera.yaw=90"). On failure returns nullopt and sets
-// *error to one line: "FILE: PLACE: what is wrong".
-std::optional<Scene> loadScene(const std::filesystem::path& path, std::string* error,
-                               const std::vector<std::string>& overrides = {});
+// file's JSON before it is read (e.g. "camera.yaw=90"). The error is one line:
+// "FILE: PLACE: what is wrong".
+softraster::Result<Scene> loadScene(const std::filesystem::path& path, const std::vector<std::string>& overrides = {});
 
 }  // namespace crosscheck

@@ -41,19 +41,16 @@ std::vector<SceneEntry> syntheticSuite(std::size_t size) {
 // ---- suite collection ----
 
 TEST(Suite, DirectoryGivesItsJsonFilesSortedByPath) {
-  std::string error;
-  const auto suite = collectScenes({kFixtures.string()}, &error);
-  ASSERT_TRUE(suite) << error;
+  const auto suite = collectScenes({kFixtures.string()});
+  ASSERT_TRUE(suite) << suite.error();
   EXPECT_EQ(namesOf(*suite), (std::vector<std::string>{"broken_obj", "depth_slope", "flat_triangle", "malformed"}));
   EXPECT_EQ((*suite)[1].path, kFixtures / "depth_slope.json");
 }
 
 TEST(Suite, FileNamedTwiceRunsOnceAndMissingFileIsKept) {
-  std::string error;
   const auto suite = collectScenes({(kFixtures / "flat_triangle.json").string(), kFixtures.string(),
-                                    (kData / "nope.json").string()},
-                                   &error);
-  ASSERT_TRUE(suite) << error;
+                                    (kData / "nope.json").string()});
+  ASSERT_TRUE(suite) << suite.error();
   EXPECT_EQ(namesOf(*suite), (std::vector<std::string>{"broken_obj", "depth_slope", "flat_triangle", "malformed", "nope"}));
 }
 
@@ -64,29 +61,31 @@ TEST(Suite, TwoScenesWithOneNameAreAnError) {
   fs::create_directories(dir / "b");
   fs::copy_file(kFixtures / "flat_triangle.json", dir / "a" / "x.json");
   fs::copy_file(kFixtures / "flat_triangle.json", dir / "b" / "x.json");
-  std::string error;
-  EXPECT_FALSE(collectScenes({(dir / "a").string(), (dir / "b").string()}, &error));
+  const auto suite = collectScenes({(dir / "a").string(), (dir / "b").string()});
+  EXPECT_FALSE(suite);
+  const std::string& error = suite.error();
   EXPECT_NE(error.find("scene name 'x' is already used by"), std::string::npos) << error;
 }
 
 TEST(Suite, DirectoryWithoutScenesIsAnError) {
   const fs::path dir = kArtifacts / "suite-empty";
   fs::create_directories(dir);
-  std::string error;
-  EXPECT_FALSE(collectScenes({dir.string()}, &error));
-  EXPECT_EQ(error, dir.string() + ": no *.json scene files in this directory");
+  const auto suite = collectScenes({dir.string()});
+  EXPECT_FALSE(suite);
+  EXPECT_EQ(suite.error(), dir.string() + ": no *.json scene files in this directory");
 }
 
 // ---- sharding ----
 
 TEST(Shard, ParsesOneBasedAndRejectsTheRest) {
-  std::string error;
-  const auto shard = parseShard("2/3", &error);
-  ASSERT_TRUE(shard) << error;
+  const auto shard = parseShard("2/3");
+  ASSERT_TRUE(shard) << shard.error();
   EXPECT_EQ(shard->index, 2u);
   EXPECT_EQ(shard->count, 3u);
   for (const char* bad : {"0/3", "4/3", "1/0", "0/0", "3", "/3", "1/", "a/b", "1/3x", "-1/3", "1//3", ""}) {
-    EXPECT_FALSE(parseShard(bad, &error)) << bad;
+    const auto parsed = parseShard(bad);
+    EXPECT_FALSE(parsed) << bad;
+    const std::string& error = parsed.error();
     EXPECT_EQ(error.rfind("--shard ", 0), 0u) << error;
   }
 }
@@ -119,10 +118,9 @@ TEST(Shard, IsDeterministic) {
 // ---- expectations ----
 
 TEST(Expectations, ParsesNamesStatusesReasonsAndComments) {
-  std::string error;
   const auto e = parseExpectations("# header\n\n  room , Fail # edge differs\nsky,Skip\n  # indented comment\nx,Crash#why\n",
-                                   "exp.txt", &error);
-  ASSERT_TRUE(e) << error;
+                                   "exp.txt");
+  ASSERT_TRUE(e) << e.error();
   ASSERT_EQ(e->byScene.size(), 3u);
   ASSERT_TRUE(e->find("room"));
   EXPECT_EQ(e->find("room")->outcome, Outcome::Fail);
@@ -146,18 +144,19 @@ TEST(Expectations, MalformedLinesNameFileAndLine) {
       {"a,Fail\nb,Skip\na,Skip\n", "exp.txt:3: scene 'a' is already listed on line 1"},
   };
   for (const auto& [text, message] : cases) {
-    std::string error;
-    EXPECT_FALSE(parseExpectations(text, "exp.txt", &error)) << text;
-    EXPECT_EQ(error, message);
+    const auto parsed = parseExpectations(text, "exp.txt");
+    EXPECT_FALSE(parsed) << text;
+    EXPECT_EQ(parsed.error(), message);
   }
 }
 
 TEST(Expectations, UnreadableFileIsOneLine) {
-  std::string error;
-  EXPECT_FALSE(loadExpectations(kData / "no_such_file.txt", &error));
-  EXPECT_EQ(error, (kData / "no_such_file.txt").string() + ": cannot read expectations file: No such file or directory");
-  EXPECT_FALSE(loadExpectations(kData, &error));
-  EXPECT_EQ(error, kData.string() + ": cannot read expectations file: it is a directory");
+  const auto missing = loadExpectations(kData / "no_such_file.txt");
+  EXPECT_FALSE(missing);
+  EXPECT_EQ(missing.error(), (kData / "no_such_file.txt").string() + ": cannot read expectations file: No such file or directory");
+  const auto directory = loadExpectations(kData);
+  EXPECT_FALSE(directory);
+  EXPECT_EQ(directory.error(), kData.string() + ": cannot read expectations file: it is a directory");
 }
 
 TEST(Expectations, AppliedToActualResults) {
@@ -177,8 +176,8 @@ TEST(Expectations, AppliedToActualResults) {
 // ---- statuses from real runs ----
 
 // softraster with one pixel painted magenta: a real coverage and colour difference.
-std::optional<Frame> paintedSoftraster(const Scene& scene, std::string* error) {
-  auto frame = renderSoftraster(scene, error);
+softraster::Result<Frame> paintedSoftraster(const Scene& scene) {
+  auto frame = renderSoftraster(scene);
   if (frame) {
     const std::size_t i = 4 * (frame->width * (frame->height / 2) + 1);
     frame->rgba[i] = 255, frame->rgba[i + 1] = 0, frame->rgba[i + 2] = 255, frame->rgba[i + 3] = 255;
@@ -212,11 +211,8 @@ TEST(Conformance, PassFailAndCrashFromLoading) {
 
 TEST(Conformance, RendererErrorAndExceptionAreCrashAndTheRunGoesOn) {
   ConformanceOptions options;
-  options.renderSoft = [](const Scene& scene, std::string* error) -> std::optional<Frame> {
-    if (scene.width == 32) {
-      *error = "softraster: draw 'x': out of memory\nsecond line";
-      return std::nullopt;
-    }
+  options.renderSoft = [](const Scene& scene) -> softraster::Result<Frame> {
+    if (scene.width == 32) return softraster::Status::error("softraster: draw 'x': out of memory\nsecond line");
     throw std::runtime_error("boom");
   };
   const auto results = runConformance({fixture("flat_triangle"), fixture("depth_slope")}, options);
@@ -227,17 +223,16 @@ TEST(Conformance, RendererErrorAndExceptionAreCrashAndTheRunGoesOn) {
 }
 
 TEST(Conformance, ExpectationsGiveExpectedFailUnexpectedPassAndSkip) {
-  std::string error;
   const auto expectations = parseExpectations("flat_triangle,Fail # painted\ndepth_slope,Fail # passes\nmalformed,Skip\n"
                                               "broken_obj,Crash # broken on purpose\n",
-                                              "exp.txt", &error);
-  ASSERT_TRUE(expectations) << error;
+                                              "exp.txt");
+  ASSERT_TRUE(expectations) << expectations.error();
   std::atomic<int> softCalls{0};
   ConformanceOptions options;
   options.expectations = &*expectations;
-  options.renderSoft = [&](const Scene& scene, std::string* err) {
+  options.renderSoft = [&](const Scene& scene) {
     ++softCalls;
-    return scene.width == 32 ? paintedSoftraster(scene, err) : renderSoftraster(scene, err);
+    return scene.width == 32 ? paintedSoftraster(scene) : renderSoftraster(scene);
   };
   const auto results =
       runConformance({fixture("broken_obj"), fixture("depth_slope"), fixture("flat_triangle"), fixture("malformed")}, options);

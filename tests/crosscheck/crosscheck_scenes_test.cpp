@@ -26,10 +26,9 @@ const std::filesystem::path kArtifacts = ARTIFACTS_DIR;
 void writeArtifacts(const std::string& name, const crosscheck::Frame& soft, const crosscheck::Frame& vulkan,
                     const crosscheck::Scene& scene) {
   const auto dir = kArtifacts / name;
-  std::string error;
-  crosscheck::writePng(dir / "soft.png", soft.width, soft.height, soft.rgba, &error);
-  crosscheck::writePng(dir / "vulkan.png", vulkan.width, vulkan.height, vulkan.rgba, &error);
-  crosscheck::writePng(dir / "diff.png", soft.width, soft.height, crosscheck::diffHeatmap(soft, vulkan, scene), &error);
+  crosscheck::writePng(dir / "soft.png", soft.width, soft.height, soft.rgba);
+  crosscheck::writePng(dir / "vulkan.png", vulkan.width, vulkan.height, vulkan.rgba);
+  crosscheck::writePng(dir / "diff.png", soft.width, soft.height, crosscheck::diffHeatmap(soft, vulkan, scene));
   ADD_FAILURE() << "images written to " << dir.string();
 }
 
@@ -42,18 +41,20 @@ struct RenderedScene {
 
 // Fails the calling test (ASSERT in a void helper) when anything cannot be rendered.
 void renderBoth(const std::string& name, RenderedScene& out, const softraster::ContextOptions& options = {}) {
-  std::string error;
-  out.scene = crosscheck::loadScene(kScenes / (name + ".json"), &error);
-  ASSERT_TRUE(out.scene) << error;
+  auto scene = crosscheck::loadScene(kScenes / (name + ".json"));
+  ASSERT_TRUE(scene) << scene.error();
+  out.scene = std::move(*scene);
   vkref::DeviceOptions device;
   device.validation = true;
-  auto vulkan = vkref::Renderer::create(device, &error);
-  ASSERT_TRUE(vulkan) << error;
-  out.soft = crosscheck::renderSoftraster(*out.scene, &error, options);
-  ASSERT_TRUE(out.soft) << error;
-  out.reference = crosscheck::renderVulkan(*out.scene, *vulkan, &error);
-  ASSERT_TRUE(out.reference) << error;
-  out.validationMessages = vulkan->validationMessages();
+  const auto vulkan = crosscheck::openVulkan(device);
+  ASSERT_TRUE(vulkan) << vulkan.error();
+  auto soft = crosscheck::renderSoftraster(*out.scene, options);
+  ASSERT_TRUE(soft) << soft.error();
+  out.soft = std::move(*soft);
+  auto reference = crosscheck::renderVulkan(*out.scene, **vulkan);
+  ASSERT_TRUE(reference) << reference.error();
+  out.reference = std::move(*reference);
+  out.validationMessages = (*vulkan)->validationMessages();
 }
 
 void crossCheckScene(const std::string& name) {

@@ -58,9 +58,9 @@ std::vector<std::uint8_t> inflated(const std::vector<std::uint8_t>& data, std::s
 std::vector<SceneResult> runIntoReport(const fs::path& dir) {
   fs::remove_all(dir);
   ConformanceOptions options;
-  options.onFrames = [&](SceneResult& result, const Scene& scene, const Frame& soft, const Frame& vulkan, std::string* error) {
-    return writeSceneImages(dir, result.entry.name, &result, scene, soft, vulkan, error) &&
-           writePixelData(dir, fs::path(result.entry.name) / "pixels.js", &result, soft, vulkan, error);
+  options.onFrames = [&](SceneResult& result, const Scene& scene, const Frame& soft, const Frame& vulkan) {
+    const softraster::Status images = writeSceneImages(dir, result.entry.name, &result, scene, soft, vulkan);
+    return !images ? images : writePixelData(dir, fs::path(result.entry.name) / "pixels.js", &result, soft, vulkan);
   };
   std::vector<SceneEntry> suite;
   for (const char* name : {"broken_obj", "depth_slope", "flat_triangle", "malformed"}) {
@@ -72,8 +72,8 @@ std::vector<SceneResult> runIntoReport(const fs::path& dir) {
 TEST(Report, PageHasSummaryTableLazyImagesAndNoNetwork) {
   const fs::path dir = kArtifacts / "report-unit";
   const auto results = runIntoReport(dir);
-  std::string error;
-  ASSERT_TRUE(writeReport(dir, results, {"now", "crosscheck report", 1.5, 2}, &error)) << error;
+  const softraster::Status written = writeReport(dir, results, {"now", "crosscheck report", 1.5, 2});
+  ASSERT_TRUE(written) << written.message();
   std::ifstream in(dir / "index.html");
   std::stringstream buffer;
   buffer << in.rdbuf();

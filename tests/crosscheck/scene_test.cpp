@@ -12,8 +12,9 @@ const std::filesystem::path kData = TEST_DATA_DIR;
 const std::filesystem::path kScenes = SCENES_DIR;
 
 std::string loadError(const std::filesystem::path& file) {
-  std::string error;
-  EXPECT_FALSE(crosscheck::loadScene(file, &error).has_value()) << file;
+  const auto scene = crosscheck::loadScene(file);
+  EXPECT_FALSE(scene.ok()) << file;
+  const std::string error = scene.error();
   EXPECT_EQ(error.find('\n'), std::string::npos) << "one line: " << error;
   EXPECT_NE(error.find(file.string()), std::string::npos) << "names the file: " << error;
   return error;
@@ -22,9 +23,8 @@ std::string loadError(const std::filesystem::path& file) {
 }  // namespace
 
 TEST(SceneFile, RoomLoadsWithItsMeshAndTolerance) {
-  std::string error;
-  const auto scene = crosscheck::loadScene(kScenes / "room.json", &error);
-  ASSERT_TRUE(scene) << error;
+  const auto scene = crosscheck::loadScene(kScenes / "room.json");
+  ASSERT_TRUE(scene) << scene.error();
   EXPECT_EQ(scene->width, 320u);
   EXPECT_EQ(scene->height, 240u);
   ASSERT_EQ(scene->draws.size(), 1u);
@@ -36,13 +36,13 @@ TEST(SceneFile, RoomLoadsWithItsMeshAndTolerance) {
 }
 
 TEST(SceneFile, OverrideTurnsTheCamera) {
-  std::string error;
-  const auto straight = crosscheck::loadScene(kScenes / "room.json", &error);
-  const auto turned = crosscheck::loadScene(kScenes / "room.json", &error, {"camera.yaw=90"});
-  ASSERT_TRUE(straight && turned) << error;
+  const auto straight = crosscheck::loadScene(kScenes / "room.json");
+  const auto turned = crosscheck::loadScene(kScenes / "room.json", {"camera.yaw=90"});
+  ASSERT_TRUE(straight && turned) << straight.error() << turned.error();
   EXPECT_NE(straight->viewProjection.at(0, 0), turned->viewProjection.at(0, 0));
-  const auto bad = crosscheck::loadScene(kScenes / "room.json", &error, {"camera.yaw"});
+  const auto bad = crosscheck::loadScene(kScenes / "room.json", {"camera.yaw"});
   EXPECT_FALSE(bad);
+  const std::string& error = bad.error();
   EXPECT_NE(error.find("KEY.PATH=VALUE"), std::string::npos) << error;
 }
 

@@ -269,13 +269,11 @@ std::string pixelDataScript(const std::string& sceneName, const Frame& soft, con
   return "crosscheckPixels(" + dump(json(sceneName)) + "," + dump(data) + ");\n";
 }
 
-bool writePixelData(const std::filesystem::path& root, const std::filesystem::path& relative, SceneResult* result,
-                    const Frame& soft, const Frame& vulkan, std::string* error) {
-  if (!writeDocument(root / relative, pixelDataScript(result->entry.name, soft, vulkan), "pixel data", error)) {
-    return false;
-  }
-  result->pixelData = relative;
-  return true;
+softraster::Status writePixelData(const std::filesystem::path& root, const std::filesystem::path& relative,
+                                  SceneResult* result, const Frame& soft, const Frame& vulkan) {
+  softraster::Status status = writeDocument(root / relative, pixelDataScript(result->entry.name, soft, vulkan), "pixel data");
+  if (status) result->pixelData = relative;
+  return status;
 }
 
 std::vector<std::size_t> worstFirst(const std::vector<SceneResult>& results) {
@@ -346,9 +344,9 @@ std::string reportHtml(const std::vector<SceneResult>& results, const ReportInfo
   return html;
 }
 
-bool writeReport(const std::filesystem::path& dir, const std::vector<SceneResult>& results, const ReportInfo& info,
-                 std::string* error) {
-  return writeDocument(dir / "index.html", reportHtml(results, info), "report", error);
+softraster::Status writeReport(const std::filesystem::path& dir, const std::vector<SceneResult>& results,
+                               const ReportInfo& info) {
+  return writeDocument(dir / "index.html", reportHtml(results, info), "report");
 }
 
 }  // namespace crosscheck

@@ -13,6 +13,8 @@
 
 #include "run/conformance.hpp"
 
+#include <softraster/status.hpp>
+
 #include <filesystem>
 #include <string>
 #include <vector>
@@ -30,9 +32,10 @@ struct ReportInfo {
 // vulkanDepth})`, each buffer zlib-compressed and base64-encoded; depth as little-endian float32.
 std::string pixelDataScript(const std::string& sceneName, const Frame& soft, const Frame& vulkan);
 
-// Writes pixelDataScript to root / relative and records it in *result; on failure sets *error.
-bool writePixelData(const std::filesystem::path& root, const std::filesystem::path& relative, SceneResult* result,
-                    const Frame& soft, const Frame& vulkan, std::string* error);
+// Writes pixelDataScript to root / relative and records it in *result; the error is
+// "FILE: cannot write pixel data: reason".
+softraster::Status writePixelData(const std::filesystem::path& root, const std::filesystem::path& relative,
+                                  SceneResult* result, const Frame& soft, const Frame& vulkan);
 
 // Positions of the results, worst first: Crash, Fail, UnexpectedPass, ExpectedFail, Pass, Skip;
 // then by coverage mismatches, pixels over the colour and depth thresholds (most first), PSNR
@@ -41,8 +44,8 @@ std::vector<std::size_t> worstFirst(const std::vector<SceneResult>& results);
 
 std::string reportHtml(const std::vector<SceneResult>& results, const ReportInfo& info);
 
-// Writes dir/index.html; on failure sets *error ("FILE: cannot write report: reason").
-bool writeReport(const std::filesystem::path& dir, const std::vector<SceneResult>& results, const ReportInfo& info,
-                 std::string* error);
+// Writes dir/index.html; the error is "FILE: cannot write report: reason".
+softraster::Status writeReport(const std::filesystem::path& dir, const std::vector<SceneResult>& results,
+                               const ReportInfo& info);
 
 }  // namespace crosscheck
