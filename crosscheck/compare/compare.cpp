@@ -1,4 +1,4 @@
-// Frame comparison and the diff heatmap (see compare.hpp).
+// Frame comparison and the diff heatmaps (see compare.hpp).
 #include "compare/compare.hpp"
 
 #include <algorithm>
@@ -6,7 +6,6 @@
 #include <cmath>
 #include <cstdlib>
 #include <limits>
-#include <sstream>
 
 namespace crosscheck {
 namespace {
@@ -36,12 +35,6 @@ double depthDelta(std::uint32_t a, std::uint32_t b, softraster::DepthFormat form
   const bool nanA = std::isnan(za), nanB = std::isnan(zb);
   if (nanA || nanB) return nanA && nanB ? 0.0 : std::numeric_limits<double>::infinity();
   return std::fabs(double{za} - double{zb});
-}
-
-std::string formatLimit(const char* metric, double value, double limit) {
-  std::ostringstream s;
-  s << metric << " " << value << " > " << limit;
-  return s.str();
 }
 
 }  // namespace
@@ -76,13 +69,7 @@ Comparison compareFrames(const Frame& a, const Frame& b, const Scene& scene) {
   for (int ch = 0; ch < 4; ++ch) c.colourMeanDelta[ch] = double(sums[ch]) / double(c.pixels);
   const double mse = squaredErrorRgb / (3.0 * double(c.pixels));
   c.psnr = mse == 0 ? std::numeric_limits<double>::infinity() : 10.0 * std::log10(255.0 * 255.0 / mse);
-
-  if (c.coverageMismatches > tol.maxCoverageMismatches)
-    c.failures.push_back(formatLimit("coverage_mismatches", double(c.coverageMismatches), double(tol.maxCoverageMismatches)));
-  if (c.colourPixelsOver > tol.maxColourPixelsOver)
-    c.failures.push_back(formatLimit("colour_pixels_over", double(c.colourPixelsOver), double(tol.maxColourPixelsOver)));
-  if (c.depthPixelsOver > tol.maxDepthPixelsOver)
-    c.failures.push_back(formatLimit("depth_pixels_over", double(c.depthPixelsOver), double(tol.maxDepthPixelsOver)));
+  c.failures = limitFailures(c, tol);
   return c;
 }
 

@@ -1,4 +1,5 @@
-// Image comparison of two Frames of one scene, within the scene's Tolerance.
+// Image comparison of two Frames of one scene, within the scene's Tolerance: the metrics
+// (metrics.hpp) and the two difference heatmaps.
 // Coverage: a pixel is covered in a frame when its colour or depth differs from the clear
 // values; a coverage mismatch is a pixel covered in one frame only. (A fragment that writes
 // exactly the clear colour with depth writes off is invisible to this test.)
@@ -6,29 +7,16 @@
 // held to the bit, and edge differences are counted, not forgiven.
 #pragma once
 
+#include "compare/metrics.hpp"
 #include "render/render.hpp"
 #include "scene/scene.hpp"
 
-#include <array>
 #include <cstdint>
-#include <string>
 #include <vector>
 
 namespace crosscheck {
 
-struct Comparison {
-  std::uint64_t pixels = 0;
-  std::uint64_t coverageMismatches = 0;
-  std::array<int, 4> colourMaxDelta{};       // per channel R, G, B, A, in 8-bit steps
-  std::array<double, 4> colourMeanDelta{};   // per channel, over all pixels
-  std::uint64_t colourPixelsOver = 0;        // any channel over the colour threshold
-  double psnr = 0;                           // over RGB; +inf when identical
-  double depthMaxDelta = 0;
-  std::uint64_t depthPixelsOver = 0;
-  std::vector<std::string> failures;         // each "metric value > limit"; empty when passed
-  bool passed() const { return failures.empty(); }
-};
-
+// Measures the differences and checks them against scene.tolerance (limitFailures).
 Comparison compareFrames(const Frame& result, const Frame& reference, const Scene& scene);
 
 // Pixels covered in a frame (colour or depth differs from the scene's clear values).

@@ -4,6 +4,8 @@
 // Deliberately no scene graph: a scene is a camera plus a flat list of draws.
 #pragma once
 
+#include "scene/tolerance.hpp"
+
 #include <softraster/framebuffer.hpp>
 #include <softraster/math.hpp>
 #include <softraster/state.hpp>
@@ -28,16 +30,6 @@ struct Draw {
   bool indexed = true;                  // false: vertices are drawn in order (vkCmdDraw)
   float pointSize = 1.0f;               // the shader's gl_PointSize (a uniform)
   std::vector<std::uint32_t> indices;
-};
-
-// Limits of agreement between softraster and Vulkan. A pixel is "over" when any colour channel
-// differs by more than colourThreshold (in 8-bit steps) or depth by more than depthThreshold.
-struct Tolerance {
-  int colourThreshold = 1;
-  double depthThreshold = 0x1p-24;
-  std::uint64_t maxCoverageMismatches = 0;
-  std::uint64_t maxColourPixelsOver = 0;
-  std::uint64_t maxDepthPixelsOver = 0;
 };
 
 struct Scene {
