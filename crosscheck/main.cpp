@@ -6,18 +6,19 @@
 //   crosscheck report [SCENE|DIR ...] -o DIR [--expectations FILE] [--jobs N] [--shard I/N] [--junit FILE]
 // Exit status: 0 success / within tolerance / nothing unexpected, 1 outside tolerance, a failed
 // render or an unexpected conformance result, 2 bad usage.
-#include "compare/compare.hpp"
 #include "cli/conformance.hpp"
+#include "compare/compare.hpp"
+#include "output/artifacts.hpp"
+#include "output/compare_json.hpp"
+#include "output/compare_text.hpp"
 #include "output/image_io.hpp"
 #include "render/render.hpp"
+#include "results/results.hpp"
 #include "scene/scene.hpp"
 
 #include <CLI/CLI.hpp>
-#include <nlohmann/json.hpp>
 
-#include <cmath>
 #include <cstdio>
-#include <iostream>
 #include <memory>
 
 namespace {
@@ -59,52 +60,6 @@ softraster::Result<Frame> renderWith(const std::string& renderer, const Scene& s
   const auto vulkan = openVulkan(deviceOptions(options));
   if (!vulkan) return vulkan.status();
   return renderVulkan(scene, **vulkan);
-}
-
-softraster::Status writeDepthView(const std::string& path, const Frame& frame, const Scene& scene,
-                                  const std::vector<float>& range) {
-  const float lo = range.size() == 2 ? range[0] : 0.0f, hi = range.size() == 2 ? range[1] : 0.0f;
-  return writePng(path, frame.width, frame.height, depthToGrey(frame.depth, scene.clearDepth, lo, hi));
-}
-
-nlohmann::json toJson(const Scene& scene, const Comparison& c, const Frame& soft, const Frame& vulkan) {
-  auto finite = [](double v) -> nlohmann::json { return std::isfinite(v) ? nlohmann::json(v) : nlohmann::json(nullptr); };
-  return {{"scene", scene.path.string()},
-          {"passed", c.passed()},
-          {"pixels", c.pixels},
-          {"coverage_mismatches", c.coverageMismatches},
-          {"colour_max_delta", c.colourMaxDelta},
-          {"colour_mean_delta", c.colourMeanDelta},
-          {"colour_pixels_over", c.colourPixelsOver},
-          {"psnr", finite(c.psnr)},
-          {"depth_max_delta", c.depthMaxDelta},
-          {"depth_pixels_over", c.depthPixelsOver},
-          {"failures", c.failures},
-          {"tolerance",
-           {{"colour", scene.tolerance.colourThreshold},
-            {"depth", scene.tolerance.depthThreshold},
-            {"coverage_mismatches", scene.tolerance.maxCoverageMismatches},
-            {"colour_pixels_over", scene.tolerance.maxColourPixelsOver},
-            {"depth_pixels_over", scene.tolerance.maxDepthPixelsOver}}},
-          {"milliseconds", {{"soft", soft.milliseconds}, {"vulkan", vulkan.milliseconds}}}};
-}
-
-void printText(const Scene& scene, const Comparison& c, const Frame& soft, const Frame& vulkan) {
-  std::printf("%s: %s\n", scene.path.string().c_str(), c.passed() ? "PASS" : "FAIL");
-  std::printf("  coverage mismatches  %llu (max %llu)\n", static_cast<unsigned long long>(c.coverageMismatches),
-              static_cast<unsigned long long>(scene.tolerance.maxCoverageMismatches));
-  std::printf("  colour max |d| RGBA  %d %d %d %d\n", c.colourMaxDelta[0], c.colourMaxDelta[1], c.colourMaxDelta[2],
-              c.colourMaxDelta[3]);
-  std::printf("  colour mean |d| RGBA %.6f %.6f %.6f %.6f\n", c.colourMeanDelta[0], c.colourMeanDelta[1],
-              c.colourMeanDelta[2], c.colourMeanDelta[3]);
-  std::printf("  colour pixels over   %llu (threshold %d, max %llu)\n", static_cast<unsigned long long>(c.colourPixelsOver),
-              scene.tolerance.colourThreshold, static_cast<unsigned long long>(scene.tolerance.maxColourPixelsOver));
-  std::printf("  PSNR                 %s\n", std::isfinite(c.psnr) ? std::to_string(c.psnr).c_str() : "inf (identical)");
-  std::printf("  depth max |d|        %.9g\n", c.depthMaxDelta);
-  std::printf("  depth pixels over    %llu (threshold %.9g, max %llu)\n", static_cast<unsigned long long>(c.depthPixelsOver),
-              scene.tolerance.depthThreshold, static_cast<unsigned long long>(scene.tolerance.maxDepthPixelsOver));
-  std::printf("  time soft %.2f ms, vulkan %.2f ms\n", soft.milliseconds, vulkan.milliseconds);
-  for (const std::string& f : c.failures) std::printf("  over tolerance: %s\n", f.c_str());
 }
 
 int fail(const std::string& message) {
@@ -204,7 +159,8 @@ int main(int argc, char** argv) {
       return fail(written.message());
     }
     if (!depthOutput.empty()) {
-      if (const auto written = writeDepthView(depthOutput, *frame, *scene, depthRange); !written) {
+      const float lo = depthRange.size() == 2 ? depthRange[0] : 0.0f, hi = depthRange.size() == 2 ? depthRange[1] : 0.0f;
+      if (const auto written = writeDepthView(depthOutput, *frame, scene->clearDepth, lo, hi); !written) {
         return fail(written.message());
       }
     }
@@ -219,18 +175,20 @@ int main(int argc, char** argv) {
   if (!reference) return fail(reference.error());
   const Comparison result = compareFrames(*soft, *reference, *scene);
   if (!outDir.empty()) {
-    const std::filesystem::path dir(outDir);
-    softraster::Status written = writePng(dir / "soft.png", soft->width, soft->height, soft->rgba);
-    if (written) written = writePng(dir / "vulkan.png", reference->width, reference->height, reference->rgba);
-    if (written) written = writePng(dir / "diff.png", soft->width, soft->height, diffHeatmap(*soft, *reference, *scene));
-    if (written) written = writeDepthView((dir / "soft.depth.png").string(), *soft, *scene, {});
-    if (written) written = writeDepthView((dir / "vulkan.depth.png").string(), *reference, *scene, {});
-    if (!written) return fail(written.message());
+    if (const auto written = writeCompareImages(outDir, *scene, *soft, *reference); !written) return fail(written.message());
   }
-  if (json) {
-    std::cout << toJson(*scene, result, *soft, *reference).dump() << "\n";
-  } else {
-    printText(*scene, result, *soft, *reference);
-  }
+  RunResults run;
+  SceneResult& record = run.scenes.emplace_back();
+  record.entry = {scene->path.stem().string(), scene->path};
+  record.outcome = record.actual = result.passed() ? Outcome::Pass : Outcome::Fail;
+  record.loaded = true;
+  record.description = scene->description;
+  record.width = scene->width;
+  record.height = scene->height;
+  record.tolerance = scene->tolerance;
+  record.comparison = result;
+  record.softMilliseconds = soft->milliseconds;
+  record.vulkanMilliseconds = reference->milliseconds;
+  std::fputs((json ? compareJson(run) : compareText(run)).c_str(), stdout);
   return result.passed() ? 0 : 1;
 }

@@ -53,16 +53,6 @@ Status prepareOutputFile(const std::string& file) {
   return {};
 }
 
-// The current UTC time in strftime `format`.
-std::string utcNow(const char* format) {
-  const std::time_t now = std::time(nullptr);
-  std::tm tm{};
-  gmtime_r(&now, &tm);
-  char buffer[32];
-  std::strftime(buffer, sizeof buffer, format, &tm);
-  return buffer;
-}
-
 // Prints finished scenes in suite order, and the progress line on a terminal.
 class Printer {
  public:
@@ -157,44 +147,40 @@ int runConformanceCommand(const ConformanceCommand& command) {
       return writePixelData(imageDir, folder / "pixels.js", &result, soft, vulkan);
     };
   }
-  const std::vector<SceneResult> results = runConformance(slice, options);
+  RunResults run;
+  run.scenes = runConformance(slice, options);
   printer.end();
-  const double seconds = std::chrono::duration<double>(Clock::now() - start).count();
-  const Counts counts = countResults(results);
+  run.seconds = std::chrono::duration<double>(Clock::now() - start).count();
+  run.finished = std::time(nullptr);
+  run.jobs = command.jobs;
+  run.commandLine = command.commandLine;
+  if (shard.count > 1) run.suiteName += ".shard" + std::to_string(shard.index) + "of" + std::to_string(shard.count);
+  const Counts counts = countResults(run.scenes);
 
   bool written = true;
   if (!command.junitFile.empty()) {
-    JUnitInfo info;
-    info.seconds = seconds;
-    info.timestamp = utcNow("%Y-%m-%dT%H:%M:%S");
-    if (shard.count > 1) info.suiteName += ".shard" + std::to_string(shard.index) + "of" + std::to_string(shard.count);
-    if (const Status status = writeJUnit(command.junitFile, results, info); !status) {
+    if (const Status status = writeJUnit(command.junitFile, run); !status) {
       std::fprintf(stderr, "crosscheck: %s\n", status.message().c_str());
       written = false;
     }
   }
   if (report) {
-    ReportInfo info;
-    info.generated = utcNow("%Y-%m-%d %H:%M:%S UTC");
-    info.commandLine = command.commandLine;
-    info.seconds = seconds;
-    info.jobs = command.jobs;
-    if (const Status status = writeReport(command.reportDir, results, info); !status) {
+    if (const Status status = writeReport(command.reportDir, run); !status) {
       std::fprintf(stderr, "crosscheck: %s\n", status.message().c_str());
       written = false;
     }
   }
   std::fflush(stderr);
 
-  const std::string summary = summaryText(results);
+  const std::string summary = summaryText(run);
   if (!summary.empty()) std::printf("\n%s", summary.c_str());
   if (!command.junitFile.empty() && written) std::printf("JUnit: %s\n", command.junitFile.c_str());
   if (!command.outDir.empty()) std::printf("images: %s/<scene>/\n", command.outDir.c_str());
   if (report && written) {
     std::printf("report: %s\n", (std::filesystem::path(command.reportDir) / "index.html").string().c_str());
   }
-  std::printf("ran %zu scene%s in %.2f s with %u job%s\n", results.size(), results.size() == 1 ? "" : "s", seconds,
-              command.jobs, command.jobs == 1 ? "" : "s");
+  std::printf("ran %zu scene%s in %.2f s with %u job%s\n", run.scenes.size(), run.scenes.size() == 1 ? "" : "s",
+              run.seconds, run.jobs, run.jobs == 1 ? "" : "s");
   std::printf("%s\n", countsLine(counts).c_str());
   std::fflush(stdout);
   return counts.failed == 0 && written ? 0 : 1;

@@ -1,6 +1,7 @@
 // Scene images (see artifacts.hpp).
 #include "output/artifacts.hpp"
 
+#include "compare/compare.hpp"
 #include "output/image_io.hpp"
 
 #include <algorithm>
@@ -40,6 +41,21 @@ softraster::Status writeSceneImages(const std::filesystem::path& root, const std
                     write("vulkan.depth", "vulkan.depth.png", vulkan, depthToGrey(vulkan.depth, scene.clearDepth, lo, hi)) &&
                     write("depth.diff", "depth.diff.png", soft, depthDiffHeatmap(soft, vulkan, scene)));
   return status;
+}
+
+softraster::Status writeCompareImages(const std::filesystem::path& dir, const Scene& scene, const Frame& soft,
+                                      const Frame& vulkan) {
+  softraster::Status written = writePng(dir / "soft.png", soft.width, soft.height, soft.rgba);
+  if (written) written = writePng(dir / "vulkan.png", vulkan.width, vulkan.height, vulkan.rgba);
+  if (written) written = writePng(dir / "diff.png", soft.width, soft.height, diffHeatmap(soft, vulkan, scene));
+  if (written) written = writeDepthView(dir / "soft.depth.png", soft, scene.clearDepth, 0, 0);
+  if (written) written = writeDepthView(dir / "vulkan.depth.png", vulkan, scene.clearDepth, 0, 0);
+  return written;
+}
+
+softraster::Status writeDepthView(const std::filesystem::path& path, const Frame& frame, float clearDepth, float lo,
+                                  float hi) {
+  return writePng(path, frame.width, frame.height, depthToGrey(frame.depth, clearDepth, lo, hi));
 }
 
 }  // namespace crosscheck

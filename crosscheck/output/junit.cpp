@@ -51,19 +51,20 @@ std::string systemOut(const SceneResult& r) {
 
 }  // namespace
 
-std::string junitXml(const std::vector<SceneResult>& results, const JUnitInfo& info) {
+std::string junitXml(const RunResults& run) {
+  const std::vector<SceneResult>& results = run.scenes;
   const Counts counts = countResults(results);
   const std::size_t failures = counts.of(Outcome::Fail) + counts.of(Outcome::UnexpectedPass);
   const std::size_t errors = counts.of(Outcome::Crash);
   const std::size_t skipped = counts.of(Outcome::Skip) + counts.of(Outcome::ExpectedFail);
   const std::string totals = " tests=\"" + std::to_string(results.size()) + "\" failures=\"" + std::to_string(failures) +
                              "\" errors=\"" + std::to_string(errors) + "\" skipped=\"" + std::to_string(skipped) +
-                             "\" time=\"" + seconds(info.seconds) + "\"";
-  const std::string suite = escapeMarkup(info.suiteName);
+                             "\" time=\"" + seconds(run.seconds) + "\"";
+  const std::string suite = escapeMarkup(run.suiteName);
   std::string xml = "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n";
   xml += "<testsuites name=\"" + suite + "\"" + totals + ">\n";
   xml += "  <testsuite name=\"" + suite + "\"" + totals;
-  if (!info.timestamp.empty()) xml += " timestamp=\"" + escapeMarkup(info.timestamp) + "\"";
+  if (run.finished != 0) xml += " timestamp=\"" + escapeMarkup(utcTime(run.finished, "%Y-%m-%dT%H:%M:%S")) + "\"";
   xml += ">\n";
   for (const SceneResult& r : results) {
     xml += "    <testcase classname=\"" + suite + "\" name=\"" + escapeMarkup(r.entry.name) + "\" file=\"" +
@@ -95,9 +96,8 @@ std::string junitXml(const std::vector<SceneResult>& results, const JUnitInfo& i
   return xml;
 }
 
-softraster::Status writeJUnit(const std::filesystem::path& file, const std::vector<SceneResult>& results,
-                              const JUnitInfo& info) {
-  return writeDocument(file, junitXml(results, info), "JUnit file");
+softraster::Status writeJUnit(const std::filesystem::path& file, const RunResults& run) {
+  return writeDocument(file, junitXml(run), "JUnit file");
 }
 
 }  // namespace crosscheck

@@ -2,10 +2,9 @@
 #include "output/markup.hpp"
 
 #include <cerrno>
+#include <cstdint>
 #include <cstring>
 #include <fstream>
-
-#include <cstdint>
 
 namespace crosscheck {
 namespace {
@@ -81,6 +80,14 @@ std::string encodeUrlPath(std::string_view path) {
     }
   }
   return out;
+}
+
+std::string utcTime(std::time_t time, const char* format) {
+  std::tm tm{};
+  gmtime_r(&time, &tm);
+  char buffer[64];
+  std::strftime(buffer, sizeof buffer, format, &tm);
+  return buffer;
 }
 
 softraster::Status writeDocument(const std::filesystem::path& file, std::string_view text, std::string_view what) {

@@ -81,7 +81,8 @@ std::string progressLine(std::size_t done, std::size_t total, std::size_t failur
          format(" elapsed: %.1fs", elapsedSeconds);
 }
 
-std::string summaryText(const std::vector<SceneResult>& results, std::size_t slowest) {
+std::string summaryText(const RunResults& run, std::size_t slowest) {
+  const std::vector<SceneResult>& results = run.scenes;
   std::string text;
   const auto section = [&](const std::string& heading, const auto& keep) {
     std::string lines;
@@ -113,6 +114,12 @@ std::string summaryText(const std::vector<SceneResult>& results, std::size_t slo
     }
   }
   return text;
+}
+
+std::string countsLine(const Counts& counts) {
+  std::string line = std::to_string(counts.passed) + " passed, " + std::to_string(counts.failed) + " failed";
+  if (counts.skipped) line += ", " + std::to_string(counts.skipped) + " skipped";
+  return line;
 }
 
 }  // namespace crosscheck

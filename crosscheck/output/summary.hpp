@@ -1,10 +1,10 @@
-// The text a conformance run prints: one line per scene, the progress line for a terminal, and
-// the closing summary (failures with their metrics next to the limits, the slowest scenes, and
-// the counts line last).
+// The text a conformance run prints: one line per scene (as each finishes), the progress line
+// for a terminal, the closing summary (failures with their metrics next to the limits, the
+// slowest scenes) and the counts line last. Everything here reads results (results.hpp) only.
 // Deliberately returns strings and prints nothing: the command decides where each goes.
 #pragma once
 
-#include "run/conformance.hpp"
+#include "results/results.hpp"
 
 #include <cstddef>
 #include <string>
@@ -25,6 +25,9 @@ std::string progressLine(std::size_t done, std::size_t total, std::size_t failur
 
 // Failures, expected failures and the `slowest` slowest scenes, each section a heading plus one
 // indented line per scene; empty sections are left out. Ends with a newline when not empty.
-std::string summaryText(const std::vector<SceneResult>& results, std::size_t slowest = 5);
+std::string summaryText(const RunResults& run, std::size_t slowest = 5);
+
+// "N passed, N failed", plus ", N skipped" when some were.
+std::string countsLine(const Counts& counts);
 
 }  // namespace crosscheck

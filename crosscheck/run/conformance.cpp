@@ -1,6 +1,8 @@
 // The conformance runner (see conformance.hpp).
 #include "run/conformance.hpp"
 
+#include "compare/compare.hpp"
+
 #include <algorithm>
 #include <atomic>
 #include <chrono>
@@ -119,27 +121,6 @@ std::vector<SceneResult> runConformance(const std::vector<SceneEntry>& suite, co
     worker();
   }  // joins the helpers
   return results;
-}
-
-Counts countResults(const std::vector<SceneResult>& results) {
-  Counts counts;
-  for (const SceneResult& r : results) {
-    ++counts.byOutcome[static_cast<int>(r.outcome)];
-    if (r.outcome == Outcome::Skip) {
-      ++counts.skipped;
-    } else if (isUnexpected(r.outcome)) {
-      ++counts.failed;
-    } else {
-      ++counts.passed;
-    }
-  }
-  return counts;
-}
-
-std::string countsLine(const Counts& counts) {
-  std::string line = std::to_string(counts.passed) + " passed, " + std::to_string(counts.failed) + " failed";
-  if (counts.skipped) line += ", " + std::to_string(counts.skipped) + " skipped";
-  return line;
 }
 
 }  // namespace crosscheck

@@ -8,54 +8,21 @@
 // no subprocess isolation, no retry and no timeout per scene.
 #pragma once
 
-#include "compare/compare.hpp"
-#include "run/expectations.hpp"
 #include "render/render.hpp"
-#include "scene/scene.hpp"
-#include "run/outcome.hpp"
+#include "results/results.hpp"
+#include "run/expectations.hpp"
 #include "run/suite.hpp"
+#include "scene/scene.hpp"
 
 #include <softraster/pipeline.hpp>
 #include <softraster/status.hpp>
 #include <vkref/renderer.hpp>
 
 #include <cstddef>
-#include <filesystem>
 #include <functional>
-#include <optional>
-#include <string>
-#include <utility>
 #include <vector>
 
 namespace crosscheck {
-
-struct SceneImage {
-  std::string kind;             // "soft", "vulkan", "diff", "soft.depth", "vulkan.depth", "depth.diff"
-  std::filesystem::path file;   // relative to SceneResult::imageRoot
-};
-
-struct SceneResult {
-  SceneEntry entry;
-  Outcome outcome = Outcome::Crash;
-  Outcome actual = Outcome::Crash;            // before expectations: Pass, Fail, Crash (or Skip)
-  std::optional<Expectation> expectation;   // from the expectations file, if listed
-  std::string error;                        // Crash: one line
-
-  // Known once the scene loaded.
-  bool loaded = false;
-  std::string description;
-  std::uint32_t width = 0, height = 0;
-  Tolerance tolerance;
-
-  std::optional<Comparison> comparison;     // known once both renderers produced a frame
-  double softMilliseconds = 0, vulkanMilliseconds = 0;  // the render calls themselves
-  double milliseconds = 0;                  // the whole scene: load, render, compare, write
-
-  std::filesystem::path imageRoot;          // where images were written (empty: none)
-  std::vector<SceneImage> images;
-  std::filesystem::path pixelData;          // relative to imageRoot: the report's value readout data
-  std::pair<float, float> depthViewRange{0, 0};  // depth mapped to black..white in the depth views
-};
 
 // What one scene's frames are handed to, on the worker thread, before they are dropped (to write
 // images or report data). An error makes the scene Crash with that line.
@@ -76,18 +43,7 @@ struct ConformanceOptions {
   std::function<softraster::Result<Frame>(const Scene&)> renderSoft;
 };
 
+// One SceneResult per scene of `suite`, in suite order (RunResults::scenes).
 std::vector<SceneResult> runConformance(const std::vector<SceneEntry>& suite, const ConformanceOptions& options);
-
-// Pass and ExpectedFail count as passed; Fail, Crash and UnexpectedPass as failed; Skip as skipped.
-struct Counts {
-  std::size_t passed = 0, failed = 0, skipped = 0;
-  std::size_t byOutcome[6] = {};
-  std::size_t of(Outcome s) const { return byOutcome[static_cast<int>(s)]; }
-};
-
-Counts countResults(const std::vector<SceneResult>& results);
-
-// "N passed, N failed", plus ", N skipped" when some were.
-std::string countsLine(const Counts& counts);
 
 }  // namespace crosscheck

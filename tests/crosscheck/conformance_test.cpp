@@ -312,7 +312,9 @@ TEST(Summary, ListsFailuresWithMetricAndThresholdAndTheFiveSlowest) {
   for (int i = 0; i < 6; ++i) results.push_back(madeUp("pass" + std::to_string(i), Outcome::Pass, 10.0 * (i + 1)));
   results.push_back(madeUp("bad", Outcome::Fail, 5));
   results.push_back(madeUp("broken", Outcome::Crash, 1));
-  const std::string text = summaryText(results);
+  RunResults run;
+  run.scenes = results;
+  const std::string text = summaryText(run);
   EXPECT_NE(text.find("Failures (2):\n  Fail           bad: depth_pixels_over 3 > 0 (depth max |d| 0.75, threshold 0.5)\n"
                       "  Crash          broken: broken.json: broken\n"),
             std::string::npos)
@@ -340,7 +342,12 @@ TEST(JUnit, CountsAndElementsPerStatus) {
   results[5].expectation = Expectation{Outcome::Fail, "tracked in issue 9", 8};
   results[0].imageRoot = "out";
   results[0].images = {{"diff", "a/diff.png"}};
-  const std::string xml = junitXml(results, {"suite", 2.5, "2025-01-01T00:00:00"});
+  RunResults run;
+  run.scenes = results;
+  run.suiteName = "suite";
+  run.seconds = 2.5;
+  run.finished = 1735689600;  // 2025-01-01T00:00:00 UTC
+  const std::string xml = junitXml(run);
   EXPECT_NE(xml.find("<testsuite name=\"suite\" tests=\"6\" failures=\"2\" errors=\"1\" skipped=\"2\" time=\"2.500\" "
                      "timestamp=\"2025-01-01T00:00:00\">"),
             std::string::npos)

@@ -10,6 +10,7 @@
 #include <zlib.h>
 
 #include <bit>
+#include <ctime>
 #include <filesystem>
 #include <fstream>
 #include <regex>
@@ -72,7 +73,13 @@ std::vector<SceneResult> runIntoReport(const fs::path& dir) {
 TEST(Report, PageHasSummaryTableLazyImagesAndNoNetwork) {
   const fs::path dir = kArtifacts / "report-unit";
   const auto results = runIntoReport(dir);
-  const softraster::Status written = writeReport(dir, results, {"now", "crosscheck report", 1.5, 2});
+  RunResults run;
+  run.scenes = results;
+  run.finished = std::time(nullptr);
+  run.commandLine = "crosscheck report";
+  run.seconds = 1.5;
+  run.jobs = 2;
+  const softraster::Status written = writeReport(dir, run);
   ASSERT_TRUE(written) << written.message();
   std::ifstream in(dir / "index.html");
   std::stringstream buffer;

@@ -291,7 +291,8 @@ std::vector<std::size_t> worstFirst(const std::vector<SceneResult>& results) {
   return order;
 }
 
-std::string reportHtml(const std::vector<SceneResult>& results, const ReportInfo& info) {
+std::string reportHtml(const RunResults& run) {
+  const std::vector<SceneResult>& results = run.scenes;
   const Counts counts = countResults(results);
   const std::vector<std::size_t> order = worstFirst(results);
   std::string html =
@@ -310,9 +311,9 @@ std::string reportHtml(const std::vector<SceneResult>& results, const ReportInfo
   for (Outcome s : kAllOutcomes) {
     if (counts.of(s)) html += " \xC2\xB7 " + std::to_string(counts.of(s)) + " " + std::string(outcomeName(s));
   }
-  html += " \xC2\xB7 " + e(fixed("%.2f s", info.seconds)) + " with " + std::to_string(info.jobs) + (info.jobs == 1 ? " job" : " jobs");
-  if (!info.generated.empty()) html += " \xC2\xB7 " + e(info.generated);
-  if (!info.commandLine.empty()) html += "<br><code>" + e(info.commandLine) + "</code>";
+  html += " \xC2\xB7 " + e(fixed("%.2f s", run.seconds)) + " with " + std::to_string(run.jobs) + (run.jobs == 1 ? " job" : " jobs");
+  if (run.finished != 0) html += " \xC2\xB7 " + e(utcTime(run.finished, "%Y-%m-%d %H:%M:%S UTC"));
+  if (!run.commandLine.empty()) html += "<br><code>" + e(run.commandLine) + "</code>";
   html += "</p>\n";
 
   html += "<h2>Summary</h2>\n<table id=\"summary\" class=\"summary\">\n<thead><tr>"
@@ -344,9 +345,8 @@ std::string reportHtml(const std::vector<SceneResult>& results, const ReportInfo
   return html;
 }
 
-softraster::Status writeReport(const std::filesystem::path& dir, const std::vector<SceneResult>& results,
-                               const ReportInfo& info) {
-  return writeDocument(dir / "index.html", reportHtml(results, info), "report");
+softraster::Status writeReport(const std::filesystem::path& dir, const RunResults& run) {
+  return writeDocument(dir / "index.html", reportHtml(run), "report");
 }
 
 }  // namespace crosscheck

@@ -8,10 +8,13 @@
 // The value readout reads DIR/<scene>/pixels.js (writePixelData): raw RGBA8 and float depth of
 // both frames, zlib-compressed and base64-encoded, loaded with a <script> element because a canvas
 // cannot read PNGs back on a page opened from file://.
+// The page reads a run's results (results.hpp) only; the pixel data is written from the frames
+// while they exist, during the run.
 // Deliberately no charts, no history across runs and no server.
 #pragma once
 
-#include "run/conformance.hpp"
+#include "render/render.hpp"
+#include "results/results.hpp"
 
 #include <softraster/status.hpp>
 
@@ -20,13 +23,6 @@
 #include <vector>
 
 namespace crosscheck {
-
-struct ReportInfo {
-  std::string generated;    // when, for the header
-  std::string commandLine;  // how, for the header
-  double seconds = 0;       // wall time of the run
-  unsigned jobs = 1;
-};
 
 // The text of DIR/<scene>/pixels.js: `crosscheckPixels("name", {w, h, soft, vulkan, softDepth,
 // vulkanDepth})`, each buffer zlib-compressed and base64-encoded; depth as little-endian float32.
@@ -42,10 +38,10 @@ softraster::Status writePixelData(const std::filesystem::path& root, const std::
 // (lowest first) and name.
 std::vector<std::size_t> worstFirst(const std::vector<SceneResult>& results);
 
-std::string reportHtml(const std::vector<SceneResult>& results, const ReportInfo& info);
+// The header shows the counts, the run's time and jobs, when it finished (UTC) and its command line.
+std::string reportHtml(const RunResults& run);
 
 // Writes dir/index.html; the error is "FILE: cannot write report: reason".
-softraster::Status writeReport(const std::filesystem::path& dir, const std::vector<SceneResult>& results,
-                               const ReportInfo& info);
+softraster::Status writeReport(const std::filesystem::path& dir, const RunResults& run);
 
 }  // namespace crosscheck
