@@ -1,29 +1,22 @@
-// crosscheck: the command-line tool. Renders scenes with softraster and with Vulkan (lavapipe),
-// compares them within each scene's tolerance and writes the images.
+// crosscheck: the command line. Renders scenes with softraster and with Vulkan (lavapipe),
+// compares them within each scene's tolerance and writes the images:
 //   crosscheck render SCENE --renderer soft|vulkan -o OUT.png [--depth-out OUT.png]
 //   crosscheck compare SCENE [--out DIR] [--json]
 //   crosscheck conformance [SCENE|DIR ...] [--expectations FILE] [--jobs N] [--shard I/N] [--junit FILE] [--out DIR]
 //   crosscheck report [SCENE|DIR ...] -o DIR [--expectations FILE] [--jobs N] [--shard I/N] [--junit FILE]
 // Exit status: 0 success / within tolerance / nothing unexpected, 1 outside tolerance, a failed
 // render or an unexpected conformance result, 2 bad usage.
-#include "cli/conformance.hpp"
-#include "compare/compare.hpp"
-#include "output/artifacts.hpp"
-#include "output/compare_json.hpp"
-#include "output/compare_text.hpp"
-#include "output/image_io.hpp"
-#include "render/render.hpp"
-#include "results/results.hpp"
-#include "scene/scene.hpp"
+// This file only sets up CLI11 and hands the parsed options to one subcommand in cli/
+// (cli/commands.hpp); a parse error is exit status 2 with the usage below.
+#include "cli/commands.hpp"
 
 #include <CLI/CLI.hpp>
 
 #include <cstdio>
-#include <memory>
+#include <string>
+#include <vector>
 
 namespace {
-
-using namespace crosscheck;
 
 constexpr const char* kUsage =
     "usage: crosscheck render SCENE --renderer soft|vulkan -o OUT.png [--depth-out OUT.png]\n"
@@ -33,7 +26,8 @@ constexpr const char* kUsage =
     "       crosscheck report [SCENE|DIR ...] -o DIR [--expectations FILE] [--jobs N] [--shard I/N] [--junit FILE]\n"
     "       (crosscheck SUBCOMMAND --help for every option)";
 
-struct CommonOptions {
+// Flags several subcommands share, as typed.
+struct CommonFlags {
   std::vector<std::string> overrides;
   std::string device;
   bool validation = false;
@@ -46,33 +40,23 @@ struct CommonOptions {
     if (softrasterDepth == "inverse-z") options.depthMode = softraster::DepthMode::InverseZ;
     return options;
   }
+  vkref::DeviceOptions deviceOptions() const {
+    vkref::DeviceOptions options;
+    options.deviceName = device;
+    options.validation = validation;
+    return options;
+  }
+  crosscheck::cli::SceneOptions sceneOptions(const std::string& scene) const {
+    return {scene, overrides, deviceOptions(), softraster()};
+  }
 };
-
-vkref::DeviceOptions deviceOptions(const CommonOptions& options) {
-  vkref::DeviceOptions device;
-  device.deviceName = options.device;
-  device.validation = options.validation;
-  return device;
-}
-
-softraster::Result<Frame> renderWith(const std::string& renderer, const Scene& scene, const CommonOptions& options) {
-  if (renderer == "soft") return renderSoftraster(scene, options.softraster());
-  const auto vulkan = openVulkan(deviceOptions(options));
-  if (!vulkan) return vulkan.status();
-  return renderVulkan(scene, **vulkan);
-}
-
-int fail(const std::string& message) {
-  std::fprintf(stderr, "crosscheck: %s\n", message.c_str());
-  return 1;
-}
 
 }  // namespace
 
 int main(int argc, char** argv) {
   CLI::App app{"crosscheck: softraster against Vulkan (lavapipe), scene by scene"};
   app.require_subcommand(1);
-  CommonOptions common;
+  CommonFlags common;
   auto addDevice = [&](CLI::App* cmd) {
     cmd->add_option("--device", common.device, "Vulkan device name substring (default: lavapipe)");
     cmd->add_flag("--validation", common.validation, "Enable VK_LAYER_KHRONOS_validation (in a suite, a message makes the scene Crash)");
@@ -109,7 +93,8 @@ int main(int argc, char** argv) {
   compare->add_flag("--json", json, "Print one JSON object instead of text");
   addCommon(compare);
 
-  ConformanceCommand suite;
+  crosscheck::cli::SuiteCommand suite;
+  std::string reportDir;
   int jobs = 1;
   const auto addSuite = [&](CLI::App* cmd) {
     cmd->add_option("SCENES", suite.inputs,
@@ -125,11 +110,11 @@ int main(int argc, char** argv) {
   CLI::App* conformance =
       app.add_subcommand("conformance", "Cross-check every scene of a suite; exit 0 when nothing unexpected happened");
   addSuite(conformance);
-  conformance->add_option("--out", suite.outDir, "Write soft/vulkan/diff/depth PNGs to DIR/<scene>/");
+  conformance->add_option("--out", outDir, "Write soft/vulkan/diff/depth PNGs to DIR/<scene>/");
   CLI::App* reportCommand =
       app.add_subcommand("report", "Run the suite like conformance and write an HTML report to DIR/index.html");
   addSuite(reportCommand);
-  reportCommand->add_option("-o,--output", suite.reportDir, "Report directory")->required();
+  reportCommand->add_option("-o,--output", reportDir, "Report directory")->required();
 
   try {
     app.parse(argc, argv);
@@ -140,55 +125,14 @@ int main(int argc, char** argv) {
     return 2;
   }
 
-  if (conformance->parsed() || reportCommand->parsed()) {
-    suite.jobs = static_cast<unsigned>(jobs);
-    suite.device.deviceName = common.device;
-    suite.device.validation = common.validation;
-    suite.softraster = common.softraster();
-    for (int i = 0; i < argc; ++i) suite.commandLine += (i ? " " : "") + std::string(argv[i]);
-    return runConformanceCommand(suite);
-  }
-
-  const auto scene = loadScene(scenePath, common.overrides);
-  if (!scene) return fail(scene.error());
-
   if (render->parsed()) {
-    const auto frame = renderWith(renderer, *scene, common);
-    if (!frame) return fail(frame.error());
-    if (const auto written = writePng(output, frame->width, frame->height, frame->rgba); !written) {
-      return fail(written.message());
-    }
-    if (!depthOutput.empty()) {
-      const float lo = depthRange.size() == 2 ? depthRange[0] : 0.0f, hi = depthRange.size() == 2 ? depthRange[1] : 0.0f;
-      if (const auto written = writeDepthView(depthOutput, *frame, scene->clearDepth, lo, hi); !written) {
-        return fail(written.message());
-      }
-    }
-    return 0;
+    return crosscheck::cli::renderCommand({common.sceneOptions(scenePath), renderer, output, depthOutput, depthRange});
   }
-
-  const auto soft = renderSoftraster(*scene, common.softraster());
-  if (!soft) return fail(soft.error());
-  const auto vulkan = openVulkan(deviceOptions(common));
-  if (!vulkan) return fail(vulkan.error());
-  const auto reference = renderVulkan(*scene, **vulkan);
-  if (!reference) return fail(reference.error());
-  const Comparison result = compareFrames(*soft, *reference, *scene);
-  if (!outDir.empty()) {
-    if (const auto written = writeCompareImages(outDir, *scene, *soft, *reference); !written) return fail(written.message());
-  }
-  RunResults run;
-  SceneResult& record = run.scenes.emplace_back();
-  record.entry = {scene->path.stem().string(), scene->path};
-  record.outcome = record.actual = result.passed() ? Outcome::Pass : Outcome::Fail;
-  record.loaded = true;
-  record.description = scene->description;
-  record.width = scene->width;
-  record.height = scene->height;
-  record.tolerance = scene->tolerance;
-  record.comparison = result;
-  record.softMilliseconds = soft->milliseconds;
-  record.vulkanMilliseconds = reference->milliseconds;
-  std::fputs((json ? compareJson(run) : compareText(run)).c_str(), stdout);
-  return result.passed() ? 0 : 1;
+  if (compare->parsed()) return crosscheck::cli::compareCommand({common.sceneOptions(scenePath), outDir, json});
+  suite.jobs = static_cast<unsigned>(jobs);
+  suite.device = common.deviceOptions();
+  suite.softraster = common.softraster();
+  for (int i = 0; i < argc; ++i) suite.commandLine += (i ? " " : "") + std::string(argv[i]);
+  if (reportCommand->parsed()) return crosscheck::cli::reportCommand(suite, reportDir);
+  return crosscheck::cli::conformanceCommand(suite, outDir);
 }

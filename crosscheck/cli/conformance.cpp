@@ -1,13 +1,17 @@
-// The conformance and report commands (see cli/conformance.hpp).
-#include "cli/conformance.hpp"
+// crosscheck conformance, and the suite run it shares with crosscheck report (see commands.hpp):
+// check the arguments, run the suite, print one line per scene (in suite order), a progress line
+// when stderr is a terminal, the summary and, last, "N passed, N failed[, N skipped]"; write
+// JUnit and the scenes' images.
+#include "cli/commands.hpp"
 
 #include "output/artifacts.hpp"
+#include "output/junit.hpp"
+#include "output/report/report.hpp"  // writePixelData
+#include "output/summary.hpp"
+#include "results/results.hpp"
 #include "run/conformance.hpp"
 #include "run/expectations.hpp"
-#include "output/junit.hpp"
-#include "output/report/report.hpp"
 #include "run/suite.hpp"
-#include "output/summary.hpp"
 
 #include <unistd.h>
 
@@ -15,9 +19,10 @@
 #include <cstdio>
 #include <ctime>
 #include <fstream>
+#include <optional>
 #include <set>
 
-namespace crosscheck {
+namespace crosscheck::cli {
 namespace {
 
 using Clock = std::chrono::steady_clock;
@@ -86,7 +91,7 @@ class Printer {
 
 }  // namespace
 
-int runConformanceCommand(const ConformanceCommand& command) {
+int runSuite(const SuiteCommand& command, const SuiteOutputs& outputs) {
   if (command.jobs < 1) return usageError("--jobs must be at least 1");
   Shard shard;
   if (!command.shard.empty()) {
@@ -102,9 +107,8 @@ int runConformanceCommand(const ConformanceCommand& command) {
   }
   const auto suite = collectScenes(command.inputs);
   if (!suite) return usageError(suite.error());
-  for (const std::string& dir : {command.outDir, command.reportDir}) {
-    if (dir.empty()) continue;
-    if (const Status prepared = prepareOutputDir(dir); !prepared) return usageError(prepared.message());
+  if (!outputs.imageDir.empty()) {
+    if (const Status prepared = prepareOutputDir(outputs.imageDir); !prepared) return usageError(prepared.message());
   }
   if (!command.junitFile.empty()) {
     if (const Status prepared = prepareOutputFile(command.junitFile); !prepared) return usageError(prepared.message());
@@ -121,8 +125,7 @@ int runConformanceCommand(const ConformanceCommand& command) {
     }
   }
   const std::vector<SceneEntry> slice = selectShard(*suite, shard);
-  std::printf("crosscheck %s: %zu scene%s", command.reportDir.empty() ? "conformance" : "report", slice.size(),
-              slice.size() == 1 ? "" : "s");
+  std::printf("crosscheck %s: %zu scene%s", outputs.name.c_str(), slice.size(), slice.size() == 1 ? "" : "s");
   if (shard.count > 1) std::printf(" (shard %zu/%zu of %zu)", shard.index, shard.count, suite->size());
   std::printf(", %u job%s\n", command.jobs, command.jobs == 1 ? "" : "s");
   std::fflush(stdout);
@@ -137,14 +140,12 @@ int runConformanceCommand(const ConformanceCommand& command) {
   options.onFinished = [&](std::size_t position, const SceneResult& result, std::size_t done) {
     printer.finished(position, result, done);
   };
-  const std::string imageDir = command.reportDir.empty() ? command.outDir : command.reportDir;
-  const bool report = !command.reportDir.empty();
-  if (!imageDir.empty()) {
+  if (!outputs.imageDir.empty()) {
     options.onFrames = [&](SceneResult& result, const Scene& scene, const Frame& soft, const Frame& vulkan) {
       const std::filesystem::path folder = result.entry.name;
-      const Status images = writeSceneImages(imageDir, folder, &result, scene, soft, vulkan);
-      if (!images || !report) return images;
-      return writePixelData(imageDir, folder / "pixels.js", &result, soft, vulkan);
+      const Status images = writeSceneImages(outputs.imageDir, folder, &result, scene, soft, vulkan);
+      if (!images || !outputs.pixelData) return images;
+      return writePixelData(outputs.imageDir, folder / "pixels.js", &result, soft, vulkan);
     };
   }
   RunResults run;
@@ -164,8 +165,8 @@ int runConformanceCommand(const ConformanceCommand& command) {
       written = false;
     }
   }
-  if (report) {
-    if (const Status status = writeReport(command.reportDir, run); !status) {
+  if (outputs.write) {
+    if (const Status status = outputs.write(run); !status) {
       std::fprintf(stderr, "crosscheck: %s\n", status.message().c_str());
       written = false;
     }
@@ -175,10 +176,7 @@ int runConformanceCommand(const ConformanceCommand& command) {
   const std::string summary = summaryText(run);
   if (!summary.empty()) std::printf("\n%s", summary.c_str());
   if (!command.junitFile.empty() && written) std::printf("JUnit: %s\n", command.junitFile.c_str());
-  if (!command.outDir.empty()) std::printf("images: %s/<scene>/\n", command.outDir.c_str());
-  if (report && written) {
-    std::printf("report: %s\n", (std::filesystem::path(command.reportDir) / "index.html").string().c_str());
-  }
+  if (!outputs.doneLine.empty() && (!outputs.write || written)) std::printf("%s\n", outputs.doneLine.c_str());
   std::printf("ran %zu scene%s in %.2f s with %u job%s\n", run.scenes.size(), run.scenes.size() == 1 ? "" : "s",
               run.seconds, run.jobs, run.jobs == 1 ? "" : "s");
   std::printf("%s\n", countsLine(counts).c_str());
@@ -186,4 +184,12 @@ int runConformanceCommand(const ConformanceCommand& command) {
   return counts.failed == 0 && written ? 0 : 1;
 }
 
-}  // namespace crosscheck
+int conformanceCommand(const SuiteCommand& command, const std::string& outDir) {
+  SuiteOutputs outputs;
+  outputs.name = "conformance";
+  outputs.imageDir = outDir;
+  if (!outDir.empty()) outputs.doneLine = "images: " + outDir + "/<scene>/";
+  return runSuite(command, outputs);
+}
+
+}  // namespace crosscheck::cli
