@@ -21,7 +21,8 @@ struct Frame {
   std::vector<float> depth;                 // as floats in [0, 1], for views
   softraster::DepthFormat depthFormat = softraster::DepthFormat::D32Sfloat;
   std::vector<std::uint32_t> depthStorage;  // as the format stores it, for exact comparison
-  double milliseconds = 0;                  // wall time of the render call itself
+  double milliseconds = 0;                  // the renderer's timed span (render.cpp): softraster's clear,
+                                            // draws and resolve; vkref's render() call
 };
 
 // Errors: "softraster: draw 'NAME': what is wrong", "vulkan: what is wrong".
