@@ -1,18 +1,13 @@
-// Scene -> softraster and Scene -> vkref adapters (see render.hpp).
+// Scene -> softraster and Scene -> vkref adapters (see render.hpp). Both draw every Draw through
+// its row of the shading-model table (shaders/shading_models.hpp); neither knows a model by name.
 #include "render/render.hpp"
 
 #include <softraster/pipeline.hpp>
 
-#include <shaders/vertex_color_flat_frag.spv.h>
-#include <shaders/vertex_color_flat_vert.spv.h>
-#include <shaders/vertex_color_frag.spv.h>
-#include <shaders/vertex_color_noperspective_frag.spv.h>
-#include <shaders/vertex_color_noperspective_vert.spv.h>
-#include <shaders/vertex_color_vert.spv.h>
+#include <shading_models.hpp>
 
 #include <chrono>
-#include <cstring>
-#include <iterator>
+#include <string>
 
 namespace crosscheck {
 namespace {
@@ -23,51 +18,20 @@ double millisecondsSince(Clock::time_point start) {
   return std::chrono::duration<double, std::milli>(Clock::now() - start).count();
 }
 
-// A shading model's compiled SPIR-V pair and the vertex layout of its C++ twin.
-template <class Shader, std::size_t VertWords, std::size_t FragWords>
-vkref::ShaderProgram program(const char* name, const std::uint32_t (&vert)[VertWords],
-                             const std::uint32_t (&frag)[FragWords]) {
+// What every shading model reads of a draw besides its mesh.
+shaders::DrawParameters parametersOf(const Scene& scene, const Draw& draw) {
+  return {scene.viewProjection, draw.pointSize};
+}
+
+// A shading model's compiled SPIR-V pair and the vertex layout of its C++ twin, for vkref.
+vkref::ShaderProgram programOf(const shaders::ShadingModel& model) {
   vkref::ShaderProgram p;
-  p.name = name;
-  p.vertexSpirv = {vert, VertWords};
-  p.fragmentSpirv = {frag, FragWords};
-  p.attributes.assign(Shader::kAttributes.begin(), Shader::kAttributes.end());
-  p.vertexStride = sizeof(typename Shader::Vertex);
+  p.name = std::string(model.name);
+  p.vertexSpirv = model.vertexSpirv;
+  p.fragmentSpirv = model.fragmentSpirv;
+  p.attributes.assign(model.attributes.begin(), model.attributes.end());
+  p.vertexStride = model.vertexStride;
   return p;
-}
-
-vkref::ShaderProgram programFor(ShadingModel model) {
-  switch (model) {
-    case ShadingModel::VertexColorFlat:
-      return program<shaders::VertexColorFlat>("vertex_color_flat", vertex_color_flat_vert_spirv,
-                                               vertex_color_flat_frag_spirv);
-    case ShadingModel::VertexColorNoPerspective:
-      return program<shaders::VertexColorNoPerspective>("vertex_color_noperspective",
-                                                        vertex_color_noperspective_vert_spirv,
-                                                        vertex_color_noperspective_frag_spirv);
-    case ShadingModel::VertexColor:
-      break;
-  }
-  return program<shaders::VertexColor>("vertex_color", vertex_color_vert_spirv, vertex_color_frag_spirv);
-}
-
-// Calls f with a value of the C++ shader type of `model` (all vertex_color variants share
-// their vertex and uniform types).
-template <class F>
-softraster::Status withShader(ShadingModel model, F&& f) {
-  switch (model) {
-    case ShadingModel::VertexColorFlat: return f(shaders::VertexColorFlat{});
-    case ShadingModel::VertexColorNoPerspective: return f(shaders::VertexColorNoPerspective{});
-    case ShadingModel::VertexColor: break;
-  }
-  return f(shaders::VertexColor{});
-}
-
-template <class T>
-std::vector<std::byte> bytesOf(const T* data, std::size_t count) {
-  std::vector<std::byte> bytes(sizeof(T) * count);
-  std::memcpy(bytes.data(), data, bytes.size());
-  return bytes;
 }
 
 }  // namespace
@@ -75,19 +39,17 @@ std::vector<std::byte> bytesOf(const T* data, std::size_t count) {
 softraster::Result<Frame> renderSoftraster(const Scene& scene, const softraster::ContextOptions& options) {
   softraster::Framebuffer framebuffer(scene.width, scene.height, scene.depthFormat, scene.samples);
   const softraster::Context context(options);
+  std::vector<shaders::SoftrasterDraw> draws;  // each draw's vertices and uniforms in its model's types
+  draws.reserve(scene.draws.size());
+  for (const Draw& draw : scene.draws) draws.push_back(draw.shading->prepareSoftraster(draw.mesh, parametersOf(scene, draw)));
   // Timed: clear, draws, MSAA resolve (not the framebuffer's allocation, not the Frame below).
   const auto start = Clock::now();
   // The 1/z buffer is cleared to 0 (infinitely far); it is not a Vulkan mode.
   framebuffer.clear(scene.clearColour,
                     options.depthMode == softraster::DepthMode::InverseZ ? 0.0f : scene.clearDepth);
-  for (const Draw& draw : scene.draws) {
-    const softraster::Status status = withShader(draw.shading, [&](auto shader) {
-      using Shader = decltype(shader);
-      const typename Shader::Uniforms uniforms{scene.viewProjection, draw.pointSize};
-      const std::span<const typename Shader::Vertex> vertices(draw.vertices);
-      return draw.indexed ? context.drawIndexed<Shader>(draw.state, uniforms, vertices, draw.indices, framebuffer)
-                          : context.draw<Shader>(draw.state, uniforms, vertices, framebuffer);
-    });
+  for (std::size_t i = 0; i < scene.draws.size(); ++i) {
+    const Draw& draw = scene.draws[i];
+    const softraster::Status status = draws[i].draw(context, draw.state, draw.indexed, draw.indices, framebuffer);
     if (!status) return status.prefixed("softraster: draw '" + draw.name + "'");
   }
   if (framebuffer.samples() > 1) framebuffer = framebuffer.resolve();  // as vkref reads Vulkan's back
@@ -116,13 +78,12 @@ softraster::Result<Frame> renderVulkan(const Scene& scene, vkref::Renderer& rend
   request.samples = scene.samples;
   for (const Draw& draw : scene.draws) {
     vkref::DrawCall call;
-    call.program = &programs.emplace_back(programFor(draw.shading));
+    call.program = &programs.emplace_back(programOf(*draw.shading));
     call.state = draw.state;
-    call.vertexData = bytesOf(draw.vertices.data(), draw.vertices.size());
+    call.vertexData = draw.shading->vertexBytes(draw.mesh);
     call.indexed = draw.indexed;
     call.indices = draw.indices;
-    const shaders::VertexColor::Uniforms uniforms{scene.viewProjection, draw.pointSize};
-    call.pushConstants = bytesOf(&uniforms, 1);
+    call.pushConstants = draw.shading->uniformBytes(parametersOf(scene, draw));
     request.draws.push_back(std::move(call));
   }
   // Timed: vkref's render(), the nearest span to softraster's that vkref offers today; it also

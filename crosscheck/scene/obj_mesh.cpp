@@ -47,7 +47,7 @@ softraster::Result<ObjMesh> loadObjMesh(const std::filesystem::path& path, softr
         const auto& kd = materials[static_cast<std::size_t>(materialId)].diffuse;
         faceColour = {kd[0], kd[1], kd[2], 1.0f};
       }
-      const auto first = static_cast<std::uint32_t>(mesh.vertices.size());
+      const auto first = static_cast<std::uint32_t>(mesh.vertices.vertexCount());
       for (std::size_t c = 0; c < corners; ++c) {
         const int p = shape.mesh.indices[offset + c].vertex_index;
         if (p < 0 || static_cast<std::size_t>(p) >= positionCount) {
@@ -55,12 +55,10 @@ softraster::Result<ObjMesh> loadObjMesh(const std::filesystem::path& path, softr
                                " refers to a vertex that does not exist");
         }
         const auto i = static_cast<std::size_t>(p);
-        shaders::VertexColorVertex v;
-        v.position = {attrib.vertices[3 * i], attrib.vertices[3 * i + 1], attrib.vertices[3 * i + 2]};
-        v.colour = hasVertexColours ? softraster::Vec4{attrib.colors[3 * i], attrib.colors[3 * i + 1],
-                                                       attrib.colors[3 * i + 2], 1.0f}
-                                    : faceColour;
-        mesh.vertices.push_back(v);
+        mesh.vertices.positions.push_back({attrib.vertices[3 * i], attrib.vertices[3 * i + 1], attrib.vertices[3 * i + 2]});
+        mesh.vertices.colours.push_back(hasVertexColours ? softraster::Vec4{attrib.colors[3 * i], attrib.colors[3 * i + 1],
+                                                                            attrib.colors[3 * i + 2], 1.0f}
+                                                         : faceColour);
       }
       for (std::size_t c = 2; c < corners; ++c) {
         mesh.indices.insert(mesh.indices.end(), {first, first + static_cast<std::uint32_t>(c - 1),

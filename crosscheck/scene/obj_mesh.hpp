@@ -5,7 +5,7 @@
 
 #include <softraster/status.hpp>
 
-#include <vertex_color.hpp>
+#include <draw_inputs.hpp>
 
 #include <cstdint>
 #include <filesystem>
@@ -14,7 +14,7 @@
 namespace crosscheck {
 
 struct ObjMesh {
-  std::vector<shaders::VertexColorVertex> vertices;  // one per face corner
+  shaders::Mesh vertices;               // one per face corner
   std::vector<std::uint32_t> indices;
 };
 

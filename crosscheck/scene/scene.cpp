@@ -120,6 +120,17 @@ Enum readEnum(const json& object, const char* key, const std::string& place, Enu
   throw SceneError(placeOf(place, key), "'" + value + "' is not one of " + list);
 }
 
+// The row of shaders/shading_models.hpp named by "shading" (default: kDefaultShadingModel).
+const shaders::ShadingModel* readShadingModel(const json& d, const std::string& place) {
+  const std::string name = readString(d, "shading", place, std::string(shaders::kDefaultShadingModel));
+  if (const shaders::ShadingModel* model = shaders::findShadingModel(name)) return model;
+  std::string list;
+  for (const shaders::ShadingModel& model : shaders::shadingModels()) {
+    list += (list.empty() ? "" : ", ") + std::string(model.name);
+  }
+  throw SceneError(placeOf(place, "shading"), "'" + name + "' is not one of " + list);
+}
+
 softraster::Mat4 readCamera(const json& camera, const std::string& place, int width, int height) {
   const std::string type = readString(camera, "type", place, "pinhole");
   if (type == "pinhole") {
@@ -240,10 +251,7 @@ Draw readDraw(const json& d, const std::string& place, const std::filesystem::pa
                        "point_size", "polygon_mode", "blend", "depth_test", "depth_write", "depth_compare"});
   Draw draw;
   draw.name = readString(d, "name", place, place);
-  draw.shading = readEnum(d, "shading", place, ShadingModel::VertexColor,
-                          {{"vertex_color", ShadingModel::VertexColor},
-                           {"vertex_color_flat", ShadingModel::VertexColorFlat},
-                           {"vertex_color_noperspective", ShadingModel::VertexColorNoPerspective}});
+  draw.shading = readShadingModel(d, place);
   readDrawState(d, place, draw.state);
   draw.pointSize = static_cast<float>(readNumber(d, "point_size", place, draw.pointSize));
   if (!(draw.pointSize > 0)) throw SceneError(placeOf(place, "point_size"), "must be positive");
@@ -260,7 +268,7 @@ Draw readDraw(const json& d, const std::string& place, const std::filesystem::pa
     const std::string file = readString(d, "obj", place, "");
     auto mesh = loadObjMesh(sceneDir / file, colour);
     if (!mesh) throw SceneError(placeOf(place, "obj"), mesh.error());
-    draw.vertices = std::move(mesh->vertices);
+    draw.mesh = std::move(mesh->vertices);
     draw.indices = std::move(mesh->indices);
     return draw;
   }
@@ -272,11 +280,9 @@ Draw readDraw(const json& d, const std::string& place, const std::filesystem::pa
     const std::string at = placeOf(placeOf(place, "positions"), std::to_string(i));
     const json& p = positions[i];
     if (!p.is_array() || p.size() != 3) throw SceneError(at, "expected [x, y, z]");
-    shaders::VertexColorVertex v;
-    v.position = {readCoordinate(p[0], placeOf(at, "0")), readCoordinate(p[1], placeOf(at, "1")),
-                  readCoordinate(p[2], placeOf(at, "2"))};
-    v.colour = colour;
-    draw.vertices.push_back(v);
+    draw.mesh.positions.push_back({readCoordinate(p[0], placeOf(at, "0")), readCoordinate(p[1], placeOf(at, "1")),
+                                   readCoordinate(p[2], placeOf(at, "2"))});
+    draw.mesh.colours.push_back(colour);
   }
   if (d.contains("colours")) {
     const json& colours = d["colours"];
@@ -284,7 +290,7 @@ Draw readDraw(const json& d, const std::string& place, const std::filesystem::pa
       throw SceneError(placeOf(place, "colours"), "expected one colour per position (" + std::to_string(positions.size()) + ")");
     }
     for (std::size_t i = 0; i < colours.size(); ++i) {
-      draw.vertices[i].colour = readColour(colours[i], placeOf(placeOf(place, "colours"), std::to_string(i)));
+      draw.mesh.colours[i] = readColour(colours[i], placeOf(placeOf(place, "colours"), std::to_string(i)));
     }
   }
   if (d.contains("indices")) {
@@ -293,9 +299,9 @@ Draw readDraw(const json& d, const std::string& place, const std::filesystem::pa
     for (std::size_t i = 0; i < indices.size(); ++i) {
       const json& index = indices[i];
       if (!index.is_number_integer() || index.get<std::int64_t>() < 0 ||
-          index.get<std::uint64_t>() >= draw.vertices.size()) {
+          index.get<std::uint64_t>() >= draw.mesh.vertexCount()) {
         throw SceneError(placeOf(placeOf(place, "indices"), std::to_string(i)),
-                         "expected an index below " + std::to_string(draw.vertices.size()));
+                         "expected an index below " + std::to_string(draw.mesh.vertexCount()));
       }
       draw.indices.push_back(index.get<std::uint32_t>());
     }

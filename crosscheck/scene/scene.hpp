@@ -11,7 +11,8 @@
 #include <softraster/state.hpp>
 #include <softraster/status.hpp>
 
-#include <vertex_color.hpp>
+#include <draw_inputs.hpp>
+#include <shading_models.hpp>
 
 #include <cstdint>
 #include <filesystem>
@@ -20,13 +21,13 @@
 
 namespace crosscheck {
 
-enum class ShadingModel { VertexColor, VertexColorFlat, VertexColorNoPerspective };
-
+// One draw: a mesh in model-neutral form, drawn with the pipeline state and the shading model
+// (a row of shaders/shading_models.hpp) the scene file names.
 struct Draw {
   std::string name;
-  ShadingModel shading = ShadingModel::VertexColor;
+  const shaders::ShadingModel* shading = nullptr;  // never null in a loaded scene
   softraster::PipelineState state;
-  std::vector<shaders::VertexColorVertex> vertices;
+  shaders::Mesh mesh;                   // positions and a colour per vertex
   bool indexed = true;                  // false: vertices are drawn in order (vkCmdDraw)
   float pointSize = 1.0f;               // the shader's gl_PointSize (a uniform)
   std::vector<std::uint32_t> indices;
