@@ -12,8 +12,8 @@
 //   2. shaders/CMakeLists.txt: one compile_shader_pair line;
 //   3. shaders/shading_models.cpp: one row in kModels (and #include "NAME.hpp" for a new twin);
 //   4. scenes/README.md: the name in the `shading` row.
-// (A model that reads a mesh attribute no model read before also adds it to draw_inputs.hpp and
-// to crosscheck's scene parser, scene/scene.cpp.)
+// (A model that reads a mesh attribute or a per-draw value no model read before also adds it to
+// draw_inputs.hpp and to what fills it in crosscheck: scene/scene.cpp, render/render.cpp.)
 // Deliberately no virtual classes and no registry: the table is a constant array, a row is data
 // and function pointers, and the per-pixel work stays inside softraster's template over the twin.
 #pragma once

@@ -1,6 +1,7 @@
 // The text a conformance run prints: one line per scene (as each finishes), the progress line
 // for a terminal, the closing summary (failures with their metrics next to the limits, the
-// slowest scenes) and the counts line last. Everything here reads results (results.hpp) only.
+// slowest scenes) and the counts line last. The writers read results (results.hpp) and nothing
+// else: a run's RunResults, or one SceneResult as it finishes.
 // Deliberately returns strings and prints nothing: the command decides where each goes.
 #pragma once
 

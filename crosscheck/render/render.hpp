@@ -1,5 +1,7 @@
 // Renders a Scene with either renderer into a Frame: RGBA8 colour and float depth, row 0 at the
-// top. Both adapters hand the renderers the same vertices, indices, matrices and PipelineState.
+// top. Both adapters hand the renderers the same vertices and uniforms (made by each draw's row
+// of shaders/shading_models.hpp), indices, matrices and PipelineState, and time one span each
+// (Frame::milliseconds). openVulkan is the one place a vkref::Renderer is opened.
 // Deliberately no caching between frames: one call, one frame.
 #pragma once
 

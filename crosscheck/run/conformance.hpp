@@ -4,6 +4,7 @@
 // order whatever order they finished in. A scene that cannot be loaded, a renderer that returns
 // an error, a validation message (with validation on) or an exception becomes Crash with one
 // line of error, and the run goes on.
+// Its scenes' records are RunResults::scenes (results/results.hpp).
 // Deliberately in-process: a renderer that crashes the process (a signal) ends the run; there is
 // no subprocess isolation, no retry and no timeout per scene.
 #pragma once

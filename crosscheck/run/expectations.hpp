@@ -1,7 +1,7 @@
 // Expectations file: the known results of scenes, so a run fails only on something new.
 // One scene per line, `NAME,STATUS # reason`: NAME is the scene's name (its file stem, e.g.
-// `room`), STATUS one of Pass, Fail, Crash, Skip. Blank lines and lines that start with '#' are
-// comments; the reason is optional but recommended. Format: scenes/README.md.
+// `room`), STATUS one of the Outcomes Pass, Fail, Crash, Skip. Blank lines and lines that start
+// with '#' are comments; the reason is optional but recommended. Format: scenes/README.md.
 // Deliberately no wildcards and no per-metric expectations: a known failure is a whole scene.
 #pragma once
 

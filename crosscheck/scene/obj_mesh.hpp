@@ -1,5 +1,6 @@
 // OBJ meshes through tinyobjloader: positions, faces (polygons split as a fan: (a,b,c),(a,c,d)...)
-// and a colour per vertex from the face's material (Kd), the OBJ vertex colour, or a fallback.
+// and a colour per vertex from the face's material (Kd), the OBJ vertex colour, or a fallback,
+// as a model-neutral shaders::Mesh.
 // Deliberately ignores normals and texture coordinates until a shading model reads them.
 #pragma once
 

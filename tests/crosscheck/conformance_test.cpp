@@ -1,12 +1,12 @@
 // The conformance runner's parts: suite collection, sharding, expectations files, statuses (with
 // the softraster renderer replaced to produce a real failure, an error and an exception), counts,
 // the text summary and the JUnit writer. The command line is tested in conformance_cli_test.sh.
-#include "run/conformance.hpp"
-#include "run/expectations.hpp"
 #include "output/junit.hpp"
 #include "output/markup.hpp"
-#include "run/suite.hpp"
 #include "output/summary.hpp"
+#include "run/conformance.hpp"
+#include "run/expectations.hpp"
+#include "run/suite.hpp"
 
 #include <gtest/gtest.h>
 

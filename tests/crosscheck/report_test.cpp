@@ -2,8 +2,8 @@
 // images, nothing from the network), the images written per scene, and the value readout's pixel
 // data decoded back to the frames' exact bytes. The page in a real browser: report_chromium_test.sh.
 #include "output/artifacts.hpp"
-#include "run/conformance.hpp"
 #include "output/report/report.hpp"
+#include "run/conformance.hpp"
 
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>

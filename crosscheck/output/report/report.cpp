@@ -2,8 +2,8 @@
 #include "output/report/report.hpp"
 
 #include "output/markup.hpp"
-#include "report_assets.hpp"
 #include "output/summary.hpp"
+#include "report_assets.hpp"  // generated from report.css and report.js
 
 #include <nlohmann/json.hpp>
 #include <zlib.h>
