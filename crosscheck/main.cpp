@@ -1,28 +1,22 @@
-// crosscheck: the command-line tool. Renders scenes with softraster and with Vulkan (lavapipe),
-// compares them within each scene's tolerance and writes the images.
+// crosscheck: the command line. Renders scenes with softraster and with Vulkan (lavapipe),
+// compares them within each scene's tolerance and writes the images:
 //   crosscheck render SCENE --renderer soft|vulkan -o OUT.png [--depth-out OUT.png]
 //   crosscheck compare SCENE [--out DIR] [--json]
 //   crosscheck conformance [SCENE|DIR ...] [--expectations FILE] [--jobs N] [--shard I/N] [--junit FILE] [--out DIR]
 //   crosscheck report [SCENE|DIR ...] -o DIR [--expectations FILE] [--jobs N] [--shard I/N] [--junit FILE]
 // Exit status: 0 success / within tolerance / nothing unexpected, 1 outside tolerance, a failed
 // render or an unexpected conformance result, 2 bad usage.
-#include "compare.hpp"
-#include "conformance_cli.hpp"
-#include "image_io.hpp"
-#include "render.hpp"
-#include "scene.hpp"
+// This file only sets up CLI11 and hands the parsed options to one subcommand in cli/
+// (cli/commands.hpp); a parse error is exit status 2 with the usage below.
+#include "cli/commands.hpp"
 
 #include <CLI/CLI.hpp>
-#include <nlohmann/json.hpp>
 
-#include <cmath>
 #include <cstdio>
-#include <iostream>
-#include <memory>
+#include <string>
+#include <vector>
 
 namespace {
-
-using namespace crosscheck;
 
 constexpr const char* kUsage =
     "usage: crosscheck render SCENE --renderer soft|vulkan -o OUT.png [--depth-out OUT.png]\n"
@@ -32,7 +26,8 @@ constexpr const char* kUsage =
     "       crosscheck report [SCENE|DIR ...] -o DIR [--expectations FILE] [--jobs N] [--shard I/N] [--junit FILE]\n"
     "       (crosscheck SUBCOMMAND --help for every option)";
 
-struct CommonOptions {
+// Flags several subcommands share, as typed.
+struct CommonFlags {
   std::vector<std::string> overrides;
   std::string device;
   bool validation = false;
@@ -45,82 +40,23 @@ struct CommonOptions {
     if (softrasterDepth == "inverse-z") options.depthMode = softraster::DepthMode::InverseZ;
     return options;
   }
+  vkref::DeviceOptions deviceOptions() const {
+    vkref::DeviceOptions options;
+    options.deviceName = device;
+    options.validation = validation;
+    return options;
+  }
+  crosscheck::cli::SceneOptions sceneOptions(const std::string& scene) const {
+    return {scene, overrides, deviceOptions(), softraster()};
+  }
 };
-
-std::unique_ptr<vkref::Renderer> openVulkan(const CommonOptions& options, std::string* error) {
-  vkref::DeviceOptions device;
-  device.deviceName = options.device;
-  device.validation = options.validation;
-  auto renderer = vkref::Renderer::create(device);
-  if (!renderer) *error = renderer.error();
-  return renderer ? std::move(*renderer) : nullptr;
-}
-
-std::optional<Frame> renderWith(const std::string& renderer, const Scene& scene, const CommonOptions& options,
-                                std::string* error) {
-  if (renderer == "soft") return renderSoftraster(scene, error, options.softraster());
-  auto vulkan = openVulkan(options, error);
-  if (!vulkan) return std::nullopt;
-  return renderVulkan(scene, *vulkan, error);
-}
-
-bool writeDepthView(const std::string& path, const Frame& frame, const Scene& scene, const std::vector<float>& range,
-                    std::string* error) {
-  const float lo = range.size() == 2 ? range[0] : 0.0f, hi = range.size() == 2 ? range[1] : 0.0f;
-  return writePng(path, frame.width, frame.height, depthToGrey(frame.depth, scene.clearDepth, lo, hi), error);
-}
-
-nlohmann::json toJson(const Scene& scene, const Comparison& c, const Frame& soft, const Frame& vulkan) {
-  auto finite = [](double v) -> nlohmann::json { return std::isfinite(v) ? nlohmann::json(v) : nlohmann::json(nullptr); };
-  return {{"scene", scene.path.string()},
-          {"passed", c.passed()},
-          {"pixels", c.pixels},
-          {"coverage_mismatches", c.coverageMismatches},
-          {"colour_max_delta", c.colourMaxDelta},
-          {"colour_mean_delta", c.colourMeanDelta},
-          {"colour_pixels_over", c.colourPixelsOver},
-          {"psnr", finite(c.psnr)},
-          {"depth_max_delta", c.depthMaxDelta},
-          {"depth_pixels_over", c.depthPixelsOver},
-          {"failures", c.failures},
-          {"tolerance",
-           {{"colour", scene.tolerance.colourThreshold},
-            {"depth", scene.tolerance.depthThreshold},
-            {"coverage_mismatches", scene.tolerance.maxCoverageMismatches},
-            {"colour_pixels_over", scene.tolerance.maxColourPixelsOver},
-            {"depth_pixels_over", scene.tolerance.maxDepthPixelsOver}}},
-          {"milliseconds", {{"soft", soft.milliseconds}, {"vulkan", vulkan.milliseconds}}}};
-}
-
-void printText(const Scene& scene, const Comparison& c, const Frame& soft, const Frame& vulkan) {
-  std::printf("%s: %s\n", scene.path.string().c_str(), c.passed() ? "PASS" : "FAIL");
-  std::printf("  coverage mismatches  %llu (max %llu)\n", static_cast<unsigned long long>(c.coverageMismatches),
-              static_cast<unsigned long long>(scene.tolerance.maxCoverageMismatches));
-  std::printf("  colour max |d| RGBA  %d %d %d %d\n", c.colourMaxDelta[0], c.colourMaxDelta[1], c.colourMaxDelta[2],
-              c.colourMaxDelta[3]);
-  std::printf("  colour mean |d| RGBA %.6f %.6f %.6f %.6f\n", c.colourMeanDelta[0], c.colourMeanDelta[1],
-              c.colourMeanDelta[2], c.colourMeanDelta[3]);
-  std::printf("  colour pixels over   %llu (threshold %d, max %llu)\n", static_cast<unsigned long long>(c.colourPixelsOver),
-              scene.tolerance.colourThreshold, static_cast<unsigned long long>(scene.tolerance.maxColourPixelsOver));
-  std::printf("  PSNR                 %s\n", std::isfinite(c.psnr) ? std::to_string(c.psnr).c_str() : "inf (identical)");
-  std::printf("  depth max |d|        %.9g\n", c.depthMaxDelta);
-  std::printf("  depth pixels over    %llu (threshold %.9g, max %llu)\n", static_cast<unsigned long long>(c.depthPixelsOver),
-              scene.tolerance.depthThreshold, static_cast<unsigned long long>(scene.tolerance.maxDepthPixelsOver));
-  std::printf("  time soft %.2f ms, vulkan %.2f ms\n", soft.milliseconds, vulkan.milliseconds);
-  for (const std::string& f : c.failures) std::printf("  over tolerance: %s\n", f.c_str());
-}
-
-int fail(const std::string& message) {
-  std::fprintf(stderr, "crosscheck: %s\n", message.c_str());
-  return 1;
-}
 
 }  // namespace
 
 int main(int argc, char** argv) {
   CLI::App app{"crosscheck: softraster against Vulkan (lavapipe), scene by scene"};
   app.require_subcommand(1);
-  CommonOptions common;
+  CommonFlags common;
   auto addDevice = [&](CLI::App* cmd) {
     cmd->add_option("--device", common.device, "Vulkan device name substring (default: lavapipe)");
     cmd->add_flag("--validation", common.validation, "Enable VK_LAYER_KHRONOS_validation (in a suite, a message makes the scene Crash)");
@@ -157,7 +93,8 @@ int main(int argc, char** argv) {
   compare->add_flag("--json", json, "Print one JSON object instead of text");
   addCommon(compare);
 
-  ConformanceCommand suite;
+  crosscheck::cli::SuiteCommand suite;
+  std::string reportDir;
   int jobs = 1;
   const auto addSuite = [&](CLI::App* cmd) {
     cmd->add_option("SCENES", suite.inputs,
@@ -173,11 +110,11 @@ int main(int argc, char** argv) {
   CLI::App* conformance =
       app.add_subcommand("conformance", "Cross-check every scene of a suite; exit 0 when nothing unexpected happened");
   addSuite(conformance);
-  conformance->add_option("--out", suite.outDir, "Write soft/vulkan/diff/depth PNGs to DIR/<scene>/");
+  conformance->add_option("--out", outDir, "Write soft/vulkan/diff/depth PNGs to DIR/<scene>/");
   CLI::App* reportCommand =
       app.add_subcommand("report", "Run the suite like conformance and write an HTML report to DIR/index.html");
   addSuite(reportCommand);
-  reportCommand->add_option("-o,--output", suite.reportDir, "Report directory")->required();
+  reportCommand->add_option("-o,--output", reportDir, "Report directory")->required();
 
   try {
     app.parse(argc, argv);
@@ -188,47 +125,14 @@ int main(int argc, char** argv) {
     return 2;
   }
 
-  if (conformance->parsed() || reportCommand->parsed()) {
-    suite.jobs = static_cast<unsigned>(jobs);
-    suite.device.deviceName = common.device;
-    suite.device.validation = common.validation;
-    suite.softraster = common.softraster();
-    for (int i = 0; i < argc; ++i) suite.commandLine += (i ? " " : "") + std::string(argv[i]);
-    return runConformanceCommand(suite);
-  }
-
-  std::string error;
-  const auto scene = loadScene(scenePath, &error, common.overrides);
-  if (!scene) return fail(error);
-
   if (render->parsed()) {
-    const auto frame = renderWith(renderer, *scene, common, &error);
-    if (!frame) return fail(error);
-    if (!writePng(output, frame->width, frame->height, frame->rgba, &error)) return fail(error);
-    if (!depthOutput.empty() && !writeDepthView(depthOutput, *frame, *scene, depthRange, &error)) return fail(error);
-    return 0;
+    return crosscheck::cli::renderCommand({common.sceneOptions(scenePath), renderer, output, depthOutput, depthRange});
   }
-
-  const auto soft = renderSoftraster(*scene, &error, common.softraster());
-  if (!soft) return fail(error);
-  auto vulkan = openVulkan(common, &error);
-  if (!vulkan) return fail(error);
-  const auto reference = renderVulkan(*scene, *vulkan, &error);
-  if (!reference) return fail(error);
-  const Comparison result = compareFrames(*soft, *reference, *scene);
-  if (!outDir.empty()) {
-    const std::filesystem::path dir(outDir);
-    const bool written = writePng(dir / "soft.png", soft->width, soft->height, soft->rgba, &error) &&
-                         writePng(dir / "vulkan.png", reference->width, reference->height, reference->rgba, &error) &&
-                         writePng(dir / "diff.png", soft->width, soft->height, diffHeatmap(*soft, *reference, *scene), &error) &&
-                         writeDepthView((dir / "soft.depth.png").string(), *soft, *scene, {}, &error) &&
-                         writeDepthView((dir / "vulkan.depth.png").string(), *reference, *scene, {}, &error);
-    if (!written) return fail(error);
-  }
-  if (json) {
-    std::cout << toJson(*scene, result, *soft, *reference).dump() << "\n";
-  } else {
-    printText(*scene, result, *soft, *reference);
-  }
-  return result.passed() ? 0 : 1;
+  if (compare->parsed()) return crosscheck::cli::compareCommand({common.sceneOptions(scenePath), outDir, json});
+  suite.jobs = static_cast<unsigned>(jobs);
+  suite.device = common.deviceOptions();
+  suite.softraster = common.softraster();
+  for (int i = 0; i < argc; ++i) suite.commandLine += (i ? " " : "") + std::string(argv[i]);
+  if (reportCommand->parsed()) return crosscheck::cli::reportCommand(suite, reportDir);
+  return crosscheck::cli::conformanceCommand(suite, outDir);
 }

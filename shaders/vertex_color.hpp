@@ -1,8 +1,12 @@
 // vertex_color: unlit, the vertex colour interpolated across the primitive.
 // The C++ twin of vertex_color.vert / vertex_color.frag; keep the three files reading alike.
 // The template parameter is the varying's qualifier, as INTERPOLATION is in the GLSL.
+// vertexFrom and uniformsFrom say what it reads of a scene's draw (draw_inputs.hpp), for the
+// table of shading models (shading_models.hpp); softraster itself needs only the rest.
 // Deliberately no lighting and no texture: it is the flat-colour model the first scenes need.
 #pragma once
+
+#include "draw_inputs.hpp"
 
 #include <softraster/math.hpp>
 #include <softraster/shader.hpp>
@@ -30,6 +34,9 @@ struct VertexColorShader {
       {0, 3, offsetof(Vertex, position)},
       {1, 4, offsetof(Vertex, colour)},
   }};
+
+  static Vertex vertexFrom(const Mesh& mesh, std::size_t i) { return {mesh.positions[i], mesh.colours[i]}; }
+  static Uniforms uniformsFrom(const DrawParameters& draw) { return {draw.viewProjection, draw.pointSize}; }
 
   static softraster::Vec4 vertex(const Uniforms& u, const Vertex& in, float* vColour) {
     const softraster::Mat4& m = u.modelViewProjection;

@@ -1,0 +1,83 @@
+// The four subcommands behind the command line, one file each in cli/: what each was asked for
+// (filled by main.cpp from the arguments) and the function that does it, prints its output and
+// returns the exit status.
+//   render       one scene, one renderer, PNGs                  0 written, 1 an error
+//   compare      one scene, both renderers, text or JSON        0 within tolerance, 1 outside or an error
+//   conformance  a suite of scenes, one line each, JUnit, PNGs  0 nothing unexpected, 1 something
+//   report       the conformance run plus DIR/index.html        as conformance
+// 2 is bad usage everywhere (main.cpp's parse errors; the suite commands' unreadable
+// expectations, shards, folders or output paths).
+// Errors print as one line, "crosscheck: ..." on stderr.
+// Deliberately no argument parsing here (main.cpp does that with CLI11) and no rendering or
+// formatting of their own: each command strings together scene/, render/, compare/, run/ and
+// output/.
+#pragma once
+
+#include "results/results.hpp"
+
+#include <softraster/pipeline.hpp>
+#include <softraster/status.hpp>
+#include <vkref/renderer.hpp>
+
+#include <functional>
+#include <string>
+#include <vector>
+
+namespace crosscheck::cli {
+
+// Options the single-scene commands share.
+struct SceneOptions {
+  std::string scene;                    // the scene file
+  std::vector<std::string> overrides;   // --set KEY.PATH=VALUE
+  vkref::DeviceOptions device;
+  softraster::ContextOptions softraster;
+};
+
+struct RenderCommand {
+  SceneOptions options;
+  std::string renderer = "soft";        // soft or vulkan
+  std::string output;                   // colour PNG
+  std::string depthOutput;              // depth view PNG; empty: none
+  std::vector<float> depthRange;        // LO HI mapped to black..white; empty: the image's own range
+};
+int renderCommand(const RenderCommand& command);
+
+struct CompareCommand {
+  SceneOptions options;
+  std::string outDir;                   // soft, vulkan, diff and depth PNGs; empty: none
+  bool json = false;
+};
+int compareCommand(const CompareCommand& command);
+
+// Options the suite commands (conformance, report) share.
+struct SuiteCommand {
+  std::vector<std::string> inputs;      // scene files and directories; empty: scenes/
+  std::string expectationsFile;
+  unsigned jobs = 1;
+  std::string shard;                    // "I/N", 1-based; empty: the whole suite
+  std::string junitFile;
+  vkref::DeviceOptions device;
+  softraster::ContextOptions softraster;
+  std::string commandLine;              // shown in the report
+};
+// outDir: conformance --out, per-scene PNGs; empty: none.
+int conformanceCommand(const SuiteCommand& command, const std::string& outDir);
+// reportDir: report -o, index.html with its PNGs and pixel data.
+int reportCommand(const SuiteCommand& command, const std::string& reportDir);
+
+// The suite run both suite commands are (conformance.cpp; report.cpp adds the page): check the
+// arguments, run, print a line per scene in suite order (and a progress line when stderr is a
+// terminal), write JUnit and what `outputs` adds, print the summary and, last,
+// "N passed, N failed[, N skipped]".
+struct SuiteOutputs {
+  std::string name;                     // "conformance" or "report", in the first line
+  std::string imageDir;                 // per-scene PNGs in imageDir/<scene>/; empty: none
+  bool pixelData = false;               // and pixels.js beside them (the report's value readout)
+  std::function<softraster::Status(const RunResults&)> write;  // after the run (the report page); may be empty
+  // Printed after the summary's JUnit line: always when `write` is empty, else only when
+  // everything was written.
+  std::string doneLine;
+};
+int runSuite(const SuiteCommand& command, const SuiteOutputs& outputs);
+
+}  // namespace crosscheck::cli

@@ -1,0 +1,137 @@
+// Frame comparison and the diff heatmaps (see compare.hpp).
+#include "compare/compare.hpp"
+
+#include <algorithm>
+#include <bit>
+#include <cmath>
+#include <cstdlib>
+#include <limits>
+
+namespace crosscheck {
+namespace {
+
+std::array<std::uint8_t, 4> clearColourBytes(const Scene& scene) {
+  auto toByte = [](float v) {
+    const float c = v > 0.0f ? (v < 1.0f ? v : 1.0f) : 0.0f;
+    return static_cast<std::uint8_t>(std::nearbyint(c * 255.0f));
+  };
+  return {toByte(scene.clearColour.x), toByte(scene.clearColour.y), toByte(scene.clearColour.z),
+          toByte(scene.clearColour.w)};
+}
+
+bool covered(const Frame& f, std::size_t i, const std::array<std::uint8_t, 4>& clear, std::uint32_t clearDepth) {
+  return f.depthStorage[i] != clearDepth || !std::equal(clear.begin(), clear.end(), f.rgba.begin() + static_cast<std::ptrdiff_t>(4 * i));
+}
+
+// |a - b| of two stored depths, in depth units ([0, 1] range): whole steps of 1/(2^n - 1) for
+// UNORM formats, the float difference for D32_SFLOAT (infinite where only one side is NaN).
+double depthDelta(std::uint32_t a, std::uint32_t b, softraster::DepthFormat format) {
+  const int bits = softraster::unormDepthBits(format);
+  if (bits != 0) {
+    const auto steps = a > b ? a - b : b - a;
+    return static_cast<double>(steps) / static_cast<double>((1u << bits) - 1);
+  }
+  const float za = std::bit_cast<float>(a), zb = std::bit_cast<float>(b);
+  const bool nanA = std::isnan(za), nanB = std::isnan(zb);
+  if (nanA || nanB) return nanA && nanB ? 0.0 : std::numeric_limits<double>::infinity();
+  return std::fabs(double{za} - double{zb});
+}
+
+}  // namespace
+
+Comparison compareFrames(const Frame& a, const Frame& b, const Scene& scene) {
+  Comparison c;
+  if (a.width != b.width || a.height != b.height || a.depthFormat != b.depthFormat) {
+    c.failures.push_back("image sizes or depth formats differ");
+    return c;
+  }
+  const Tolerance& tol = scene.tolerance;
+  const auto clear = clearColourBytes(scene);
+  const std::uint32_t clearDepth = softraster::depthClearValue(scene.depthFormat, scene.clearDepth);
+  c.pixels = static_cast<std::uint64_t>(a.width) * a.height;
+  std::array<std::uint64_t, 4> sums{};
+  double squaredErrorRgb = 0;
+  for (std::size_t i = 0; i < c.pixels; ++i) {
+    if (covered(a, i, clear, clearDepth) != covered(b, i, clear, clearDepth)) ++c.coverageMismatches;
+    bool over = false;
+    for (int ch = 0; ch < 4; ++ch) {
+      const int d = std::abs(int{a.rgba[4 * i + ch]} - int{b.rgba[4 * i + ch]});
+      c.colourMaxDelta[ch] = std::max(c.colourMaxDelta[ch], d);
+      sums[ch] += static_cast<std::uint64_t>(d);
+      if (ch < 3) squaredErrorRgb += double(d) * d;
+      over = over || d > tol.colourThreshold;
+    }
+    if (over) ++c.colourPixelsOver;
+    const double dz = depthDelta(a.depthStorage[i], b.depthStorage[i], a.depthFormat);
+    c.depthMaxDelta = std::max(c.depthMaxDelta, dz);
+    if (dz > tol.depthThreshold) ++c.depthPixelsOver;
+  }
+  for (int ch = 0; ch < 4; ++ch) c.colourMeanDelta[ch] = double(sums[ch]) / double(c.pixels);
+  const double mse = squaredErrorRgb / (3.0 * double(c.pixels));
+  c.psnr = mse == 0 ? std::numeric_limits<double>::infinity() : 10.0 * std::log10(255.0 * 255.0 / mse);
+  c.failures = limitFailures(c, tol);
+  return c;
+}
+
+std::uint64_t coveredPixels(const Frame& frame, const Scene& scene) {
+  const auto clear = clearColourBytes(scene);
+  const std::uint32_t clearDepth = softraster::depthClearValue(scene.depthFormat, scene.clearDepth);
+  std::uint64_t count = 0;
+  for (std::size_t i = 0; i < frame.depthStorage.size(); ++i) count += covered(frame, i, clear, clearDepth);
+  return count;
+}
+
+std::vector<std::uint8_t> diffHeatmap(const Frame& a, const Frame& b, const Scene& scene) {
+  const std::size_t pixels = static_cast<std::size_t>(a.width) * a.height;
+  std::vector<std::uint8_t> out(4 * pixels, 0);
+  const auto clear = clearColourBytes(scene);
+  const std::uint32_t clearDepth = softraster::depthClearValue(scene.depthFormat, scene.clearDepth);
+  for (std::size_t i = 0; i < pixels; ++i) {
+    std::uint8_t* p = &out[4 * i];
+    p[3] = 255;
+    if (covered(a, i, clear, clearDepth) != covered(b, i, clear, clearDepth)) {
+      p[0] = 255, p[1] = 0, p[2] = 255;
+      continue;
+    }
+    int d = 0;
+    for (int ch = 0; ch < 4; ++ch) d = std::max(d, std::abs(int{a.rgba[4 * i + ch]} - int{b.rgba[4 * i + ch]}));
+    if (d == 0) continue;
+    if (d <= scene.tolerance.colourThreshold) {
+      p[2] = 255;
+    } else {
+      p[0] = 255;
+      p[1] = static_cast<std::uint8_t>(std::min(255, d * 2));
+    }
+  }
+  return out;
+}
+
+std::vector<std::uint8_t> depthDiffHeatmap(const Frame& a, const Frame& b, const Scene& scene) {
+  const std::size_t pixels = static_cast<std::size_t>(a.width) * a.height;
+  std::vector<std::uint8_t> out(4 * pixels, 0);
+  const double threshold = scene.tolerance.depthThreshold;
+  for (std::size_t i = 0; i < pixels; ++i) {
+    std::uint8_t* p = &out[4 * i];
+    p[3] = 255;
+    const float za = a.depth[i], zb = b.depth[i];
+    if (std::isnan(za) || std::isnan(zb)) {
+      if (std::isnan(za) != std::isnan(zb)) p[0] = 255, p[2] = 255;
+      continue;
+    }
+    const double d = std::fabs(double{za} - double{zb});
+    if (d == 0) continue;
+    if (d <= threshold) {
+      p[2] = 255;
+      continue;
+    }
+    // Over the threshold: 0 at the threshold .. 1 at 2^16 times it (log2), red to yellow; with a
+    // threshold of 0 the scale starts at 2^-24 (one step of float depth just below 1).
+    const double base = threshold > 0 ? threshold : 0x1p-24;
+    const double t = std::clamp(std::log2(d / base) / 16.0, 0.0, 1.0);
+    p[0] = 255;
+    p[1] = static_cast<std::uint8_t>(std::lround(64 + t * 191));
+  }
+  return out;
+}
+
+}  // namespace crosscheck

@@ -1,0 +1,35 @@
+// Image comparison of two Frames of one scene, within the scene's Tolerance: the metrics
+// (metrics.hpp) and the two difference heatmaps.
+// Coverage: a pixel is covered in a frame when its colour or depth differs from the clear
+// values; a coverage mismatch is a pixel covered in one frame only. (A fragment that writes
+// exactly the clear colour with depth writes off is invisible to this test.)
+// Deliberately no perceptual metric and no position-deviation tolerance: the exact method is
+// held to the bit, and edge differences are counted, not forgiven.
+#pragma once
+
+#include "compare/metrics.hpp"
+#include "render/render.hpp"
+#include "scene/scene.hpp"
+
+#include <cstdint>
+#include <vector>
+
+namespace crosscheck {
+
+// Measures the differences and checks them against scene.tolerance (limitFailures).
+Comparison compareFrames(const Frame& result, const Frame& reference, const Scene& scene);
+
+// Pixels covered in a frame (colour or depth differs from the scene's clear values).
+std::uint64_t coveredPixels(const Frame& frame, const Scene& scene);
+
+// RGBA8 heatmap of the difference: black where equal, blue up to the colour threshold, red to
+// yellow above it by magnitude, magenta where coverage differs.
+std::vector<std::uint8_t> diffHeatmap(const Frame& result, const Frame& reference, const Scene& scene);
+
+// RGBA8 heatmap of the depth difference: black where equal, blue up to the depth threshold, red
+// to yellow above it (yellow at 2^16 times the threshold and beyond, on a log scale; a threshold
+// of 0 counts from 2^-24), magenta
+// where one depth is NaN and the other is not.
+std::vector<std::uint8_t> depthDiffHeatmap(const Frame& result, const Frame& reference, const Scene& scene);
+
+}  // namespace crosscheck

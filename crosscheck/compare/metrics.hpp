@@ -1,0 +1,33 @@
+// Comparison: what comparing two frames of a scene measured (coverage, colour and depth
+// differences, PSNR) and which of the scene's limits it broke. A plain record, so a run's results
+// can keep it after the frames are gone; compare.hpp measures it.
+// Deliberately no verdict beyond the limits: expectations turn it into an Outcome (run/).
+#pragma once
+
+#include "scene/tolerance.hpp"
+
+#include <array>
+#include <cstdint>
+#include <string>
+#include <vector>
+
+namespace crosscheck {
+
+struct Comparison {
+  std::uint64_t pixels = 0;
+  std::uint64_t coverageMismatches = 0;
+  std::array<int, 4> colourMaxDelta{};       // per channel R, G, B, A, in 8-bit steps
+  std::array<double, 4> colourMeanDelta{};   // per channel, over all pixels
+  std::uint64_t colourPixelsOver = 0;        // any channel over the colour threshold
+  double psnr = 0;                           // over RGB; +inf when identical
+  double depthMaxDelta = 0;
+  std::uint64_t depthPixelsOver = 0;
+  std::vector<std::string> failures;         // each "metric value > limit"; empty when passed
+  bool passed() const { return failures.empty(); }
+};
+
+// The limits of `tolerance` the measured counts exceed, each "metric value > limit", in the order
+// coverage_mismatches, colour_pixels_over, depth_pixels_over.
+std::vector<std::string> limitFailures(const Comparison& measured, const Tolerance& tolerance);
+
+}  // namespace crosscheck

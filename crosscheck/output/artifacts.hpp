@@ -1,0 +1,39 @@
+// The images of one compared scene, written as PNG files into one folder while its frames exist:
+// soft.png, vulkan.png, diff.png (diffHeatmap), soft.depth.png and vulkan.depth.png (both depth
+// buffers mapped to grey over one shared range, so equal depths look equal) and depth.diff.png
+// (depthDiffHeatmap); the runner's scenes record what was written. Also the compare command's
+// five images and the render command's depth view.
+// Deliberately PNG only and nothing about how a page shows them (that is report/report.hpp).
+#pragma once
+
+#include "render/render.hpp"
+#include "results/results.hpp"
+#include "scene/scene.hpp"
+
+#include <softraster/status.hpp>
+
+#include <filesystem>
+#include <utility>
+
+namespace crosscheck {
+
+// The depth range both depth views use: the smallest and largest depth that differs from the
+// clear depth in either frame. When all drawn depths are one value, the range runs from it to the
+// clear depth (so the drawing stands out); (0, 1) when nothing was drawn.
+std::pair<float, float> sharedDepthRange(const Frame& soft, const Frame& vulkan, float clearDepth);
+
+// Writes the six images into root / folder and records them (and the depth range) in *result.
+// The error is "FILE: cannot write PNG".
+softraster::Status writeSceneImages(const std::filesystem::path& root, const std::filesystem::path& folder,
+                                    SceneResult* result, const Scene& scene, const Frame& soft, const Frame& vulkan);
+
+// The compare command's --out DIR: soft.png, vulkan.png, diff.png, and soft.depth.png and
+// vulkan.depth.png each over its own range (depthToGrey's default); no depth difference.
+softraster::Status writeCompareImages(const std::filesystem::path& dir, const Scene& scene, const Frame& soft,
+                                      const Frame& vulkan);
+
+// One frame's depth view as grey PNG over [lo, hi] (lo >= hi: the frame's own range).
+softraster::Status writeDepthView(const std::filesystem::path& path, const Frame& frame, float clearDepth, float lo,
+                                  float hi);
+
+}  // namespace crosscheck

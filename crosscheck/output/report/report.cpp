@@ -1,0 +1,352 @@
+// The HTML report and its pixel data (see report.hpp).
+#include "output/report/report.hpp"
+
+#include "output/markup.hpp"
+#include "output/summary.hpp"
+#include "report_assets.hpp"  // generated from report.css and report.js
+
+#include <nlohmann/json.hpp>
+#include <zlib.h>
+
+#include <algorithm>
+#include <bit>
+#include <cmath>
+#include <cstdio>
+#include <limits>
+#include <numeric>
+#include <tuple>
+
+namespace crosscheck {
+namespace {
+
+std::string base64(const std::vector<std::uint8_t>& bytes) {
+  static constexpr char kAlphabet[] = "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789+/";
+  std::string out;
+  out.reserve((bytes.size() + 2) / 3 * 4);
+  for (std::size_t i = 0; i < bytes.size(); i += 3) {
+    const std::uint32_t b0 = bytes[i], b1 = i + 1 < bytes.size() ? bytes[i + 1] : 0, b2 = i + 2 < bytes.size() ? bytes[i + 2] : 0;
+    const std::uint32_t triple = (b0 << 16) | (b1 << 8) | b2;
+    out += kAlphabet[(triple >> 18) & 63];
+    out += kAlphabet[(triple >> 12) & 63];
+    out += i + 1 < bytes.size() ? kAlphabet[(triple >> 6) & 63] : '=';
+    out += i + 2 < bytes.size() ? kAlphabet[triple & 63] : '=';
+  }
+  return out;
+}
+
+// zlib format (what DecompressionStream('deflate') reads).
+std::vector<std::uint8_t> compressed(const std::vector<std::uint8_t>& bytes) {
+  uLongf size = compressBound(static_cast<uLong>(bytes.size()));
+  std::vector<std::uint8_t> out(size);
+  if (compress2(out.data(), &size, bytes.data(), static_cast<uLong>(bytes.size()), 6) != Z_OK) return {};
+  out.resize(size);
+  return out;
+}
+
+std::vector<std::uint8_t> littleEndian(const std::vector<float>& values) {
+  std::vector<std::uint8_t> bytes(values.size() * 4);
+  for (std::size_t i = 0; i < values.size(); ++i) {
+    const auto bits = std::bit_cast<std::uint32_t>(values[i]);
+    for (int b = 0; b < 4; ++b) bytes[4 * i + b] = static_cast<std::uint8_t>(bits >> (8 * b));
+  }
+  return bytes;
+}
+
+std::string fixed(const char* pattern, double value) {
+  char buffer[64];
+  std::snprintf(buffer, sizeof buffer, pattern, value);
+  return buffer;
+}
+
+int outcomeRank(Outcome s) {
+  switch (s) {
+    case Outcome::Crash: return 0;
+    case Outcome::Fail: return 1;
+    case Outcome::UnexpectedPass: return 2;
+    case Outcome::ExpectedFail: return 3;
+    case Outcome::Pass: return 4;
+    case Outcome::Skip: return 5;
+  }
+  return 6;
+}
+
+std::string e(std::string_view text) { return escapeMarkup(text); }
+
+std::string url(const std::filesystem::path& relative) { return e(encodeUrlPath(relative.generic_string())); }
+
+const SceneImage* imageOf(const SceneResult& r, std::string_view kind) {
+  for (const SceneImage& image : r.images) {
+    if (image.kind == kind) return &image;
+  }
+  return nullptr;
+}
+
+// One numeric table cell: data-v for sorting, the shown text, and "over" when past its limit.
+std::string numberCell(double sortValue, const std::string& shown, bool over, const std::string& title = "") {
+  std::string v = std::isinf(sortValue) ? (sortValue > 0 ? "Infinity" : "-Infinity") : fixed("%.9g", sortValue);
+  std::string cell = "<td class=\"num" + std::string(over ? " over" : "") + "\" data-v=\"" + v + "\"";
+  if (!title.empty()) cell += " title=\"" + e(title) + "\"";
+  return cell + ">" + e(shown) + "</td>";
+}
+
+std::string emptyCell() { return "<td class=\"num none\" data-v=\"\">&#8212;</td>"; }
+
+std::string badge(Outcome s) {
+  return "<span class=\"badge st-" + std::string(outcomeName(s)) + "\">" + std::string(outcomeName(s)) + "</span>";
+}
+
+std::string rgbaText(const std::array<int, 4>& v) {
+  return std::to_string(v[0]) + " " + std::to_string(v[1]) + " " + std::to_string(v[2]) + " " + std::to_string(v[3]);
+}
+
+std::string meanText(const std::array<double, 4>& v) {
+  return fixed("%.4f", v[0]) + fixed(" %.4f", v[1]) + fixed(" %.4f", v[2]) + fixed(" %.4f", v[3]);
+}
+
+std::string psnrText(double psnr) { return std::isfinite(psnr) ? fixed("%.2f", psnr) : "\xE2\x88\x9E"; }
+
+std::string summaryRow(const SceneResult& r, std::size_t position, std::size_t rank) {
+  std::string row = "<tr class=\"st-" + std::string(outcomeName(r.outcome)) + "\" data-rank=\"" + std::to_string(rank) + "\">";
+  row += "<td data-v=\"" + std::to_string(outcomeRank(r.outcome)) + "\">" + badge(r.outcome) + "</td>";
+  row += "<td data-v=\"" + e(r.entry.name) + "\"><a href=\"#s-" + std::to_string(position) + "\">" + e(r.entry.name) + "</a></td>";
+  if (r.comparison) {
+    const Comparison& c = *r.comparison;
+    const Tolerance& t = r.tolerance;
+    const int colourMax = *std::max_element(c.colourMaxDelta.begin(), c.colourMaxDelta.end());
+    const double colourMean = *std::max_element(c.colourMeanDelta.begin(), c.colourMeanDelta.end());
+    row += numberCell(double(c.coverageMismatches), std::to_string(c.coverageMismatches),
+                      c.coverageMismatches > t.maxCoverageMismatches, "allowed: " + std::to_string(t.maxCoverageMismatches));
+    row += numberCell(colourMax, std::to_string(colourMax), colourMax > t.colourThreshold,
+                      "RGBA " + rgbaText(c.colourMaxDelta) + "; threshold " + std::to_string(t.colourThreshold));
+    row += numberCell(colourMean, fixed("%.4f", colourMean), false, "RGBA " + meanText(c.colourMeanDelta));
+    row += numberCell(c.psnr, psnrText(c.psnr), false);
+    row += numberCell(c.depthMaxDelta, fixed("%.3g", c.depthMaxDelta), c.depthMaxDelta > t.depthThreshold,
+                      fixed("threshold %.9g", t.depthThreshold));
+    row += numberCell(r.softMilliseconds, fixed("%.2f", r.softMilliseconds), false);
+    row += numberCell(r.vulkanMilliseconds, fixed("%.2f", r.vulkanMilliseconds), false);
+  } else {
+    for (int i = 0; i < 7; ++i) row += emptyCell();
+  }
+  return row + "</tr>\n";
+}
+
+std::string metricRow(const std::string& metric, const std::string& measured, const std::string& allowed, bool over) {
+  return "<tr><th>" + e(metric) + "</th><td" + (over ? " class=\"over\"" : "") + ">" + e(measured) + "</td><td>" +
+         e(allowed) + "</td></tr>";
+}
+
+std::string metricsTable(const SceneResult& r) {
+  const Tolerance& t = r.tolerance;
+  std::string rows;
+  if (r.comparison) {
+    const Comparison& c = *r.comparison;
+    rows += metricRow("coverage mismatches", std::to_string(c.coverageMismatches),
+                      "\xE2\x89\xA4 " + std::to_string(t.maxCoverageMismatches), c.coverageMismatches > t.maxCoverageMismatches);
+    rows += metricRow("colour pixels over threshold", std::to_string(c.colourPixelsOver),
+                      "\xE2\x89\xA4 " + std::to_string(t.maxColourPixelsOver), c.colourPixelsOver > t.maxColourPixelsOver);
+    rows += metricRow("colour max |\xCE\x94| RGBA", rgbaText(c.colourMaxDelta), "threshold " + std::to_string(t.colourThreshold),
+                      *std::max_element(c.colourMaxDelta.begin(), c.colourMaxDelta.end()) > t.colourThreshold);
+    rows += metricRow("colour mean |\xCE\x94| RGBA", meanText(c.colourMeanDelta), "", false);
+    rows += metricRow("PSNR (RGB, dB)", psnrText(c.psnr), "", false);
+    rows += metricRow("depth pixels over threshold", std::to_string(c.depthPixelsOver),
+                      "\xE2\x89\xA4 " + std::to_string(t.maxDepthPixelsOver), c.depthPixelsOver > t.maxDepthPixelsOver);
+    rows += metricRow("depth max |\xCE\x94|", fixed("%.9g", c.depthMaxDelta), fixed("threshold %.9g", t.depthThreshold),
+                      c.depthMaxDelta > t.depthThreshold);
+    rows += metricRow("time", fixed("softraster %.2f ms", r.softMilliseconds) + fixed(", Vulkan %.2f ms", r.vulkanMilliseconds) +
+                      fixed(", whole scene %.2f ms", r.milliseconds), "", false);
+  } else if (r.loaded) {
+    rows += metricRow("tolerance", "", "colour threshold " + std::to_string(t.colourThreshold) +
+                      fixed(", depth threshold %.9g", t.depthThreshold) + ", coverage mismatches \xE2\x89\xA4 " +
+                      std::to_string(t.maxCoverageMismatches) + ", colour pixels over \xE2\x89\xA4 " +
+                      std::to_string(t.maxColourPixelsOver) + ", depth pixels over \xE2\x89\xA4 " +
+                      std::to_string(t.maxDepthPixelsOver), false);
+  }
+  if (rows.empty()) return "";
+  return "<table class=\"metrics\"><tr><th>metric</th><th>measured</th><th>allowed</th></tr>" + rows + "</table>\n";
+}
+
+// Large images fit their box (0); small ones grow by a power of two up to about 320 pixels wide.
+std::uint32_t defaultZoom(const SceneResult& r) {
+  if (r.width > 440) return 0;
+  std::uint32_t zoom = 1;
+  while (zoom < 8 && 2 * zoom * r.width <= 320) zoom *= 2;
+  return zoom;
+}
+
+std::string figure(const SceneResult& r, std::string_view kind, const std::string& caption, const std::string& extra = "") {
+  const SceneImage* image = imageOf(r, kind);
+  if (!image) return "";
+  const std::uint32_t zoom = defaultZoom(r);
+  return "<figure><figcaption>" + caption + "</figcaption><div class=\"view" + (zoom ? " zoomed" : "") +
+         "\"><img loading=\"lazy\" decoding=\"async\" src=\"" + url(image->file) + "\" width=\"" + std::to_string(r.width) +
+         "\" height=\"" + std::to_string(r.height) + "\"" +
+         (zoom ? " style=\"width:" + std::to_string(zoom * r.width) + "px\"" : std::string()) + " alt=\"" +
+         e(caption + " of " + r.entry.name) + "\"" + extra + "><div class=\"marker\"></div></div></figure>\n";
+}
+
+// The diff heatmap's colours (diffHeatmap); `threshold` is the scene's colour threshold, or
+// "T" for the legend at the top of the page.
+std::string colourLegend(const std::string& threshold) {
+  return "<div class=\"legend\"><span><i class=\"swatch sw-equal\"></i>equal</span>"
+         "<span><i class=\"swatch sw-within\"></i>differs, |\xCE\x94| \xE2\x89\xA4 " + threshold +
+         "</span><span><i class=\"swatch sw-over\"></i>|\xCE\x94| &gt; " + threshold +
+         ", red to yellow by size (yellow at |\xCE\x94| \xE2\x89\xA5 128)</span>"
+         "<span><i class=\"swatch sw-coverage\"></i>covered by one renderer only</span></div>";
+}
+
+std::string depthLegend(double threshold) {
+  return "<div class=\"legend\"><span><i class=\"swatch sw-equal\"></i>equal</span>"
+         "<span><i class=\"swatch sw-within\"></i>|\xCE\x94z| \xE2\x89\xA4 " + e(fixed("%.3g", threshold)) +
+         "</span><span><i class=\"swatch sw-depth-over\"></i>over, log scale (yellow \xE2\x89\xA5 2<sup>16</sup>\xC3\x97 threshold)</span>"
+         "<span><i class=\"swatch sw-coverage\"></i>NaN in one only</span></div>";
+}
+
+std::string sceneSection(const SceneResult& r, std::size_t position, bool open) {
+  std::string s = "<details class=\"scene st-" + std::string(outcomeName(r.outcome)) + "\" id=\"s-" + std::to_string(position) +
+                  "\" data-name=\"" + e(r.entry.name) + "\" data-w=\"" + std::to_string(r.width) + "\" data-h=\"" +
+                  std::to_string(r.height) + "\"";
+  if (!r.pixelData.empty()) s += " data-pixels=\"" + url(r.pixelData) + "\"";
+  s += open ? " open>" : ">";
+  const std::string detail = resultDetail(r);
+  s += "<summary>" + badge(r.outcome) + "<span class=\"name\">" + e(r.entry.name) + "</span><span class=\"path\">" +
+       e(r.entry.path.string()) + "</span>";
+  if (!detail.empty() && r.actual != Outcome::Crash) s += "<span class=\"brief\">" + e(detail) + "</span>";
+  s += "</summary>\n<div class=\"scene-body\">\n";
+  if (!r.description.empty()) s += "<p class=\"desc\">" + e(r.description) + "</p>\n";
+  if (r.expectation) {
+    s += "<p class=\"expect\">expected " + std::string(outcomeName(r.expectation->outcome)) + " (expectations line " +
+         std::to_string(r.expectation->line) + ")" + (r.expectation->reason.empty() ? "" : ": " + e(r.expectation->reason)) +
+         "</p>\n";
+  }
+  if (!r.error.empty()) s += "<p class=\"error\">" + e(r.error) + "</p>\n";
+  s += metricsTable(r);
+  if (!r.images.empty()) {
+    // The images live in a <template> until the section is first opened: 100 scenes of closed
+    // sections then cost the page no image elements, requests or layout.
+    s += "<noscript><p class=\"run\">Images: the files in " + e(r.entry.name) +
+         "/ next to this page (showing them here needs JavaScript).</p></noscript>\n<template class=\"scene-views\">\n";
+    s += "<div class=\"tools\"><label>zoom <select class=\"zoom\">";
+    const std::uint32_t zoom = defaultZoom(r);
+    for (const std::uint32_t z : {0u, 1u, 2u, 4u, 8u, 16u, 32u}) {
+      const std::string value = z == 0 ? "fit" : std::to_string(z);
+      s += "<option value=\"" + value + "\"" + (z == zoom ? " selected" : "") + ">" +
+           (z == 0 ? value : value + "\xC3\x97") + "</option>";
+    }
+    s += "</select></label><span class=\"readout\">point at an image to read the values of both renders</span></div>\n";
+    s += "<div class=\"views\">\n" + figure(r, "soft", "softraster") + figure(r, "vulkan", "Vulkan (lavapipe)") +
+         figure(r, "diff", "difference (heatmap)") + "</div>\n" + colourLegend(std::to_string(r.tolerance.colourThreshold));
+    s += "<div class=\"views\">\n" +
+         figure(r, "soft.depth", "softraster depth") + figure(r, "vulkan.depth", "Vulkan depth") +
+         figure(r, "depth.diff", "depth difference (heatmap)") + "</div>\n" + depthLegend(r.tolerance.depthThreshold);
+    s += "<p class=\"run\">Depth views map " + e(fixed("%.9g", r.depthViewRange.first)) + " to black and " +
+         e(fixed("%.9g", r.depthViewRange.second)) + " to white, the same for both (the range they drew); depths outside it, such as the "
+         "clear depth, saturate.</p>\n";
+    const SceneImage* soft = imageOf(r, "soft");
+    const SceneImage* vulkan = imageOf(r, "vulkan");
+    if (soft && vulkan) {
+      s += "<div class=\"views\">" +
+           figure(r, "soft", "flicker: <b class=\"flicker-label\">softraster</b> <button type=\"button\" class=\"swap\">swap</button> "
+                             "<button type=\"button\" class=\"flick\">flicker</button>",
+                  " class=\"flicker\" data-showing=\"a\" data-a=\"" + url(soft->file) + "\" data-b=\"" + url(vulkan->file) + "\"") +
+           "</div>\n";
+    }
+    s += "</template>\n";
+  }
+  return s + "</div></details>\n";
+}
+
+}  // namespace
+
+std::string pixelDataScript(const std::string& sceneName, const Frame& soft, const Frame& vulkan) {
+  using nlohmann::json;
+  const json data = {{"w", soft.width},
+                     {"h", soft.height},
+                     {"soft", base64(compressed(soft.rgba))},
+                     {"vulkan", base64(compressed(vulkan.rgba))},
+                     {"softDepth", base64(compressed(littleEndian(soft.depth)))},
+                     {"vulkanDepth", base64(compressed(littleEndian(vulkan.depth)))}};
+  const auto dump = [](const json& j) { return j.dump(-1, ' ', false, json::error_handler_t::replace); };
+  return "crosscheckPixels(" + dump(json(sceneName)) + "," + dump(data) + ");\n";
+}
+
+softraster::Status writePixelData(const std::filesystem::path& root, const std::filesystem::path& relative,
+                                  SceneResult* result, const Frame& soft, const Frame& vulkan) {
+  softraster::Status status = writeDocument(root / relative, pixelDataScript(result->entry.name, soft, vulkan), "pixel data");
+  if (status) result->pixelData = relative;
+  return status;
+}
+
+std::vector<std::size_t> worstFirst(const std::vector<SceneResult>& results) {
+  std::vector<std::size_t> order(results.size());
+  std::iota(order.begin(), order.end(), std::size_t{0});
+  const auto key = [&](std::size_t i) {
+    const SceneResult& r = results[i];
+    const Comparison none;
+    const Comparison& c = r.comparison ? *r.comparison : none;
+    const double psnr = r.comparison ? c.psnr : std::numeric_limits<double>::infinity();
+    return std::make_tuple(outcomeRank(r.outcome), ~c.coverageMismatches, ~c.colourPixelsOver, ~c.depthPixelsOver, psnr,
+                           std::string_view(r.entry.name));
+  };
+  std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return key(a) < key(b); });
+  return order;
+}
+
+std::string reportHtml(const RunResults& run) {
+  const std::vector<SceneResult>& results = run.scenes;
+  const Counts counts = countResults(results);
+  const std::vector<std::size_t> order = worstFirst(results);
+  std::string html =
+      "<!DOCTYPE html>\n<html lang=\"en\">\n<head>\n<meta charset=\"utf-8\">\n"
+      "<meta name=\"viewport\" content=\"width=device-width, initial-scale=1\">\n"
+      "<title>crosscheck report: " + e(countsLine(counts)) + "</title>\n"
+      "<script>window.addEventListener('error',function(ev){var r=document.documentElement;"
+      "r.setAttribute('data-js-errors',(r.getAttribute('data-js-errors')||'')+ev.message+' | ');});"
+      "window.addEventListener('unhandledrejection',function(ev){var r=document.documentElement;"
+      "r.setAttribute('data-js-errors',(r.getAttribute('data-js-errors')||'')+String(ev.reason)+' | ');});</script>\n"
+      "<style>\n" + std::string(report_assets::kCss) + "</style>\n</head>\n";
+  html += "<body data-scenes=\"" + std::to_string(results.size()) + "\">\n";
+  html += "<h1>softraster \xC3\x97 Vulkan (lavapipe): conformance report</h1>\n";
+  html += "<p class=\"counts\">" + e(countsLine(counts)) + "</p>\n";
+  html += "<p class=\"run\">" + std::to_string(results.size()) + " scenes";
+  for (Outcome s : kAllOutcomes) {
+    if (counts.of(s)) html += " \xC2\xB7 " + std::to_string(counts.of(s)) + " " + std::string(outcomeName(s));
+  }
+  html += " \xC2\xB7 " + e(fixed("%.2f s", run.seconds)) + " with " + std::to_string(run.jobs) + (run.jobs == 1 ? " job" : " jobs");
+  if (run.finished != 0) html += " \xC2\xB7 " + e(utcTime(run.finished, "%Y-%m-%d %H:%M:%S UTC"));
+  if (!run.commandLine.empty()) html += "<br><code>" + e(run.commandLine) + "</code>";
+  html += "</p>\n";
+
+  html += "<h2>Summary</h2>\n<table id=\"summary\" class=\"summary\">\n<thead><tr>"
+          "<th data-type=\"number\" data-first=\"ascending\" aria-sort=\"ascending\" title=\"worst first\">status</th>"
+          "<th data-type=\"text\" data-first=\"ascending\">scene</th>"
+          "<th data-type=\"number\" title=\"pixels covered by one renderer only\">coverage mismatches</th>"
+          "<th data-type=\"number\" title=\"largest over R, G, B, A (8-bit steps)\">colour max |\xCE\x94|</th>"
+          "<th data-type=\"number\" title=\"largest channel mean (8-bit steps)\">colour mean |\xCE\x94|</th>"
+          "<th data-type=\"number\" data-first=\"ascending\" title=\"RGB, dB; lowest first\">PSNR</th>"
+          "<th data-type=\"number\">depth max |\xCE\x94|</th>"
+          "<th data-type=\"number\">softraster ms</th>"
+          "<th data-type=\"number\">Vulkan ms</th>"
+          "</tr></thead>\n<tbody>\n";
+  for (std::size_t rank = 0; rank < order.size(); ++rank) html += summaryRow(results[order[rank]], order[rank], rank);
+  html += "</tbody>\n</table>\n";
+  html += "<h2>Difference heatmaps</h2>\n" + colourLegend("T") +
+          "<p class=\"run\">T is the scene's colour threshold (8-bit steps); each scene's section shows its own. "
+          "Depth differences use the same colours against the depth threshold.</p>\n";
+
+  html += "<h2>Scenes</h2>\n";
+  std::size_t opened = 0;
+  for (const std::size_t position : order) {
+    const SceneResult& r = results[position];
+    const bool open = isUnexpected(r.outcome) && !r.images.empty() && opened < 3;
+    opened += open;
+    html += sceneSection(r, position, open);
+  }
+  html += "<script>\n" + std::string(report_assets::kScript) + "</script>\n</body>\n</html>\n";
+  return html;
+}
+
+softraster::Status writeReport(const std::filesystem::path& dir, const RunResults& run) {
+  return writeDocument(dir / "index.html", reportHtml(run), "report");
+}
+
+}  // namespace crosscheck

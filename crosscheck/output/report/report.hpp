@@ -1,0 +1,47 @@
+// The HTML comparison report: DIR/index.html, one self-contained page (inline CSS and script, no
+// network) over the scenes' PNGs in DIR/<scene>/ (written by artifacts.hpp). A summary table of
+// every scene, sortable, worst first; per scene a collapsed section with softraster, Vulkan and
+// the diff heatmap side by side with a legend, both depth views and their difference, a flicker
+// toggle, nearest-neighbour zoom and the values of both images under the pointer, the description
+// and the tolerance. A section's images are in a <template> until it is first opened, and then
+// load lazily, so 100 scenes stay fast; the page's script is needed to see them.
+// The value readout reads DIR/<scene>/pixels.js (writePixelData): raw RGBA8 and float depth of
+// both frames, zlib-compressed and base64-encoded, loaded with a <script> element because a canvas
+// cannot read PNGs back on a page opened from file://.
+// The page reads a run's results (results.hpp) only; the pixel data is written from the frames
+// while they exist, during the run.
+// Deliberately no charts, no history across runs and no server.
+#pragma once
+
+#include "render/render.hpp"
+#include "results/results.hpp"
+
+#include <softraster/status.hpp>
+
+#include <filesystem>
+#include <string>
+#include <vector>
+
+namespace crosscheck {
+
+// The text of DIR/<scene>/pixels.js: `crosscheckPixels("name", {w, h, soft, vulkan, softDepth,
+// vulkanDepth})`, each buffer zlib-compressed and base64-encoded; depth as little-endian float32.
+std::string pixelDataScript(const std::string& sceneName, const Frame& soft, const Frame& vulkan);
+
+// Writes pixelDataScript to root / relative and records it in *result; the error is
+// "FILE: cannot write pixel data: reason".
+softraster::Status writePixelData(const std::filesystem::path& root, const std::filesystem::path& relative,
+                                  SceneResult* result, const Frame& soft, const Frame& vulkan);
+
+// Positions of the results, worst first: Crash, Fail, UnexpectedPass, ExpectedFail, Pass, Skip;
+// then by coverage mismatches, pixels over the colour and depth thresholds (most first), PSNR
+// (lowest first) and name.
+std::vector<std::size_t> worstFirst(const std::vector<SceneResult>& results);
+
+// The header shows the counts, the run's time and jobs, when it finished (UTC) and its command line.
+std::string reportHtml(const RunResults& run);
+
+// Writes dir/index.html; the error is "FILE: cannot write report: reason".
+softraster::Status writeReport(const std::filesystem::path& dir, const RunResults& run);
+
+}  // namespace crosscheck

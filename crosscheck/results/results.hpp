@@ -1,0 +1,75 @@
+// RunResults: the one record of a run, and the only thing the writers in output/ read (the text
+// summary, the compare command's text and JSON, JUnit, the HTML report). One SceneResult per
+// scene, in suite order: its outcome, the metrics and the limits they were held to, timings,
+// the images written and the error line; plus what describes the run as a whole.
+// The runner (run/conformance.hpp) and the compare command fill it; the images and pixel data
+// are written while the frames still exist (output/artifacts.hpp, output/report/) and only their
+// paths are kept here.
+// Deliberately data only: no frames, no scenes, no formatting (output/ does that), so a record
+// can later be written as results.json, read back and merged across shards.
+#pragma once
+
+#include "compare/metrics.hpp"
+#include "run/expectations.hpp"
+#include "run/outcome.hpp"
+#include "run/suite.hpp"
+#include "scene/tolerance.hpp"
+
+#include <cstddef>
+#include <cstdint>
+#include <ctime>
+#include <filesystem>
+#include <optional>
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace crosscheck {
+
+struct SceneImage {
+  std::string kind;             // "soft", "vulkan", "diff", "soft.depth", "vulkan.depth", "depth.diff"
+  std::filesystem::path file;   // relative to SceneResult::imageRoot
+};
+
+struct SceneResult {
+  SceneEntry entry;
+  Outcome outcome = Outcome::Crash;
+  Outcome actual = Outcome::Crash;          // before expectations: Pass, Fail, Crash (or Skip)
+  std::optional<Expectation> expectation;   // from the expectations file, if listed
+  std::string error;                        // Crash: one line
+
+  // Known once the scene loaded.
+  bool loaded = false;
+  std::string description;
+  std::uint32_t width = 0, height = 0;
+  Tolerance tolerance;                      // the limits
+
+  std::optional<Comparison> comparison;     // the metrics, known once both renderers produced a frame
+  double softMilliseconds = 0, vulkanMilliseconds = 0;  // each renderer's timed span (render/render.hpp)
+  double milliseconds = 0;                  // the whole scene: load, render, compare, write
+
+  std::filesystem::path imageRoot;          // where images were written (empty: none)
+  std::vector<SceneImage> images;
+  std::filesystem::path pixelData;          // relative to imageRoot: the report's value readout data
+  std::pair<float, float> depthViewRange{0, 0};  // depth mapped to black..white in the depth views
+};
+
+struct RunResults {
+  std::vector<SceneResult> scenes;          // in suite order
+  std::string suiteName = "crosscheck.conformance";  // JUnit's name for the run (a shard adds ".shardIofN")
+  std::string commandLine;                  // how the run was started, for the report
+  double seconds = 0;                       // wall time of the whole run
+  unsigned jobs = 1;
+  std::time_t finished = 0;                 // when the run ended (UTC); 0: unknown, not written
+};
+
+// Pass and ExpectedFail count as passed; Fail, Crash and UnexpectedPass as failed; Skip as skipped.
+struct Counts {
+  std::size_t passed = 0, failed = 0, skipped = 0;
+  std::size_t byOutcome[6] = {};
+  std::size_t of(Outcome o) const { return byOutcome[static_cast<int>(o)]; }
+};
+
+Counts countResults(const std::vector<SceneResult>& scenes);
+
+}  // namespace crosscheck

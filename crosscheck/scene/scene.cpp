@@ -1,0 +1,421 @@
+// Scene file loading and validation (see scene.hpp and scenes/README.md).
+#include "scene/scene.hpp"
+
+#include "scene/camera.hpp"
+#include "scene/obj_mesh.hpp"
+
+#include <nlohmann/json.hpp>
+
+#include <fstream>
+#include <initializer_list>
+#include <limits>
+#include <map>
+#include <set>
+#include <sstream>
+#include <stdexcept>
+
+namespace crosscheck {
+namespace {
+
+using nlohmann::json;
+
+// A failure at a place in the scene file; turned into "FILE: PLACE: message".
+struct SceneError : std::runtime_error {
+  SceneError(std::string place, const std::string& message) : std::runtime_error(message), place(std::move(place)) {}
+  std::string place;
+};
+
+std::string placeOf(const std::string& parent, const std::string& key) { return parent + "/" + key; }
+
+// Rejects keys the format does not know, so a typo is an error instead of a silent default.
+void checkKeys(const json& object, const std::string& place, std::initializer_list<const char*> known) {
+  if (!object.is_object()) throw SceneError(place, "expected an object");
+  const std::set<std::string> allowed(known.begin(), known.end());
+  for (const auto& [key, value] : object.items()) {
+    if (!allowed.count(key)) {
+      std::string list;
+      for (const char* k : known) list += std::string(list.empty() ? "" : ", ") + k;
+      throw SceneError(placeOf(place, key), "unknown field (known: " + list + ")");
+    }
+  }
+}
+
+double readNumber(const json& value, const std::string& place) {
+  if (!value.is_number()) throw SceneError(place, "expected a number");
+  return value.get<double>();
+}
+
+// A vertex coordinate: a number, or "nan", "inf" or "-inf" (JSON has no literals for them),
+// so scenes can test how the pipeline drops such vertices.
+float readCoordinate(const json& value, const std::string& place) {
+  if (value.is_string()) {
+    const std::string text = value.get<std::string>();
+    if (text == "nan") return std::numeric_limits<float>::quiet_NaN();
+    if (text == "inf") return std::numeric_limits<float>::infinity();
+    if (text == "-inf") return -std::numeric_limits<float>::infinity();
+    throw SceneError(place, "expected a number, \"nan\", \"inf\" or \"-inf\"");
+  }
+  return static_cast<float>(readNumber(value, place));
+}
+
+double readNumber(const json& object, const char* key, const std::string& place, double fallback) {
+  return object.contains(key) ? readNumber(object[key], placeOf(place, key)) : fallback;
+}
+
+std::uint64_t readCount(const json& object, const char* key, const std::string& place, std::uint64_t fallback) {
+  if (!object.contains(key)) return fallback;
+  const json& v = object[key];
+  if (!v.is_number_integer() || v.get<std::int64_t>() < 0) {
+    throw SceneError(placeOf(place, key), "expected a non-negative integer");
+  }
+  return v.get<std::uint64_t>();
+}
+
+bool readBool(const json& object, const char* key, const std::string& place, bool fallback) {
+  if (!object.contains(key)) return fallback;
+  if (!object[key].is_boolean()) throw SceneError(placeOf(place, key), "expected true or false");
+  return object[key].get<bool>();
+}
+
+std::string readString(const json& object, const char* key, const std::string& place, const std::string& fallback) {
+  if (!object.contains(key)) return fallback;
+  if (!object[key].is_string()) throw SceneError(placeOf(place, key), "expected a string");
+  return object[key].get<std::string>();
+}
+
+std::vector<double> readNumbers(const json& value, const std::string& place, std::size_t minCount, std::size_t maxCount) {
+  if (!value.is_array() || value.size() < minCount || value.size() > maxCount) {
+    throw SceneError(place, minCount == maxCount ? "expected an array of " + std::to_string(minCount) + " numbers"
+                                                 : "expected an array of " + std::to_string(minCount) + " to " +
+                                                       std::to_string(maxCount) + " numbers");
+  }
+  std::vector<double> out;
+  for (std::size_t i = 0; i < value.size(); ++i) out.push_back(readNumber(value[i], placeOf(place, std::to_string(i))));
+  return out;
+}
+
+std::array<double, 3> readVec3(const json& object, const char* key, const std::string& place, std::array<double, 3> fallback) {
+  if (!object.contains(key)) return fallback;
+  const auto v = readNumbers(object[key], placeOf(place, key), 3, 3);
+  return {v[0], v[1], v[2]};
+}
+
+// A colour is [r, g, b] or [r, g, b, a], floats in [0, 1]; alpha defaults to 1.
+softraster::Vec4 readColour(const json& value, const std::string& place) {
+  const auto v = readNumbers(value, place, 3, 4);
+  return {static_cast<float>(v[0]), static_cast<float>(v[1]), static_cast<float>(v[2]),
+          v.size() == 4 ? static_cast<float>(v[3]) : 1.0f};
+}
+
+template <class Enum>
+Enum readEnum(const json& object, const char* key, const std::string& place, Enum fallback,
+              const std::vector<std::pair<const char*, Enum>>& names) {
+  if (!object.contains(key)) return fallback;
+  const std::string value = readString(object, key, place, "");
+  std::string list;
+  for (const auto& [name, e] : names) {
+    if (value == name) return e;
+    list += std::string(list.empty() ? "" : ", ") + name;
+  }
+  throw SceneError(placeOf(place, key), "'" + value + "' is not one of " + list);
+}
+
+// The row of shaders/shading_models.hpp named by "shading" (default: kDefaultShadingModel).
+const shaders::ShadingModel* readShadingModel(const json& d, const std::string& place) {
+  const std::string name = readString(d, "shading", place, std::string(shaders::kDefaultShadingModel));
+  if (const shaders::ShadingModel* model = shaders::findShadingModel(name)) return model;
+  std::string list;
+  for (const shaders::ShadingModel& model : shaders::shadingModels()) {
+    list += (list.empty() ? "" : ", ") + std::string(model.name);
+  }
+  throw SceneError(placeOf(place, "shading"), "'" + name + "' is not one of " + list);
+}
+
+softraster::Mat4 readCamera(const json& camera, const std::string& place, int width, int height) {
+  const std::string type = readString(camera, "type", place, "pinhole");
+  if (type == "pinhole") {
+    checkKeys(camera, place, {"type", "position", "yaw", "pitch", "focal_length", "near", "far"});
+    PinholeCamera c;
+    c.position = readVec3(camera, "position", place, c.position);
+    c.yawDegrees = readNumber(camera, "yaw", place, 0);
+    c.pitchDegrees = readNumber(camera, "pitch", place, 0);
+    c.focalLengthPixels = readNumber(camera, "focal_length", place, height);
+    c.nearPlane = readNumber(camera, "near", place, c.nearPlane);
+    c.farPlane = readNumber(camera, "far", place, c.farPlane);
+    if (!(c.focalLengthPixels > 0)) throw SceneError(placeOf(place, "focal_length"), "must be positive");
+    if (!(c.nearPlane > 0 && c.farPlane > c.nearPlane)) throw SceneError(place, "needs 0 < near < far");
+    return viewProjection(c, width, height);
+  }
+  if (type == "look_at") {
+    checkKeys(camera, place, {"type", "eye", "target", "up", "fov_y", "aspect", "near", "far"});
+    LookAtCamera c;
+    c.eye = readVec3(camera, "eye", place, c.eye);
+    c.target = readVec3(camera, "target", place, c.target);
+    c.up = readVec3(camera, "up", place, c.up);
+    c.fovYDegrees = readNumber(camera, "fov_y", place, c.fovYDegrees);
+    c.aspect = readNumber(camera, "aspect", place, 0);
+    c.nearPlane = readNumber(camera, "near", place, c.nearPlane);
+    c.farPlane = readNumber(camera, "far", place, c.farPlane);
+    if (!(c.fovYDegrees > 0 && c.fovYDegrees < 180)) throw SceneError(placeOf(place, "fov_y"), "must be in (0, 180)");
+    if (!(c.nearPlane > 0 && c.farPlane > c.nearPlane)) throw SceneError(place, "needs 0 < near < far");
+    if (c.eye == c.target) throw SceneError(place, "eye and target are the same point");
+    return viewProjection(c, width, height);
+  }
+  if (type == "clip_space") {  // positions are clip coordinates (w = 1): exact control of window positions
+    checkKeys(camera, place, {"type"});
+    return softraster::Mat4::identity();
+  }
+  throw SceneError(placeOf(place, "type"), "'" + type + "' is not one of pinhole, look_at, clip_space");
+}
+
+void readDrawState(const json& d, const std::string& place, softraster::PipelineState& state) {
+  using softraster::CompareOp;
+  using softraster::CullMode;
+  using softraster::FrontFace;
+  using softraster::Topology;
+  state.topology = readEnum(d, "topology", place, state.topology,
+                            {{"point_list", Topology::PointList}, {"line_list", Topology::LineList},
+                             {"line_strip", Topology::LineStrip}, {"triangle_list", Topology::TriangleList},
+                             {"triangle_strip", Topology::TriangleStrip}, {"triangle_fan", Topology::TriangleFan}});
+  if (d.contains("viewport")) {
+    const std::string vp = placeOf(place, "viewport");
+    const json& v = d["viewport"];
+    checkKeys(v, vp, {"x", "y", "width", "height", "min_depth", "max_depth"});
+    auto& viewport = state.viewport;
+    viewport.x = static_cast<float>(readNumber(v, "x", vp, 0));
+    viewport.y = static_cast<float>(readNumber(v, "y", vp, 0));
+    viewport.width = static_cast<float>(readNumber(v, "width", vp, 0));
+    viewport.height = static_cast<float>(readNumber(v, "height", vp, 0));
+    viewport.minDepth = static_cast<float>(readNumber(v, "min_depth", vp, 0));
+    viewport.maxDepth = static_cast<float>(readNumber(v, "max_depth", vp, 1));
+    if (viewport.width < 0 || viewport.height < 0) throw SceneError(vp, "width and height must not be negative");
+    if (!(viewport.minDepth >= 0 && viewport.minDepth <= 1 && viewport.maxDepth >= 0 && viewport.maxDepth <= 1)) {
+      throw SceneError(vp, "min_depth and max_depth must be in [0, 1]");
+    }
+  }
+  if (d.contains("scissor")) {
+    const std::string sp = placeOf(place, "scissor");
+    const json& sc = d["scissor"];
+    checkKeys(sc, sp, {"x", "y", "width", "height"});
+    state.scissor.x = static_cast<std::int32_t>(readCount(sc, "x", sp, 0));
+    state.scissor.y = static_cast<std::int32_t>(readCount(sc, "y", sp, 0));
+    state.scissor.width = static_cast<std::uint32_t>(readCount(sc, "width", sp, 0));
+    state.scissor.height = static_cast<std::uint32_t>(readCount(sc, "height", sp, 0));
+  }
+  auto& rs = state.rasterization;
+  rs.depthClampEnable = readBool(d, "depth_clamp", place, rs.depthClampEnable);
+  rs.polygonMode = readEnum(d, "polygon_mode", place, rs.polygonMode,
+                            {{"fill", softraster::PolygonMode::Fill}, {"line", softraster::PolygonMode::Line},
+                             {"point", softraster::PolygonMode::Point}});
+  rs.lineWidth = static_cast<float>(readNumber(d, "line_width", place, rs.lineWidth));
+  if (!(rs.lineWidth >= 1.0f)) throw SceneError(placeOf(place, "line_width"), "must be at least 1");
+  rs.lineRasterization = readEnum(d, "line_rasterization", place, rs.lineRasterization,
+                                  {{"rectangular", softraster::LineRasterization::Rectangular},
+                                   {"bresenham", softraster::LineRasterization::Bresenham}});
+  if (d.contains("depth_bias")) {
+    const std::string bp = placeOf(place, "depth_bias");
+    const json& b = d["depth_bias"];
+    checkKeys(b, bp, {"constant", "slope", "clamp"});
+    rs.depthBias.enable = true;
+    rs.depthBias.constantFactor = static_cast<float>(readNumber(b, "constant", bp, 0));
+    rs.depthBias.slopeFactor = static_cast<float>(readNumber(b, "slope", bp, 0));
+    rs.depthBias.clamp = static_cast<float>(readNumber(b, "clamp", bp, 0));
+  }
+  rs.cullMode = readEnum(d, "cull", place, rs.cullMode,
+                         {{"none", CullMode::None}, {"front", CullMode::Front}, {"back", CullMode::Back},
+                          {"front_and_back", CullMode::FrontAndBack}});
+  rs.frontFace = readEnum(d, "front_face", place, rs.frontFace,
+                          {{"counter_clockwise", FrontFace::CounterClockwise}, {"clockwise", FrontFace::Clockwise}});
+  if (d.contains("blend")) {
+    const std::string bp = placeOf(place, "blend");
+    checkKeys(d["blend"], bp, {"source", "destination"});
+    const std::vector<std::pair<const char*, softraster::BlendFactor>> factors = {
+        {"zero", softraster::BlendFactor::Zero}, {"one", softraster::BlendFactor::One}};
+    state.blend.enable = true;
+    state.blend.source = readEnum(d["blend"], "source", bp, softraster::BlendFactor::One, factors);
+    state.blend.destination = readEnum(d["blend"], "destination", bp, softraster::BlendFactor::Zero, factors);
+  }
+  auto& ds = state.depth;
+  ds.testEnable = readBool(d, "depth_test", place, ds.testEnable);
+  ds.writeEnable = readBool(d, "depth_write", place, ds.writeEnable);
+  ds.compareOp = readEnum(d, "depth_compare", place, ds.compareOp,
+                          {{"never", CompareOp::Never}, {"less", CompareOp::Less}, {"equal", CompareOp::Equal},
+                           {"less_or_equal", CompareOp::LessOrEqual}, {"greater", CompareOp::Greater},
+                           {"not_equal", CompareOp::NotEqual}, {"greater_or_equal", CompareOp::GreaterOrEqual},
+                           {"always", CompareOp::Always}});
+}
+
+Draw readDraw(const json& d, const std::string& place, const std::filesystem::path& sceneDir) {
+  checkKeys(d, place, {"name", "obj", "positions", "colours", "colour", "indices", "shading", "topology", "viewport",
+                       "scissor", "cull", "front_face", "depth_clamp", "depth_bias", "line_width", "line_rasterization",
+                       "point_size", "polygon_mode", "blend", "depth_test", "depth_write", "depth_compare"});
+  Draw draw;
+  draw.name = readString(d, "name", place, place);
+  draw.shading = readShadingModel(d, place);
+  readDrawState(d, place, draw.state);
+  draw.pointSize = static_cast<float>(readNumber(d, "point_size", place, draw.pointSize));
+  if (!(draw.pointSize > 0)) throw SceneError(placeOf(place, "point_size"), "must be positive");
+  const softraster::Vec4 colour = d.contains("colour") ? readColour(d["colour"], placeOf(place, "colour"))
+                                                       : softraster::Vec4{1, 1, 1, 1};
+
+  if (d.contains("obj")) {
+    if (d.contains("positions") || d.contains("indices") || d.contains("colours")) {
+      throw SceneError(place, "a draw has either \"obj\" or inline \"positions\"/\"indices\", not both");
+    }
+    if (draw.state.topology != softraster::Topology::TriangleList) {  // an OBJ mesh has faces
+      throw SceneError(placeOf(place, "topology"), "an OBJ mesh is a triangle list");
+    }
+    const std::string file = readString(d, "obj", place, "");
+    auto mesh = loadObjMesh(sceneDir / file, colour);
+    if (!mesh) throw SceneError(placeOf(place, "obj"), mesh.error());
+    draw.mesh = std::move(mesh->vertices);
+    draw.indices = std::move(mesh->indices);
+    return draw;
+  }
+
+  if (!d.contains("positions")) throw SceneError(place, "a draw needs \"obj\" or \"positions\"");
+  const json& positions = d["positions"];
+  if (!positions.is_array() || positions.empty()) throw SceneError(placeOf(place, "positions"), "expected an array of [x, y, z]");
+  for (std::size_t i = 0; i < positions.size(); ++i) {
+    const std::string at = placeOf(placeOf(place, "positions"), std::to_string(i));
+    const json& p = positions[i];
+    if (!p.is_array() || p.size() != 3) throw SceneError(at, "expected [x, y, z]");
+    draw.mesh.positions.push_back({readCoordinate(p[0], placeOf(at, "0")), readCoordinate(p[1], placeOf(at, "1")),
+                                   readCoordinate(p[2], placeOf(at, "2"))});
+    draw.mesh.colours.push_back(colour);
+  }
+  if (d.contains("colours")) {
+    const json& colours = d["colours"];
+    if (!colours.is_array() || colours.size() != positions.size()) {
+      throw SceneError(placeOf(place, "colours"), "expected one colour per position (" + std::to_string(positions.size()) + ")");
+    }
+    for (std::size_t i = 0; i < colours.size(); ++i) {
+      draw.mesh.colours[i] = readColour(colours[i], placeOf(placeOf(place, "colours"), std::to_string(i)));
+    }
+  }
+  if (d.contains("indices")) {
+    const json& indices = d["indices"];
+    if (!indices.is_array()) throw SceneError(placeOf(place, "indices"), "expected an array of indices");
+    for (std::size_t i = 0; i < indices.size(); ++i) {
+      const json& index = indices[i];
+      if (!index.is_number_integer() || index.get<std::int64_t>() < 0 ||
+          index.get<std::uint64_t>() >= draw.mesh.vertexCount()) {
+        throw SceneError(placeOf(placeOf(place, "indices"), std::to_string(i)),
+                         "expected an index below " + std::to_string(draw.mesh.vertexCount()));
+      }
+      draw.indices.push_back(index.get<std::uint32_t>());
+    }
+  } else {
+    draw.indexed = false;  // vertices in order, assembled by the topology
+  }
+  return draw;
+}
+
+// Applies "a.b.c=value" to the JSON document; value is JSON, or a plain string if it is not.
+void applyOverride(json& document, const std::string& assignment) {
+  const auto equals = assignment.find('=');
+  if (equals == std::string::npos || equals == 0) {
+    throw SceneError("--set " + assignment, "expected KEY.PATH=VALUE");
+  }
+  const std::string key = assignment.substr(0, equals);
+  const std::string text = assignment.substr(equals + 1);
+  json value = json::parse(text, nullptr, false);
+  if (value.is_discarded()) value = text;
+  json* node = &document;
+  std::stringstream parts(key);
+  std::string part;
+  while (std::getline(parts, part, '.')) {
+    if (part.empty()) throw SceneError("--set " + assignment, "empty key component");
+    if (node->is_array()) {
+      std::size_t index = 0;
+      try {
+        index = std::stoul(part);
+      } catch (const std::exception&) {
+        throw SceneError("--set " + assignment, "'" + part + "' is not an array index");
+      }
+      if (index >= node->size()) throw SceneError("--set " + assignment, "index " + part + " is out of range");
+      node = &(*node)[index];
+    } else {
+      if (!node->is_object()) *node = json::object();
+      node = &(*node)[part];
+    }
+  }
+  *node = value;
+}
+
+Scene readScene(json& document, const std::filesystem::path& path, const std::vector<std::string>& overrides) {
+  for (const std::string& assignment : overrides) applyOverride(document, assignment);
+  checkKeys(document, "", {"description", "framebuffer", "camera", "draws", "tolerance"});
+  Scene scene;
+  scene.path = path;
+  scene.description = readString(document, "description", "", "");
+
+  if (document.contains("framebuffer")) {
+    const json& fb = document["framebuffer"];
+    checkKeys(fb, "/framebuffer", {"width", "height", "clear_colour", "clear_depth", "depth_format", "samples"});
+    scene.samples = static_cast<std::uint32_t>(readCount(fb, "samples", "/framebuffer", 1));
+    if (scene.samples != 1 && scene.samples != 4) throw SceneError("/framebuffer/samples", "must be 1 or 4");
+    scene.depthFormat = readEnum(fb, "depth_format", "/framebuffer", scene.depthFormat,
+                                 {{"d16_unorm", softraster::DepthFormat::D16Unorm},
+                                  {"x8_d24_unorm", softraster::DepthFormat::X8D24UnormPack32},
+                                  {"d32_sfloat", softraster::DepthFormat::D32Sfloat}});
+    scene.width = static_cast<std::uint32_t>(readCount(fb, "width", "/framebuffer", scene.width));
+    scene.height = static_cast<std::uint32_t>(readCount(fb, "height", "/framebuffer", scene.height));
+    if (scene.width == 0 || scene.height == 0 || scene.width > 8192 || scene.height > 8192) {
+      throw SceneError("/framebuffer", "width and height must be in 1..8192");
+    }
+    if (fb.contains("clear_colour")) scene.clearColour = readColour(fb["clear_colour"], "/framebuffer/clear_colour");
+    scene.clearDepth = static_cast<float>(readNumber(fb, "clear_depth", "/framebuffer", scene.clearDepth));
+    if (!(scene.clearDepth >= 0 && scene.clearDepth <= 1)) throw SceneError("/framebuffer/clear_depth", "must be in [0, 1]");
+  }
+
+  scene.viewProjection = readCamera(document.contains("camera") ? document["camera"] : json::object(), "/camera",
+                                    static_cast<int>(scene.width), static_cast<int>(scene.height));
+
+  if (!document.contains("draws") || !document["draws"].is_array() || document["draws"].empty()) {
+    throw SceneError("/draws", "expected a non-empty array of draws");
+  }
+  const json& draws = document["draws"];
+  for (std::size_t i = 0; i < draws.size(); ++i) {
+    scene.draws.push_back(readDraw(draws[i], "/draws/" + std::to_string(i), path.parent_path()));
+  }
+
+  if (document.contains("tolerance")) {
+    const json& t = document["tolerance"];
+    checkKeys(t, "/tolerance", {"colour", "depth", "coverage_mismatches", "colour_pixels_over", "depth_pixels_over"});
+    Tolerance& tol = scene.tolerance;
+    tol.colourThreshold = static_cast<int>(readCount(t, "colour", "/tolerance", static_cast<std::uint64_t>(tol.colourThreshold)));
+    tol.depthThreshold = readNumber(t, "depth", "/tolerance", tol.depthThreshold);
+    if (!(tol.depthThreshold >= 0)) throw SceneError("/tolerance/depth", "must be non-negative");
+    tol.maxCoverageMismatches = readCount(t, "coverage_mismatches", "/tolerance", tol.maxCoverageMismatches);
+    tol.maxColourPixelsOver = readCount(t, "colour_pixels_over", "/tolerance", tol.maxColourPixelsOver);
+    tol.maxDepthPixelsOver = readCount(t, "depth_pixels_over", "/tolerance", tol.maxDepthPixelsOver);
+  }
+  return scene;
+}
+
+}  // namespace
+
+softraster::Result<Scene> loadScene(const std::filesystem::path& path, const std::vector<std::string>& overrides) {
+  using softraster::Status;
+  std::ifstream file(path);
+  if (!file) return Status::error(path.string() + ": cannot open scene file");
+  json document;
+  try {
+    document = json::parse(file);
+  } catch (const json::parse_error& e) {
+    // nlohmann's message: "[json.exception.parse_error.101] parse error at line 3, column 5: ..."
+    std::string message = e.what();
+    const auto at = message.find("parse error");
+    return Status::error(path.string() + ": " + (at == std::string::npos ? message : message.substr(at)));
+  }
+  try {
+    return readScene(document, path, overrides);
+  } catch (const SceneError& e) {
+    return Status::error(path.string() + ": " + (e.place.empty() ? "/" : e.place) + ": " + e.what());
+  } catch (const json::exception& e) {
+    return Status::error(path.string() + ": " + e.what());
+  }
+}
+
+}  // namespace crosscheck

@@ -1,0 +1,56 @@
+// Scene: what one conformance case draws and how closely the two renderers must agree.
+// Loaded from a JSON scene file (format: scenes/README.md). A scene file states only what
+// differs from the defaults; every error names the file, the place and what is wrong.
+// A draw's "shading" names a row of the table of shading models (shaders/shading_models.hpp);
+// its mesh is kept model-neutral (shaders/draw_inputs.hpp) for that row to pack.
+// Deliberately no scene graph: a scene is a camera plus a flat list of draws.
+#pragma once
+
+#include "scene/tolerance.hpp"
+
+#include <softraster/framebuffer.hpp>
+#include <softraster/math.hpp>
+#include <softraster/state.hpp>
+#include <softraster/status.hpp>
+
+#include <draw_inputs.hpp>
+#include <shading_models.hpp>
+
+#include <cstdint>
+#include <filesystem>
+#include <string>
+#include <vector>
+
+namespace crosscheck {
+
+// One draw: a mesh in model-neutral form, drawn with the pipeline state and the shading model
+// (a row of shaders/shading_models.hpp) the scene file names.
+struct Draw {
+  std::string name;
+  const shaders::ShadingModel* shading = nullptr;  // never null in a loaded scene
+  softraster::PipelineState state;
+  shaders::Mesh mesh;                   // positions and a colour per vertex
+  bool indexed = true;                  // false: vertices are drawn in order (vkCmdDraw)
+  float pointSize = 1.0f;               // the shader's gl_PointSize (a uniform)
+  std::vector<std::uint32_t> indices;
+};
+
+struct Scene {
+  std::filesystem::path path;
+  std::string description;
+  std::uint32_t width = 320, height = 240;
+  softraster::Vec4 clearColour{0, 0, 0, 1};
+  float clearDepth = 1.0f;
+  softraster::DepthFormat depthFormat = softraster::DepthFormat::D32Sfloat;
+  std::uint32_t samples = 1;  // 1 or 4 (MSAA: compared after the resolve; depth via sample 0)
+  softraster::Mat4 viewProjection = softraster::Mat4::identity();
+  std::vector<Draw> draws;
+  Tolerance tolerance;
+};
+
+// Loads and validates a scene. `overrides` are "key.path=JSON value" assignments applied to the
+// file's JSON before it is read (e.g. "camera.yaw=90"). The error is one line:
+// "FILE: PLACE: what is wrong".
+softraster::Result<Scene> loadScene(const std::filesystem::path& path, const std::vector<std::string>& overrides = {});
+
+}  // namespace crosscheck

@@ -1,0 +1,171 @@
+// The HTML report without a browser: page structure (summary table, worst-first order, lazy
+// images, nothing from the network), the images written per scene, and the value readout's pixel
+// data decoded back to the frames' exact bytes. The page in a real browser: report_chromium_test.sh.
+#include "output/artifacts.hpp"
+#include "output/report/report.hpp"
+#include "run/conformance.hpp"
+
+#include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
+#include <zlib.h>
+
+#include <bit>
+#include <ctime>
+#include <filesystem>
+#include <fstream>
+#include <regex>
+#include <sstream>
+
+namespace {
+
+using namespace crosscheck;
+namespace fs = std::filesystem;
+
+const fs::path kFixtures = fs::path(TEST_DATA_DIR) / "conformance";
+const fs::path kArtifacts = ARTIFACTS_DIR;
+
+std::size_t count(const std::string& text, const std::string& what) {
+  std::size_t n = 0;
+  for (auto at = text.find(what); at != std::string::npos; at = text.find(what, at + what.size())) ++n;
+  return n;
+}
+
+std::vector<std::uint8_t> fromBase64(const std::string& text) {
+  static const std::string kAlphabet = "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789+/";
+  std::vector<std::uint8_t> out;
+  std::uint32_t buffer = 0;
+  int bits = 0;
+  for (char c : text) {
+    if (c == '=') break;
+    buffer = (buffer << 6) | static_cast<std::uint32_t>(kAlphabet.find(c));
+    bits += 6;
+    if (bits >= 8) {
+      bits -= 8;
+      out.push_back(static_cast<std::uint8_t>(buffer >> bits));
+    }
+  }
+  return out;
+}
+
+std::vector<std::uint8_t> inflated(const std::vector<std::uint8_t>& data, std::size_t size) {
+  std::vector<std::uint8_t> out(size + 1);
+  uLongf length = static_cast<uLongf>(out.size());
+  EXPECT_EQ(uncompress(out.data(), &length, data.data(), static_cast<uLong>(data.size())), Z_OK);
+  out.resize(length);
+  return out;
+}
+
+// Runs the fixtures like `crosscheck report` does and writes the report into the artifacts.
+std::vector<SceneResult> runIntoReport(const fs::path& dir) {
+  fs::remove_all(dir);
+  ConformanceOptions options;
+  options.onFrames = [&](SceneResult& result, const Scene& scene, const Frame& soft, const Frame& vulkan) {
+    const softraster::Status images = writeSceneImages(dir, result.entry.name, &result, scene, soft, vulkan);
+    return !images ? images : writePixelData(dir, fs::path(result.entry.name) / "pixels.js", &result, soft, vulkan);
+  };
+  std::vector<SceneEntry> suite;
+  for (const char* name : {"broken_obj", "depth_slope", "flat_triangle", "malformed"}) {
+    suite.push_back({name, kFixtures / (std::string(name) + ".json")});
+  }
+  return runConformance(suite, options);
+}
+
+TEST(Report, PageHasSummaryTableLazyImagesAndNoNetwork) {
+  const fs::path dir = kArtifacts / "report-unit";
+  const auto results = runIntoReport(dir);
+  RunResults run;
+  run.scenes = results;
+  run.finished = std::time(nullptr);
+  run.commandLine = "crosscheck report";
+  run.seconds = 1.5;
+  run.jobs = 2;
+  const softraster::Status written = writeReport(dir, run);
+  ASSERT_TRUE(written) << written.message();
+  std::ifstream in(dir / "index.html");
+  std::stringstream buffer;
+  buffer << in.rdbuf();
+  const std::string html = buffer.str();
+
+  EXPECT_EQ(count(html, "<table id=\"summary\""), 1u);
+  EXPECT_EQ(count(html, "<tr class=\"st-"), 4u);                // one row per scene
+  EXPECT_EQ(count(html, "<details class=\"scene"), 4u);         // one section per scene
+  EXPECT_EQ(count(html, "<img loading=\"lazy\""), 2u * 7u);     // two scenes rendered, seven images each
+  EXPECT_EQ(count(html, "<img "), count(html, "<img loading=\"lazy\""));
+  EXPECT_EQ(count(html, "data-pixels=\""), 2u);
+  EXPECT_NE(html.find("image-rendering: pixelated"), std::string::npos);
+  EXPECT_NE(html.find("<p class=\"counts\">2 passed, 2 failed</p>"), std::string::npos);
+  EXPECT_FALSE(std::regex_search(html, std::regex("(src|href)=\"(https?:)?//"))) << "refers to the network";
+  EXPECT_EQ(html.find("<link"), std::string::npos) << "a stylesheet from elsewhere";
+  // Worst first: the two crashes (by name), then the passes.
+  const auto at = [&](const std::string& name) {
+    const auto position = html.find(">" + name + "</a>");
+    EXPECT_NE(position, std::string::npos) << name;
+    return position;
+  };
+  EXPECT_LT(at("broken_obj"), at("malformed"));
+  EXPECT_LT(at("malformed"), at("depth_slope"));
+  EXPECT_LT(at("depth_slope"), at("flat_triangle"));
+  for (const SceneResult& r : results) {
+    for (const SceneImage& image : r.images) {
+      EXPECT_TRUE(fs::is_regular_file(dir / image.file)) << image.file;
+      EXPECT_NE(html.find("src=\"" + image.file.generic_string() + "\""), std::string::npos) << image.file;
+    }
+  }
+}
+
+TEST(Report, WorstFirstOrdersByStatusThenMetrics) {
+  std::vector<SceneResult> results(5);
+  const Outcome outcomes[] = {Outcome::Pass, Outcome::Fail, Outcome::Skip, Outcome::Fail, Outcome::Crash};
+  for (std::size_t i = 0; i < results.size(); ++i) {
+    results[i].entry.name = "s" + std::to_string(i);
+    results[i].outcome = outcomes[i];
+    if (outcomes[i] == Outcome::Fail || outcomes[i] == Outcome::Pass) results[i].comparison = Comparison{};
+  }
+  results[1].comparison->coverageMismatches = 2;
+  results[3].comparison->coverageMismatches = 9;
+  EXPECT_EQ(worstFirst(results), (std::vector<std::size_t>{4, 3, 1, 0, 2}));
+}
+
+TEST(Report, PixelDataDecodesToTheFramesExactly) {
+  Frame soft, vulkan;
+  soft.width = vulkan.width = 3;
+  soft.height = vulkan.height = 2;
+  for (int i = 0; i < 24; ++i) soft.rgba.push_back(static_cast<std::uint8_t>(i * 11)), vulkan.rgba.push_back(static_cast<std::uint8_t>(255 - i));
+  soft.depth = {0.0f, 0.25f, 0.5f, 1.0f, 0x1p-24f, 0.99999994f};
+  vulkan.depth = {1.0f, 0.75f, 0.5f, 0.125f, 0x1p-23f, 0.3f};
+  const std::string script = pixelDataScript("name \"quoted\" </script>", soft, vulkan);
+  const std::string prefix = "crosscheckPixels(";
+  ASSERT_EQ(script.rfind(prefix, 0), 0u);
+  ASSERT_EQ(script.substr(script.size() - 3), ");\n");
+  // The call's arguments are JSON: parse them as an array.
+  const auto args = nlohmann::json::parse("[" + script.substr(prefix.size(), script.size() - prefix.size() - 3) + "]");
+  EXPECT_EQ(args[0], "name \"quoted\" </script>");
+  const auto& d = args[1];
+  EXPECT_EQ(d["w"], 3);
+  EXPECT_EQ(d["h"], 2);
+  EXPECT_EQ(inflated(fromBase64(d["soft"]), 24), soft.rgba);
+  EXPECT_EQ(inflated(fromBase64(d["vulkan"]), 24), vulkan.rgba);
+  const auto depthBytes = inflated(fromBase64(d["softDepth"]), 24);
+  ASSERT_EQ(depthBytes.size(), 24u);
+  for (std::size_t i = 0; i < 6; ++i) {
+    std::uint32_t bits = 0;
+    for (int b = 0; b < 4; ++b) bits |= std::uint32_t{depthBytes[4 * i + b]} << (8 * b);  // little-endian
+    EXPECT_EQ(std::bit_cast<float>(bits), soft.depth[i]) << i;
+  }
+  EXPECT_EQ(inflated(fromBase64(d["vulkanDepth"]), 24).size(), 24u);
+}
+
+TEST(Report, DepthViewsShareOneRange) {
+  Frame a, b;
+  a.depth = {1.0f, 0.4f, 0.6f};
+  b.depth = {0.3f, 1.0f, 0.5f};
+  EXPECT_EQ(sharedDepthRange(a, b, 1.0f), std::make_pair(0.3f, 0.6f));
+  Frame flat;
+  flat.depth = {1.0f, 0.75f};
+  EXPECT_EQ(sharedDepthRange(flat, flat, 1.0f), std::make_pair(0.75f, 1.0f));  // one depth: up to the clear depth
+  Frame empty;
+  empty.depth = {1.0f, 1.0f};
+  EXPECT_EQ(sharedDepthRange(empty, empty, 1.0f), std::make_pair(0.0f, 1.0f));
+}
+
+}  // namespace
