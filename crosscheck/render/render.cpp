@@ -36,22 +36,47 @@ vkref::ShaderProgram programOf(const shaders::ShadingModel& model) {
 
 }  // namespace
 
-softraster::Result<Frame> renderSoftraster(const Scene& scene, const softraster::ContextOptions& options) {
-  softraster::Framebuffer framebuffer(scene.width, scene.height, scene.depthFormat, scene.samples);
-  const softraster::Context context(options);
-  std::vector<shaders::SoftrasterDraw> draws;  // each draw's vertices and uniforms in its model's types
-  draws.reserve(scene.draws.size());
-  for (const Draw& draw : scene.draws) draws.push_back(draw.shading->prepareSoftraster(draw.mesh, parametersOf(scene, draw)));
-  // Timed: clear, draws, MSAA resolve (not the framebuffer's allocation, not the Frame below).
-  const auto start = Clock::now();
+namespace {
+
+// Clears `framebuffer` and draws the scene into it (every sample, not resolved).
+softraster::Status drawScene(const Scene& scene, const softraster::Context& context,
+                             const std::vector<shaders::SoftrasterDraw>& draws, softraster::Framebuffer& framebuffer) {
   // The 1/z buffer is cleared to 0 (infinitely far); it is not a Vulkan mode.
   framebuffer.clear(scene.clearColour,
-                    options.depthMode == softraster::DepthMode::InverseZ ? 0.0f : scene.clearDepth);
+                    context.options().depthMode == softraster::DepthMode::InverseZ ? 0.0f : scene.clearDepth);
   for (std::size_t i = 0; i < scene.draws.size(); ++i) {
     const Draw& draw = scene.draws[i];
     const softraster::Status status = draws[i].draw(context, draw.state, draw.indexed, draw.indices, framebuffer);
     if (!status) return status.prefixed("softraster: draw '" + draw.name + "'");
   }
+  return {};
+}
+
+// Each draw's vertices and uniforms in its model's types.
+std::vector<shaders::SoftrasterDraw> softrasterDraws(const Scene& scene) {
+  std::vector<shaders::SoftrasterDraw> draws;
+  draws.reserve(scene.draws.size());
+  for (const Draw& draw : scene.draws) draws.push_back(draw.shading->prepareSoftraster(draw.mesh, parametersOf(scene, draw)));
+  return draws;
+}
+
+}  // namespace
+
+softraster::Result<softraster::Framebuffer> renderSoftrasterSamples(const Scene& scene,
+                                                                   const softraster::ContextOptions& options) {
+  softraster::Framebuffer framebuffer(scene.width, scene.height, scene.depthFormat, scene.samples);
+  const softraster::Context context(options);
+  if (softraster::Status drawn = drawScene(scene, context, softrasterDraws(scene), framebuffer); !drawn) return drawn;
+  return framebuffer;
+}
+
+softraster::Result<Frame> renderSoftraster(const Scene& scene, const softraster::ContextOptions& options) {
+  softraster::Framebuffer framebuffer(scene.width, scene.height, scene.depthFormat, scene.samples);
+  const softraster::Context context(options);
+  const std::vector<shaders::SoftrasterDraw> draws = softrasterDraws(scene);
+  // Timed: clear, draws, MSAA resolve (not the framebuffer's allocation, not the Frame below).
+  const auto start = Clock::now();
+  if (softraster::Status drawn = drawScene(scene, context, draws, framebuffer); !drawn) return drawn;
   if (framebuffer.samples() > 1) framebuffer = framebuffer.resolve();  // as vkref reads Vulkan's back
   const double milliseconds = millisecondsSince(start);
   Frame frame;

@@ -29,6 +29,10 @@ struct Frame {
 
 // Errors: "softraster: draw 'NAME': what is wrong", "vulkan: what is wrong".
 softraster::Result<Frame> renderSoftraster(const Scene& scene, const softraster::ContextOptions& options = {});
+// The scene drawn by softraster, every sample as stored (not resolved, depth in its format):
+// what the fast path's bit-identity test compares with the scalar path's.
+softraster::Result<softraster::Framebuffer> renderSoftrasterSamples(const Scene& scene,
+                                                                   const softraster::ContextOptions& options);
 softraster::Result<Frame> renderVulkan(const Scene& scene, vkref::Renderer& renderer);
 
 // A Vulkan renderer on the device the options pick (lavapipe by default); the error is vkref's

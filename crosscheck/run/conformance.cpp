@@ -103,21 +103,28 @@ std::vector<SceneResult> runConformance(const std::vector<SceneEntry>& suite, co
   std::atomic<std::size_t> next{0};
   std::mutex lock;
   std::size_t done = 0;
+  const std::size_t jobs = std::clamp<std::size_t>(options.jobs, 1, std::max<std::size_t>(suite.size(), 1));
+  // The thread rule (docs/architecture.md): N jobs share the cores, so each job's softraster
+  // Context draws with cores / N threads (at least one) unless a count was asked for.
+  ConformanceOptions perJob = options;
+  if (perJob.softraster.threads == 0) {
+    const std::size_t cores = std::max(1u, std::thread::hardware_concurrency());
+    perJob.softraster.threads = static_cast<unsigned>(std::max<std::size_t>(1, cores / jobs));
+  }
   const auto worker = [&] {
     VulkanSlot vulkan;
     vulkan.get(options.device);  // a failure is reported per scene
     for (std::size_t i = next++; i < suite.size(); i = next++) {
-      SceneResult result = runOne(suite[i], options, vulkan);
+      SceneResult result = runOne(suite[i], perJob, vulkan);
       const std::lock_guard guard(lock);
       results[i] = std::move(result);
       ++done;
       if (options.onFinished) options.onFinished(i, results[i], done);
     }
   };
-  const std::size_t threads = std::clamp<std::size_t>(options.jobs, 1, std::max<std::size_t>(suite.size(), 1));
   {
     std::vector<std::jthread> helpers;
-    for (std::size_t t = 1; t < threads; ++t) helpers.emplace_back(worker);
+    for (std::size_t t = 1; t < jobs; ++t) helpers.emplace_back(worker);
     worker();
   }  // joins the helpers
   return results;

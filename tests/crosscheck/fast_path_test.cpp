@@ -1,0 +1,94 @@
+// Bit identity of the fast path: every scene in scenes/ drawn by softraster's Method::Exact (the
+// SIMD fast path, in row bands on 1, 2 and 7 threads) and by Method::ExactScalar (the reference,
+// one pixel at a time on one thread), compared byte for byte: colour and depth of every sample,
+// before any resolve. Also with the course's 1/z depth buffer on the D32 scenes. Each scene is its
+// own test case (FastPath/SceneDrawn.MatchesScalar/<name>).
+#include "render/render.hpp"
+#include "scene/scene.hpp"
+
+#include <softraster/detail/fast/batch.hpp>
+#include <softraster/pipeline.hpp>
+#include <vertex_color.hpp>
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <filesystem>
+#include <string>
+#include <vector>
+
+namespace {
+
+const std::filesystem::path kScenes = SCENES_DIR;
+
+std::vector<std::string> sceneNames() {
+  std::vector<std::string> names;
+  for (const auto& entry : std::filesystem::directory_iterator(kScenes)) {
+    if (entry.path().extension() == ".json") names.push_back(entry.path().stem().string());
+  }
+  std::sort(names.begin(), names.end());
+  return names;
+}
+
+// The first sample whose colour or depth differs, as a readable failure; empty when identical.
+std::string firstDifference(const softraster::Framebuffer& fast, const softraster::Framebuffer& scalar) {
+  const std::size_t samples = scalar.depthStorage().size();
+  if (fast.depthStorage().size() != samples || fast.colour().size() != scalar.colour().size()) return "sizes differ";
+  const std::size_t perPixel = scalar.samples();
+  for (std::size_t s = 0; s < samples; ++s) {
+    const bool colourDiffers =
+        !std::equal(fast.colour().begin() + 4 * s, fast.colour().begin() + 4 * s + 4, scalar.colour().begin() + 4 * s);
+    if (colourDiffers || fast.depthStorage()[s] != scalar.depthStorage()[s]) {
+      const std::size_t pixel = s / perPixel;
+      return "pixel (" + std::to_string(pixel % scalar.width()) + ", " + std::to_string(pixel / scalar.width()) +
+             ") sample " + std::to_string(s % perPixel) + ": depth " + std::to_string(fast.depthStorage()[s]) +
+             " vs " + std::to_string(scalar.depthStorage()[s]) + (colourDiffers ? ", colour differs" : "");
+    }
+  }
+  return {};
+}
+
+void expectFastMatchesScalar(const crosscheck::Scene& scene, softraster::ContextOptions options) {
+  options.method = softraster::Method::ExactScalar;
+  options.threads = 1;
+  const auto scalar = crosscheck::renderSoftrasterSamples(scene, options);
+  ASSERT_TRUE(scalar) << scalar.error();
+  for (const unsigned threads : {1u, 2u, 7u}) {
+    options.method = softraster::Method::Exact;
+    options.threads = threads;
+    const auto fast = crosscheck::renderSoftrasterSamples(scene, options);
+    ASSERT_TRUE(fast) << fast.error();
+    EXPECT_EQ(firstDifference(*fast, *scalar), "") << threads << " threads";
+  }
+}
+
+class SceneDrawn : public ::testing::TestWithParam<std::string> {};
+
+}  // namespace
+
+// The scenes' shaders shade batches and this CPU runs the fast path, or the comparison below
+// would compare the scalar path with itself.
+TEST(FastPath, IsTakenHere) {
+  static_assert(softraster::ShadesBatches<shaders::VertexColor>);
+  static_assert(softraster::ShadesBatches<shaders::VertexColorFlat>);
+  static_assert(softraster::ShadesBatches<shaders::VertexColorNoPerspective>);
+#if SOFTRASTER_HAS_FAST_PATH
+  if (!softraster::detail::fast::cpuRunsFastPath()) GTEST_SKIP() << "this CPU has no AVX2 and FMA";
+#else
+  GTEST_SKIP() << "no fast path on this architecture";
+#endif
+}
+
+TEST_P(SceneDrawn, MatchesScalar) {
+  const auto scene = crosscheck::loadScene(kScenes / (GetParam() + ".json"));
+  ASSERT_TRUE(scene) << scene.error();
+  expectFastMatchesScalar(*scene, {});
+  if (scene->depthFormat == softraster::DepthFormat::D32Sfloat && scene->samples == 1) {
+    softraster::ContextOptions inverseZ;
+    inverseZ.depthMode = softraster::DepthMode::InverseZ;
+    expectFastMatchesScalar(*scene, inverseZ);
+  }
+}
+
+INSTANTIATE_TEST_SUITE_P(FastPath, SceneDrawn, ::testing::ValuesIn(sceneNames()),
+                         [](const ::testing::TestParamInfo<std::string>& info) { return info.param; });
