@@ -35,7 +35,7 @@ std::string benchTable(const BenchResults& results) {
   out += "times in ms per frame; setup = make ready + first frame; mem = colour + depth bytes at memset speed\n";
   out += "lavapipe/x = lavapipe median / this median (> 1: softraster is faster)\n";
   out += "agreement with Vulkan = coverage mismatches / colour max |d| / depth max |d|\n\n";
-  out += format("%-24s %-12s %9s  %-23s %3s %9s %9s %9s %8s %10s  %s\n", "scene", "size", "triangles", "renderer",
+  out += format("%-26s %-12s %9s  %-23s %3s %9s %9s %9s %8s %10s  %s\n", "scene", "size", "triangles", "renderer",
                 "thr", "median", "min", "setup", "mem", "lavapipe/x", "agreement");
   for (const BenchScene& scene : results.scenes) {
     const std::string name = scene.scene.stem().string();
@@ -44,7 +44,7 @@ std::string benchTable(const BenchResults& results) {
     for (const BenchRun& run : scene.runs) {
       const std::string renderer = run.method.empty() ? run.renderer : run.renderer + " " + run.method;
       const std::string ratio = run.ratioVsLavapipe > 0 ? format("%.2f", run.ratioVsLavapipe) : "-";
-      out += format("%-24s %-12s %9llu  %-23s %3u %9.2f %9.2f %9.2f %8.2f %10s  %s\n", name.c_str(), size.c_str(),
+      out += format("%-26s %-12s %9llu  %-23s %3u %9.2f %9.2f %9.2f %8.2f %10s  %s\n", name.c_str(), size.c_str(),
                     static_cast<unsigned long long>(scene.triangles), renderer.c_str(), run.threads,
                     run.medianMilliseconds, run.minMilliseconds, run.setupMilliseconds,
                     scene.memoryLimitMilliseconds, ratio.c_str(), agreementText(run).c_str());
