@@ -4,19 +4,38 @@
 //   crosscheck compare SCENE [--out DIR] [--json]
 //   crosscheck conformance [SCENE|DIR ...] [--expectations FILE] [--jobs N] [--shard I/N] [--junit FILE] [--out DIR]
 //   crosscheck report [SCENE|DIR ...] -o DIR [--expectations FILE] [--jobs N] [--shard I/N] [--junit FILE]
+//   crosscheck bench [SCENE|DIR ...] [--frames N] [--warmup N] [--threads N] [--json FILE]
+// render and compare also take --method exact|exact-scalar and --threads N (softraster's).
 // Exit status: 0 success / within tolerance / nothing unexpected, 1 outside tolerance, a failed
 // render or an unexpected conformance result, 2 bad usage.
 // This file only sets up CLI11 and hands the parsed options to one subcommand in cli/
-// (cli/commands.hpp); a parse error is exit status 2 with the usage below.
+// (cli/commands.hpp); a parse error is exit status 2 with the usage below, a bad value of a
+// number or method option one error line naming the option, exit status 2.
 #include "cli/commands.hpp"
 
 #include <CLI/CLI.hpp>
 
+#include <charconv>
 #include <cstdio>
+#include <optional>
 #include <string>
 #include <vector>
 
 namespace {
+
+// A whole number option in min..max, or nullopt after printing one error line naming it.
+std::optional<unsigned> wholeNumber(const char* option, const std::string& text, unsigned min, unsigned max) {
+  unsigned value = 0;
+  const char* end = text.data() + text.size();
+  const auto [ptr, ec] = std::from_chars(text.data(), end, value);
+  if (text.empty() || ec != std::errc() || ptr != end || value < min || value > max) {
+    std::fprintf(stderr, "crosscheck: %s %s: expected a whole number from %u to %u\n", option, text.c_str(), min, max);
+    return std::nullopt;
+  }
+  return value;
+}
+
+constexpr unsigned kMaxThreads = 1024;
 
 constexpr const char* kUsage =
     "usage: crosscheck render SCENE --renderer soft|vulkan -o OUT.png [--depth-out OUT.png]\n"
@@ -24,6 +43,7 @@ constexpr const char* kUsage =
     "       crosscheck conformance [SCENE|DIR ...] [--expectations FILE] [--jobs N] [--shard I/N] [--junit FILE] "
     "[--out DIR]\n"
     "       crosscheck report [SCENE|DIR ...] -o DIR [--expectations FILE] [--jobs N] [--shard I/N] [--junit FILE]\n"
+    "       crosscheck bench [SCENE|DIR ...] [--frames N] [--warmup N] [--threads N] [--json FILE]\n"
     "       (crosscheck SUBCOMMAND --help for every option)";
 
 // Flags several subcommands share, as typed.
@@ -33,9 +53,26 @@ struct CommonFlags {
   bool validation = false;
   std::string fma = "auto";
   std::string softrasterDepth = "z";  // render only: "inverse-z" is the course's 1/z buffer
+  std::string method = "exact";       // render and compare: exact or exact-scalar
+  std::string threadsText = "0";      // render and compare: softraster's threads, 0 = every core
+  unsigned threads = 0;               // threadsText, once checked()
+
+  // Checks method and threads; false after printing one error line.
+  bool checked() {
+    if (method != "exact" && method != "exact-scalar") {
+      std::fprintf(stderr, "crosscheck: --method %s: expected exact or exact-scalar\n", method.c_str());
+      return false;
+    }
+    const auto parsed = wholeNumber("--threads", threadsText, 0, kMaxThreads);
+    if (!parsed) return false;
+    threads = *parsed;
+    return true;
+  }
 
   softraster::ContextOptions softraster() const {
     softraster::ContextOptions options;
+    options.method = method == "exact-scalar" ? softraster::Method::ExactScalar : softraster::Method::Exact;
+    options.threads = threads;
     if (fma != "auto") options.fusedMultiplyAdd = fma == "fused";
     if (softrasterDepth == "inverse-z") options.depthMode = softraster::DepthMode::InverseZ;
     return options;
@@ -67,6 +104,9 @@ int main(int argc, char** argv) {
   };
   auto addCommon = [&](CLI::App* cmd) {
     cmd->add_option("--set", common.overrides, "Override a scene value, e.g. camera.yaw=90 (repeatable)");
+    cmd->add_option("--method", common.method,
+                    "softraster's method: exact (SIMD fast path where possible, default) or exact-scalar");
+    cmd->add_option("--threads", common.threadsText, "softraster's drawing threads; 0 (default) = every core");
     addDevice(cmd);
   };
 
@@ -116,6 +156,20 @@ int main(int argc, char** argv) {
   addSuite(reportCommand);
   reportCommand->add_option("-o,--output", reportDir, "Report directory")->required();
 
+  crosscheck::cli::BenchCommand bench;
+  std::string framesText = "15", warmupText = "3", benchThreadsText = "0";
+  CLI::App* benchCommand = app.add_subcommand(
+      "bench", "Time steady-state frames of softraster (exact, exact-scalar) and lavapipe, and their agreement");
+  benchCommand->add_option("SCENES", bench.inputs,
+                           "Scene files and directories (their *.json files); default: scenes/bench of the current "
+                           "directory");
+  benchCommand->add_option("--frames", framesText, "Timed frames per renderer (default 15)");
+  benchCommand->add_option("--warmup", warmupText, "Untimed frames per renderer before them (default 3)");
+  benchCommand->add_option("--threads", benchThreadsText,
+                           "softraster's threads and lavapipe's LP_NUM_THREADS; 0 (default) = every core");
+  benchCommand->add_option("--json", bench.jsonFile, "Write the results as JSON to this file");
+  addDevice(benchCommand);
+
   try {
     app.parse(argc, argv);
   } catch (const CLI::CallForHelp& e) {
@@ -125,6 +179,21 @@ int main(int argc, char** argv) {
     return 2;
   }
 
+  if ((render->parsed() || compare->parsed()) && !common.checked()) return 2;
+  if (benchCommand->parsed()) {
+    const auto frames = wholeNumber("--frames", framesText, 1, 100000);
+    if (!frames) return 2;
+    const auto warmup = wholeNumber("--warmup", warmupText, 0, 100000);
+    if (!warmup) return 2;
+    const auto threads = wholeNumber("--threads", benchThreadsText, 0, kMaxThreads);
+    if (!threads) return 2;
+    bench.frames = *frames;
+    bench.warmup = *warmup;
+    bench.threads = *threads;
+    bench.device = common.deviceOptions();
+    bench.softraster = common.softraster();
+    return crosscheck::cli::benchCommand(bench);
+  }
   if (render->parsed()) {
     return crosscheck::cli::renderCommand({common.sceneOptions(scenePath), renderer, output, depthOutput, depthRange});
   }

@@ -1,10 +1,12 @@
-// The four subcommands behind the command line, one file each in cli/: what each was asked for
+// The subcommands behind the command line, one file each in cli/: what each was asked for
 // (filled by main.cpp from the arguments) and the function that does it, prints its output and
 // returns the exit status.
 //   render       one scene, one renderer, PNGs                  0 written, 1 an error
 //   compare      one scene, both renderers, text or JSON        0 within tolerance, 1 outside or an error
 //   conformance  a suite of scenes, one line each, JUnit, PNGs  0 nothing unexpected, 1 something
 //   report       the conformance run plus DIR/index.html        as conformance
+//   bench        frame times of every renderer, table and JSON  0 every method agrees with lavapipe,
+//                                                               1 a renderer failed or disagrees
 // 2 is bad usage everywhere (main.cpp's parse errors; the suite commands' unreadable
 // expectations, shards, folders or output paths).
 // Errors print as one line, "crosscheck: ..." on stderr.
@@ -21,6 +23,7 @@
 
 #include <functional>
 #include <string>
+#include <string_view>
 #include <vector>
 
 namespace crosscheck::cli {
@@ -79,5 +82,19 @@ struct SuiteOutputs {
   std::string doneLine;
 };
 int runSuite(const SuiteCommand& command, const SuiteOutputs& outputs);
+
+// What bench runs with no scene arguments, from the repository root.
+inline constexpr std::string_view kDefaultBenchDir = "scenes/bench";
+
+struct BenchCommand {
+  std::vector<std::string> inputs;      // scene files and directories; empty: scenes/bench
+  unsigned frames = 15;                 // timed frames per renderer, at least 1
+  unsigned warmup = 3;
+  unsigned threads = 0;                 // softraster threads and LP_NUM_THREADS; 0: every core
+  std::string jsonFile;                 // empty: no JSON
+  vkref::DeviceOptions device;
+  softraster::ContextOptions softraster;
+};
+int benchCommand(const BenchCommand& command);
 
 }  // namespace crosscheck::cli

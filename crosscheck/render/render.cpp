@@ -1,4 +1,4 @@
-// Scene -> softraster and Scene -> vkref adapters (see render.hpp). Both draw every Draw through
+// Scene -> softraster and Scene -> vkref adapters, one frame or prepared for many (see render.hpp). Both draw every Draw through
 // its row of the shading-model table (shaders/shading_models.hpp); neither knows a model by name.
 #include "render/render.hpp"
 
@@ -36,63 +36,75 @@ vkref::ShaderProgram programOf(const shaders::ShadingModel& model) {
 
 }  // namespace
 
-namespace {
+SoftrasterScene::SoftrasterScene(const Scene& scene, const softraster::ContextOptions& options)
+    : scene_(scene),
+      options_(options),
+      context_(options),
+      framebuffer_(scene.width, scene.height, scene.depthFormat, scene.samples) {
+  draws_.reserve(scene.draws.size());  // each draw's vertices and uniforms in its model's types
+  for (const Draw& draw : scene.draws) draws_.push_back(draw.shading->prepareSoftraster(draw.mesh, parametersOf(scene, draw)));
+}
 
-// Clears `framebuffer` and draws the scene into it (every sample, not resolved).
-softraster::Status drawScene(const Scene& scene, const softraster::Context& context,
-                             const std::vector<shaders::SoftrasterDraw>& draws, softraster::Framebuffer& framebuffer) {
+softraster::Status SoftrasterScene::render() {
+  // Timed: clear, draws, MSAA resolve (not the framebuffer's allocation, not the Frame).
+  const auto start = Clock::now();
   // The 1/z buffer is cleared to 0 (infinitely far); it is not a Vulkan mode.
-  framebuffer.clear(scene.clearColour,
-                    context.options().depthMode == softraster::DepthMode::InverseZ ? 0.0f : scene.clearDepth);
-  for (std::size_t i = 0; i < scene.draws.size(); ++i) {
-    const Draw& draw = scene.draws[i];
-    const softraster::Status status = draws[i].draw(context, draw.state, draw.indexed, draw.indices, framebuffer);
+  framebuffer_.clear(scene_.clearColour,
+                     options_.depthMode == softraster::DepthMode::InverseZ ? 0.0f : scene_.clearDepth);
+  for (std::size_t i = 0; i < scene_.draws.size(); ++i) {
+    const Draw& draw = scene_.draws[i];
+    const softraster::Status status = draws_[i].draw(context_, draw.state, draw.indexed, draw.indices, framebuffer_);
     if (!status) return status.prefixed("softraster: draw '" + draw.name + "'");
   }
+  if (scene_.samples > 1) resolved_ = framebuffer_.resolve();  // as vkref reads Vulkan's back
+  milliseconds_ = millisecondsSince(start);
   return {};
 }
 
-// Each draw's vertices and uniforms in its model's types.
-std::vector<shaders::SoftrasterDraw> softrasterDraws(const Scene& scene) {
-  std::vector<shaders::SoftrasterDraw> draws;
-  draws.reserve(scene.draws.size());
-  for (const Draw& draw : scene.draws) draws.push_back(draw.shading->prepareSoftraster(draw.mesh, parametersOf(scene, draw)));
-  return draws;
-}
+namespace {
 
-}  // namespace
-
-softraster::Result<softraster::Framebuffer> renderSoftrasterSamples(const Scene& scene,
-                                                                   const softraster::ContextOptions& options) {
-  softraster::Framebuffer framebuffer(scene.width, scene.height, scene.depthFormat, scene.samples);
-  const softraster::Context context(options);
-  if (softraster::Status drawn = drawScene(scene, context, softrasterDraws(scene), framebuffer); !drawn) return drawn;
-  return framebuffer;
-}
-
-softraster::Result<Frame> renderSoftraster(const Scene& scene, const softraster::ContextOptions& options) {
-  softraster::Framebuffer framebuffer(scene.width, scene.height, scene.depthFormat, scene.samples);
-  const softraster::Context context(options);
-  const std::vector<shaders::SoftrasterDraw> draws = softrasterDraws(scene);
-  // Timed: clear, draws, MSAA resolve (not the framebuffer's allocation, not the Frame below).
-  const auto start = Clock::now();
-  if (softraster::Status drawn = drawScene(scene, context, draws, framebuffer); !drawn) return drawn;
-  if (framebuffer.samples() > 1) framebuffer = framebuffer.resolve();  // as vkref reads Vulkan's back
-  const double milliseconds = millisecondsSince(start);
+Frame frameFrom(const Scene& scene, softraster::Framebuffer& framebuffer, double milliseconds, bool move) {
   Frame frame;
   frame.milliseconds = milliseconds;
   frame.width = scene.width;
   frame.height = scene.height;
-  frame.rgba = std::move(framebuffer.colour());
   frame.depthFormat = scene.depthFormat;
   frame.depth.resize(framebuffer.depthStorage().size());
   for (std::size_t i = 0; i < frame.depth.size(); ++i) frame.depth[i] = framebuffer.depth(i);
-  frame.depthStorage = std::move(framebuffer.depthStorage());
+  if (move) {
+    frame.rgba = std::move(framebuffer.colour());
+    frame.depthStorage = std::move(framebuffer.depthStorage());
+  } else {
+    frame.rgba = framebuffer.colour();
+    frame.depthStorage = framebuffer.depthStorage();
+  }
   return frame;
 }
 
-softraster::Result<Frame> renderVulkan(const Scene& scene, vkref::Renderer& renderer) {
-  std::vector<vkref::ShaderProgram> programs;  // one per draw, alive until the frame is rendered
+}  // namespace
+
+Frame SoftrasterScene::frame() const {
+  softraster::Framebuffer copy = scene_.samples > 1 ? resolved_ : framebuffer_;
+  return frameFrom(scene_, copy, milliseconds_, true);
+}
+
+Frame SoftrasterScene::takeFrame() { return frameFrom(scene_, output(), milliseconds_, true); }
+
+softraster::Result<Frame> renderSoftraster(const Scene& scene, const softraster::ContextOptions& options) {
+  SoftrasterScene prepared(scene, options);
+  if (const softraster::Status status = prepared.render(); !status) return status;
+  return prepared.takeFrame();
+}
+
+softraster::Result<softraster::Framebuffer> renderSoftrasterSamples(const Scene& scene,
+                                                                   const softraster::ContextOptions& options) {
+  SoftrasterScene prepared(scene, options);
+  if (const softraster::Status status = prepared.render(); !status) return status;
+  return prepared.samples();
+}
+
+softraster::Result<vkref::PreparedFrame> prepareVulkan(const Scene& scene, vkref::Renderer& renderer) {
+  std::vector<vkref::ShaderProgram> programs;  // one per draw, alive until the frame is prepared
   programs.reserve(scene.draws.size());
   vkref::FrameRequest request;
   request.width = scene.width;
@@ -111,24 +123,35 @@ softraster::Result<Frame> renderVulkan(const Scene& scene, vkref::Renderer& rend
     call.pushConstants = draw.shading->uniformBytes(parametersOf(scene, draw));
     request.draws.push_back(std::move(call));
   }
-  // Timed: the submission alone (clear, draws, resolve), as softraster's span is its clear, draws
-  // and resolve; preparing (uploads, pipelines, recording) and reading back are not.
   auto prepared = renderer.prepare(request);
   if (!prepared) return prepared.status().prefixed("vulkan");
-  const auto start = Clock::now();
-  if (softraster::Status submitted = renderer.submit(*prepared); !submitted) return submitted.prefixed("vulkan");
-  const double milliseconds = millisecondsSince(start);
-  auto readBack = renderer.readBack(*prepared);
+  return std::move(*prepared);
+}
+
+softraster::Result<Frame> readVulkan(const Scene& scene, vkref::Renderer& renderer, const vkref::PreparedFrame& prepared) {
+  auto readBack = renderer.readBack(prepared);
   if (!readBack) return readBack.status().prefixed("vulkan");
   vkref::FrameImages images = std::move(*readBack);
   Frame frame;
-  frame.milliseconds = milliseconds;
   frame.width = images.width;
   frame.height = images.height;
   frame.rgba = std::move(images.rgba);
   frame.depth = std::move(images.depth);
   frame.depthFormat = scene.depthFormat;
   frame.depthStorage = std::move(images.depthStorage);
+  return frame;
+}
+
+softraster::Result<Frame> renderVulkan(const Scene& scene, vkref::Renderer& renderer) {
+  // Timed: the submission alone (clear, draws, resolve), as softraster's span is its clear, draws
+  // and resolve; preparing (uploads, pipelines, recording) and reading back are not.
+  auto prepared = prepareVulkan(scene, renderer);
+  if (!prepared) return prepared.status();
+  const auto start = Clock::now();
+  if (softraster::Status submitted = renderer.submit(*prepared); !submitted) return submitted.prefixed("vulkan");
+  const double milliseconds = millisecondsSince(start);
+  auto frame = readVulkan(scene, renderer, *prepared);
+  if (frame) frame->milliseconds = milliseconds;
   return frame;
 }
 

@@ -2,10 +2,16 @@
 // top. Both adapters hand the renderers the same vertices and uniforms (made by each draw's row
 // of shaders/shading_models.hpp), indices, matrices and PipelineState, and time one span each
 // (Frame::milliseconds). openVulkan is the one place a vkref::Renderer is opened.
-// Deliberately one call, one frame (the vkref::Renderer keeps only its compiled pipelines).
+// renderSoftraster / renderVulkan are one call, one frame. For steady-state frames (the bench) a
+// scene is made ready once and drawn again and again: SoftrasterScene (Context, framebuffer and
+// draws built once) and prepareVulkan / readVulkan around vkref's submit; the one-frame calls
+// are built from them, so both measure the same work.
+// Deliberately no timing loop, statistics or comparison here (run/bench.cpp, compare/).
 #pragma once
 
 #include "scene/scene.hpp"
+
+#include <shading_models.hpp>
 
 #include <softraster/pipeline.hpp>
 #include <softraster/status.hpp>
@@ -34,6 +40,40 @@ softraster::Result<Frame> renderSoftraster(const Scene& scene, const softraster:
 softraster::Result<softraster::Framebuffer> renderSoftrasterSamples(const Scene& scene,
                                                                    const softraster::ContextOptions& options);
 softraster::Result<Frame> renderVulkan(const Scene& scene, vkref::Renderer& renderer);
+
+// A scene made ready for softraster once: a Context with `options` (it owns its threads), the
+// framebuffer and every draw's vertices and uniforms in its shading model's types. Each render()
+// draws one whole frame (clear, draws, MSAA resolve) and times exactly that span. Keeps a
+// reference to `scene`, which must outlive it.
+class SoftrasterScene {
+ public:
+  SoftrasterScene(const Scene& scene, const softraster::ContextOptions& options);
+  // One frame; the error is "softraster: draw 'NAME': what is wrong".
+  softraster::Status render();
+  double milliseconds() const { return milliseconds_; }  // the last render()'s span
+  unsigned threads() const { return context_.threads(); }
+  // The last rendered frame: a copy (frame()) or the images themselves (takeFrame(), after which
+  // only render() may be called again).
+  Frame frame() const;
+  Frame takeFrame();
+  // The last frame before any resolve: every sample as stored.
+  const softraster::Framebuffer& samples() const { return framebuffer_; }
+
+ private:
+  softraster::Framebuffer& output() { return scene_.samples > 1 ? resolved_ : framebuffer_; }
+  const Scene& scene_;
+  softraster::ContextOptions options_;
+  softraster::Context context_;
+  softraster::Framebuffer framebuffer_, resolved_;  // resolved_: the MSAA resolve's output
+  std::vector<shaders::SoftrasterDraw> draws_;
+  double milliseconds_ = 0;
+};
+
+// The scene made ready on `renderer` (images, uploads, pipelines, recorded commands), to be
+// submitted as often as wanted; readVulkan reads the last submission back as a Frame (without
+// milliseconds). Errors: "vulkan: what is wrong".
+softraster::Result<vkref::PreparedFrame> prepareVulkan(const Scene& scene, vkref::Renderer& renderer);
+softraster::Result<Frame> readVulkan(const Scene& scene, vkref::Renderer& renderer, const vkref::PreparedFrame& prepared);
 
 // A Vulkan renderer on the device the options pick (lavapipe by default); the error is vkref's
 // one line, without a prefix ("no Vulkan driver found ...").

@@ -6,6 +6,9 @@
 
 #include <nlohmann/json.hpp>
 
+#include <array>
+#include <cmath>
+#include <cstdint>
 #include <fstream>
 #include <initializer_list>
 #include <limits>
@@ -245,8 +248,90 @@ void readDrawState(const json& d, const std::string& place, softraster::Pipeline
                            {"always", CompareOp::Always}});
 }
 
+// Limits of a procedural sphere ("sphere": {...}): enough for the bench's 1M triangles, small
+// enough that a typo cannot ask for gigabytes.
+constexpr std::int64_t kMaxSphereDivisions = 10000;
+constexpr std::int64_t kMaxSphereTriangles = 10'000'000;
+
+std::int64_t readSphereDivisions(const json& sphere, const char* key, const std::string& place) {
+  const std::string at = placeOf(place, key);
+  if (!sphere.contains(key)) throw SceneError(at, "missing (an integer, 3.." + std::to_string(kMaxSphereDivisions) + ")");
+  const json& v = sphere[key];
+  if (!v.is_number_integer()) throw SceneError(at, "expected an integer");
+  const std::int64_t n = v.is_number_unsigned() && v.get<std::uint64_t>() > std::uint64_t{INT64_MAX}
+                             ? std::numeric_limits<std::int64_t>::max()
+                             : v.get<std::int64_t>();
+  if (n < 3) throw SceneError(at, "must be at least 3");
+  if (n > kMaxSphereDivisions) throw SceneError(at, "must be at most " + std::to_string(kMaxSphereDivisions));
+  return n;
+}
+
+// A UV sphere: `segments` around its axis (y), `rings` from pole to pole (a single vertex at
+// each pole), 2 * segments * (rings - 1) triangles, indexed, every face wound so that its
+// normal by the right-hand rule points outwards (front facing with counter_clockwise, as
+// meshes/sphere.obj). Each vertex is coloured by its normal, 0.5 + 0.5 * n, alpha 1. Positions
+// are computed in double and rounded to float once, so both renderers get the same bits.
+void makeSphere(const json& sphere, const std::string& place, Draw& draw) {
+  checkKeys(sphere, place, {"segments", "rings", "radius", "centre"});
+  const std::int64_t segments = readSphereDivisions(sphere, "segments", place);
+  const std::int64_t rings = readSphereDivisions(sphere, "rings", place);
+  if (2 * segments * (rings - 1) > kMaxSphereTriangles) {
+    throw SceneError(place, "2 * segments * (rings - 1) = " + std::to_string(2 * segments * (rings - 1)) +
+                                " triangles, more than " + std::to_string(kMaxSphereTriangles));
+  }
+  const double radius = readNumber(sphere, "radius", place, 1.0);
+  if (!(radius > 0) || !std::isfinite(radius)) throw SceneError(placeOf(place, "radius"), "must be a positive number");
+  const std::array<double, 3> centre = readVec3(sphere, "centre", place, {0, 0, 0});
+  constexpr double kPi = 3.14159265358979323846;
+
+  std::vector<std::array<double, 3>> normals;
+  normals.reserve(static_cast<std::size_t>(segments * (rings - 1) + 2));
+  normals.push_back({0, -1, 0});
+  for (std::int64_t j = 1; j < rings; ++j) {
+    const double phi = kPi * static_cast<double>(j) / static_cast<double>(rings);
+    for (std::int64_t i = 0; i < segments; ++i) {
+      const double theta = 2 * kPi * static_cast<double>(i) / static_cast<double>(segments);
+      normals.push_back({std::sin(phi) * std::cos(theta), -std::cos(phi), std::sin(phi) * std::sin(theta)});
+    }
+  }
+  normals.push_back({0, 1, 0});
+  for (const auto& n : normals) {
+    draw.mesh.positions.push_back({static_cast<float>(centre[0] + radius * n[0]),
+                                   static_cast<float>(centre[1] + radius * n[1]),
+                                   static_cast<float>(centre[2] + radius * n[2])});
+    draw.mesh.colours.push_back({static_cast<float>(0.5 + 0.5 * n[0]), static_cast<float>(0.5 + 0.5 * n[1]),
+                                 static_cast<float>(0.5 + 0.5 * n[2]), 1.0f});
+  }
+  const auto top = std::uint32_t{0}, bottom = static_cast<std::uint32_t>(normals.size() - 1);
+  const auto ring = [&](std::int64_t j, std::int64_t i) {  // ring j in 1..rings-1, segment i (wrapping)
+    return static_cast<std::uint32_t>(1 + (j - 1) * segments + i % segments);
+  };
+  // Appends the triangle wound outwards: (b - a) x (c - a) points away from the centre.
+  const auto outward = [&](std::uint32_t a, std::uint32_t b, std::uint32_t c) {
+    const auto& p = normals[a];
+    const auto& q = normals[b];
+    const auto& r = normals[c];
+    const double u[3] = {q[0] - p[0], q[1] - p[1], q[2] - p[2]}, v[3] = {r[0] - p[0], r[1] - p[1], r[2] - p[2]};
+    const double n[3] = {u[1] * v[2] - u[2] * v[1], u[2] * v[0] - u[0] * v[2], u[0] * v[1] - u[1] * v[0]};
+    const double m[3] = {p[0] + q[0] + r[0], p[1] + q[1] + r[1], p[2] + q[2] + r[2]};
+    const bool out = n[0] * m[0] + n[1] * m[1] + n[2] * m[2] > 0;
+    draw.indices.insert(draw.indices.end(), {a, out ? b : c, out ? c : b});
+  };
+  draw.indices.reserve(static_cast<std::size_t>(6 * segments * (rings - 1)));
+  for (std::int64_t i = 0; i < segments; ++i) {
+    outward(top, ring(1, i), ring(1, i + 1));
+    outward(bottom, ring(rings - 1, i + 1), ring(rings - 1, i));
+  }
+  for (std::int64_t j = 1; j + 1 < rings; ++j) {
+    for (std::int64_t i = 0; i < segments; ++i) {
+      outward(ring(j, i), ring(j + 1, i), ring(j + 1, i + 1));
+      outward(ring(j, i), ring(j + 1, i + 1), ring(j, i + 1));
+    }
+  }
+}
+
 Draw readDraw(const json& d, const std::string& place, const std::filesystem::path& sceneDir) {
-  checkKeys(d, place, {"name", "obj", "positions", "colours", "colour", "indices", "shading", "topology", "viewport",
+  checkKeys(d, place, {"name", "obj", "sphere", "positions", "colours", "colour", "indices", "shading", "topology", "viewport",
                        "scissor", "cull", "front_face", "depth_clamp", "depth_bias", "line_width", "line_rasterization",
                        "point_size", "polygon_mode", "blend", "depth_test", "depth_write", "depth_compare"});
   Draw draw;
@@ -257,6 +342,20 @@ Draw readDraw(const json& d, const std::string& place, const std::filesystem::pa
   if (!(draw.pointSize > 0)) throw SceneError(placeOf(place, "point_size"), "must be positive");
   const softraster::Vec4 colour = d.contains("colour") ? readColour(d["colour"], placeOf(place, "colour"))
                                                        : softraster::Vec4{1, 1, 1, 1};
+
+  if (d.contains("sphere")) {
+    for (const char* other : {"obj", "positions", "indices", "colours", "colour"}) {
+      if (d.contains(other)) {
+        throw SceneError(place, std::string("a draw has either \"sphere\" or \"") + other +
+                                    "\", not both (a sphere is coloured by its normals)");
+      }
+    }
+    if (draw.state.topology != softraster::Topology::TriangleList) {
+      throw SceneError(placeOf(place, "topology"), "a sphere is a triangle list");
+    }
+    makeSphere(d["sphere"], placeOf(place, "sphere"), draw);
+    return draw;
+  }
 
   if (d.contains("obj")) {
     if (d.contains("positions") || d.contains("indices") || d.contains("colours")) {
@@ -273,7 +372,7 @@ Draw readDraw(const json& d, const std::string& place, const std::filesystem::pa
     return draw;
   }
 
-  if (!d.contains("positions")) throw SceneError(place, "a draw needs \"obj\" or \"positions\"");
+  if (!d.contains("positions")) throw SceneError(place, "a draw needs \"obj\", \"sphere\" or \"positions\"");
   const json& positions = d["positions"];
   if (!positions.is_array() || positions.empty()) throw SceneError(placeOf(place, "positions"), "expected an array of [x, y, z]");
   for (std::size_t i = 0; i < positions.size(); ++i) {

@@ -2,7 +2,9 @@
 // Loaded from a JSON scene file (format: scenes/README.md). A scene file states only what
 // differs from the defaults; every error names the file, the place and what is wrong.
 // A draw's "shading" names a row of the table of shading models (shaders/shading_models.hpp);
-// its mesh is kept model-neutral (shaders/draw_inputs.hpp) for that row to pack.
+// its mesh is kept model-neutral (shaders/draw_inputs.hpp) for that row to pack. A mesh comes
+// from an OBJ file, from inline positions or from a procedural sphere ("sphere": a UV sphere
+// made at load time, so large benchmark meshes need no large files).
 // Deliberately no scene graph: a scene is a camera plus a flat list of draws.
 #pragma once
 

@@ -3,8 +3,12 @@
 
 #include <gtest/gtest.h>
 
+#include <cstdint>
 #include <filesystem>
+#include <map>
 #include <string>
+#include <utility>
+#include <vector>
 
 namespace {
 
@@ -74,4 +78,80 @@ TEST(SceneFile, MissingAndMalformedObjFiles) {
 
 TEST(SceneFile, MissingSceneFile) {
   EXPECT_NE(loadError(kData / "no_such_scene.json").find("cannot open"), std::string::npos);
+}
+
+// The procedural sphere ("sphere": {segments, rings, radius, centre}).
+namespace {
+
+const std::filesystem::path kTinySphere = kData / "bench" / "tiny_sphere.json";
+
+// The error of loading the tiny sphere with `overrides`: one line naming the file.
+std::string sphereError(const std::vector<std::string>& overrides) {
+  const auto scene = crosscheck::loadScene(kTinySphere, overrides);
+  EXPECT_FALSE(scene.ok()) << "overrides accepted";
+  if (scene.ok()) return {};
+  const std::string error = scene.error();
+  EXPECT_EQ(error.find('\n'), std::string::npos) << "one line: " << error;
+  EXPECT_NE(error.find(kTinySphere.string()), std::string::npos) << "names the file: " << error;
+  return error;
+}
+
+}  // namespace
+
+TEST(SceneFile, SphereIsAnIndexedClosedMeshColouredByItsNormals) {
+  const auto scene = crosscheck::loadScene(kTinySphere, {"draws.0.sphere.centre=[1, 2, 3]", "draws.0.sphere.radius=0.5"});
+  ASSERT_TRUE(scene) << scene.error();
+  const crosscheck::Draw& draw = scene->draws[0];
+  EXPECT_TRUE(draw.indexed);
+  EXPECT_EQ(draw.state.topology, softraster::Topology::TriangleList);
+  EXPECT_EQ(draw.mesh.vertexCount(), 16u * (9 - 1) + 2);
+  EXPECT_EQ(draw.indices.size(), 3u * 2 * 16 * (9 - 1));
+  for (std::uint32_t index : draw.indices) ASSERT_LT(index, draw.mesh.vertexCount());
+  for (std::size_t i = 0; i < draw.mesh.vertexCount(); ++i) {
+    const softraster::Vec3 p = draw.mesh.positions[i];
+    const softraster::Vec4 c = draw.mesh.colours[i];
+    const float nx = (p.x - 1) / 0.5f, ny = (p.y - 2) / 0.5f, nz = (p.z - 3) / 0.5f;
+    EXPECT_NEAR(nx * nx + ny * ny + nz * nz, 1.0f, 1e-5f) << "vertex " << i << " on the sphere";
+    EXPECT_NEAR(c.x, 0.5f + 0.5f * nx, 1e-5f) << "vertex " << i;
+    EXPECT_NEAR(c.y, 0.5f + 0.5f * ny, 1e-5f) << "vertex " << i;
+    EXPECT_NEAR(c.z, 0.5f + 0.5f * nz, 1e-5f) << "vertex " << i;
+    EXPECT_EQ(c.w, 1.0f);
+  }
+  // Closed: every edge is shared by exactly two triangles, in opposite directions.
+  std::map<std::pair<std::uint32_t, std::uint32_t>, int> edges;
+  for (std::size_t t = 0; t < draw.indices.size(); t += 3) {
+    for (int k = 0; k < 3; ++k) ++edges[{draw.indices[t + k], draw.indices[t + (k + 1) % 3]}];
+  }
+  for (const auto& [edge, count] : edges) {
+    EXPECT_EQ(count, 1) << edge.first << "->" << edge.second;
+    EXPECT_EQ(edges.count({edge.second, edge.first}), 1u) << edge.first << "->" << edge.second << " has no twin";
+  }
+}
+
+TEST(SceneFile, SphereBadValuesAreOneErrorLineEach) {
+  EXPECT_NE(sphereError({"draws.0.sphere.segments=2.5"}).find("/draws/0/sphere/segments: expected an integer"),
+            std::string::npos);
+  EXPECT_NE(sphereError({"draws.0.sphere.rings=\"ten\""}).find("/draws/0/sphere/rings: expected an integer"),
+            std::string::npos);
+  EXPECT_NE(sphereError({"draws.0.sphere.segments=2"}).find("/draws/0/sphere/segments: must be at least 3"),
+            std::string::npos);
+  EXPECT_NE(sphereError({"draws.0.sphere.rings=-4"}).find("/draws/0/sphere/rings: must be at least 3"),
+            std::string::npos);
+  EXPECT_NE(sphereError({"draws.0.sphere.rings=20000"}).find("/draws/0/sphere/rings: must be at most 10000"),
+            std::string::npos);
+  EXPECT_NE(sphereError({"draws.0.sphere.segments=10000", "draws.0.sphere.rings=10000"}).find("triangles, more than"),
+            std::string::npos);
+  EXPECT_NE(sphereError({"draws.0.sphere.radius=-1"}).find("/draws/0/sphere/radius: must be a positive number"),
+            std::string::npos);
+  EXPECT_NE(sphereError({"draws.0.sphere.radius=0"}).find("/draws/0/sphere/radius: must be a positive number"),
+            std::string::npos);
+  EXPECT_NE(sphereError({"draws.0.sphere.centre=[0, 0]"}).find("/draws/0/sphere/centre: expected an array of 3"),
+            std::string::npos);
+  EXPECT_NE(sphereError({"draws.0.sphere={}"}).find("/draws/0/sphere/segments: missing"), std::string::npos);
+  EXPECT_NE(sphereError({"draws.0.sphere.size=3"}).find("/draws/0/sphere/size: unknown field"), std::string::npos);
+  EXPECT_NE(sphereError({"draws.0.sphere=4"}).find("/draws/0/sphere: expected an object"), std::string::npos);
+  EXPECT_NE(sphereError({"draws.0.positions=[[0, 0, 1]]"}).find("either \"sphere\" or \"positions\""),
+            std::string::npos);
+  EXPECT_NE(sphereError({"draws.0.topology=line_list"}).find("/draws/0/topology: a sphere is a triangle list"),
+            std::string::npos);
 }

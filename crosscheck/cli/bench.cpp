@@ -1,0 +1,75 @@
+// crosscheck bench: steady-state frame times of softraster (exact, exact-scalar) and of lavapipe
+// on each scene, with their agreement (see commands.hpp): collects and loads the scenes (any that
+// cannot be loaded is exit 2 before anything runs), measures the machine, runs the bench
+// (run/bench.hpp), prints the table and writes the JSON.
+// Deliberately no timing or formatting of its own (run/bench.cpp, output/bench_*), and no
+// options beyond the run's size: a bench run always has every method and lavapipe.
+#include "cli/commands.hpp"
+
+#include "output/bench_json.hpp"
+#include "output/bench_table.hpp"
+#include "run/bench.hpp"
+#include "run/suite.hpp"
+#include "scene/scene.hpp"
+
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+
+namespace crosscheck::cli {
+namespace {
+
+int usageError(const std::string& message) {
+  std::fprintf(stderr, "crosscheck: %s\n", message.c_str());
+  return 2;
+}
+
+}  // namespace
+
+int benchCommand(const BenchCommand& command) {
+  if (command.frames < 1) return usageError("--frames must be at least 1");
+  const auto suite = collectScenes(command.inputs.empty() ? std::vector<std::string>{std::string(kDefaultBenchDir)}
+                                                          : command.inputs);
+  if (!suite) return usageError(suite.error());
+  std::vector<Scene> scenes;
+  for (const SceneEntry& entry : *suite) {
+    auto scene = loadScene(entry.path);
+    if (!scene) return usageError(scene.error());
+    scenes.push_back(std::move(*scene));
+  }
+  if (!command.jsonFile.empty()) {  // proven writable before the run (opened to append: not emptied yet)
+    const std::filesystem::path path(command.jsonFile);
+    std::error_code ec;
+    if (path.has_parent_path()) std::filesystem::create_directories(path.parent_path(), ec);
+    if (std::filesystem::is_directory(path, ec) || !std::ofstream(path, std::ios::app)) {
+      return usageError(command.jsonFile + ": cannot write this file");
+    }
+  }
+
+  BenchOptions options;
+  options.frames = command.frames;
+  options.warmup = command.warmup;
+  options.threads = command.threads;
+  options.device = command.device;
+  options.softraster = command.softraster;
+  options.onScene = [](std::size_t position, std::size_t count, const BenchScene& scene) {
+    std::fprintf(stderr, "bench: [%zu/%zu] %s\n", position + 1, count, scene.scene.string().c_str());
+    std::fflush(stderr);
+  };
+  const BenchMachine machine = measureMachine();
+  const BenchResults results = runBench(scenes, options, machine);
+  std::fputs(benchTable(results).c_str(), stdout);
+  std::fflush(stdout);
+  if (!command.jsonFile.empty()) {
+    std::ofstream file(command.jsonFile, std::ios::trunc);
+    file << benchJson(results);
+    if (!file) {
+      std::fprintf(stderr, "crosscheck: %s: cannot write this file\n", command.jsonFile.c_str());
+      return 1;
+    }
+    std::printf("JSON: %s\n", command.jsonFile.c_str());
+  }
+  return results.allAgree() ? 0 : 1;
+}
+
+}  // namespace crosscheck::cli

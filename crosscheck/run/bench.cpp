@@ -1,0 +1,266 @@
+// The bench runner (see bench.hpp): makes each renderer ready, alternates their frames, times
+// them, and compares each softraster method's last frame with lavapipe's.
+#include "run/bench.hpp"
+
+#include "compare/compare.hpp"
+#include "render/render.hpp"
+
+#include <algorithm>
+#include <chrono>
+#include <cstdlib>
+#include <cstring>
+#include <fstream>
+#include <memory>
+#include <string>
+#include <thread>
+
+namespace crosscheck {
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+double millisecondsSince(Clock::time_point start) {
+  return std::chrono::duration<double, std::milli>(Clock::now() - start).count();
+}
+
+double median(std::vector<double> values) {
+  if (values.empty()) return 0;
+  std::sort(values.begin(), values.end());
+  const std::size_t n = values.size();
+  return n % 2 ? values[n / 2] : (values[n / 2 - 1] + values[n / 2]) / 2;
+}
+
+std::string cpuModel() {
+  std::ifstream cpuinfo("/proc/cpuinfo");
+  std::string line;
+  while (std::getline(cpuinfo, line)) {
+    if (line.rfind("model name", 0) != 0) continue;
+    const auto colon = line.find(':');
+    if (colon == std::string::npos) continue;
+    std::string model = line.substr(colon + 1);
+    model.erase(0, model.find_first_not_of(" \t"));
+    return model;
+  }
+  return "unknown";
+}
+
+unsigned coreCount() { return std::max(1u, std::thread::hardware_concurrency()); }
+
+// Bandwidth of memset over a buffer the size of a 1080p RGBA8 colour plus D32 depth image.
+double memsetGigabytesPerSecond() {
+  const std::size_t bytes = std::size_t{1920} * 1080 * (4 + 4);
+  std::vector<unsigned char> buffer(bytes, 1);  // touched, so the timed runs do not page-fault
+  std::vector<double> seconds;
+  for (int run = 0; run < 7; ++run) {
+    const auto start = Clock::now();
+    std::memset(buffer.data(), run, bytes);
+#if defined(__GNUC__)
+    asm volatile("" : : "r"(buffer.data()) : "memory");  // the stores must happen
+#endif
+    seconds.push_back(std::chrono::duration<double>(Clock::now() - start).count());
+  }
+  const double s = median(seconds);
+  return s > 0 ? static_cast<double>(bytes) / s / 1e9 : 0;
+}
+
+std::uint64_t depthBytes(softraster::DepthFormat format) {
+  return format == softraster::DepthFormat::D16Unorm ? 2 : 4;
+}
+
+// One renderer being benchmarked: made ready (timed as setup with its first frame), then frames.
+class Contender {
+ public:
+  virtual ~Contender() = default;
+  virtual softraster::Status frame() = 0;
+  virtual softraster::Result<Frame> read() = 0;
+  BenchRun run;
+};
+
+class SoftrasterContender : public Contender {
+ public:
+  SoftrasterContender(const Scene& scene, const softraster::ContextOptions& options) : prepared_(scene, options) {}
+  softraster::Status frame() override { return prepared_.render(); }
+  softraster::Result<Frame> read() override { return prepared_.frame(); }
+  unsigned threads() const { return prepared_.threads(); }
+
+ private:
+  SoftrasterScene prepared_;
+};
+
+class LavapipeContender : public Contender {
+ public:
+  LavapipeContender(const Scene& scene, std::unique_ptr<vkref::Renderer> renderer, vkref::PreparedFrame prepared)
+      : scene_(scene), renderer_(std::move(renderer)), prepared_(std::move(prepared)) {}
+  ~LavapipeContender() override { prepared_ = vkref::PreparedFrame(); }  // before its renderer
+  softraster::Status frame() override {
+    const softraster::Status status = renderer_->submit(prepared_);
+    return status.prefixed("vulkan");
+  }
+  softraster::Result<Frame> read() override { return readVulkan(scene_, *renderer_, prepared_); }
+
+ private:
+  const Scene& scene_;
+  std::unique_ptr<vkref::Renderer> renderer_;
+  vkref::PreparedFrame prepared_;
+};
+
+std::unique_ptr<Contender> makeSoftraster(const Scene& scene, const BenchOptions& options, softraster::Method method) {
+  softraster::ContextOptions context = options.softraster;
+  context.method = method;
+  context.threads = options.threads;
+  const auto start = Clock::now();
+  auto contender = std::make_unique<SoftrasterContender>(scene, context);
+  const softraster::Status first = contender->frame();
+  contender->run.setupMilliseconds = millisecondsSince(start);
+  contender->run.renderer = "softraster";
+  contender->run.method = method == softraster::Method::Exact ? "exact" : "exact-scalar";
+  // The scalar method draws on the calling thread alone, whatever the Context's thread count.
+  contender->run.threads = method == softraster::Method::Exact ? contender->threads() : 1;
+  if (!first) contender->run.error = first.message();
+  return contender;
+}
+
+std::unique_ptr<Contender> makeLavapipe(const Scene& scene, const BenchOptions& options) {
+  BenchRun run;
+  run.renderer = "lavapipe";
+  run.threads = options.threads != 0 ? options.threads : coreCount();
+  // lavapipe reads LP_NUM_THREADS when its device is created.
+  setenv("LP_NUM_THREADS", std::to_string(run.threads).c_str(), 1);
+  const auto start = Clock::now();
+  auto opened = openVulkan(options.device);
+  auto failed = [&](const softraster::Status& status) {
+    auto contender = std::make_unique<LavapipeContender>(scene, nullptr, vkref::PreparedFrame());
+    contender->run = run;
+    contender->run.error = status.message();
+    return contender;
+  };
+  if (!opened) return failed(opened.status().prefixed("vulkan"));
+  auto prepared = prepareVulkan(scene, **opened);
+  if (!prepared) return failed(prepared.status());
+  auto contender = std::make_unique<LavapipeContender>(scene, std::move(*opened), std::move(*prepared));
+  const softraster::Status first = contender->frame();
+  run.setupMilliseconds = millisecondsSince(start);
+  contender->run = run;
+  if (!first) contender->run.error = first.message();
+  return contender;
+}
+
+BenchScene benchScene(const Scene& scene, const BenchOptions& options, const BenchMachine& machine) {
+  BenchScene out;
+  out.scene = scene.path;
+  out.description = scene.description;
+  out.width = scene.width;
+  out.height = scene.height;
+  out.samples = scene.samples;
+  out.pixels = std::uint64_t{scene.width} * scene.height;
+  out.triangles = triangleCount(scene);
+  out.bytesWritten = out.pixels * scene.samples * (4 + depthBytes(scene.depthFormat));
+  if (machine.memsetGigabytesPerSecond > 0) {
+    out.memoryLimitMilliseconds = static_cast<double>(out.bytesWritten) / (machine.memsetGigabytesPerSecond * 1e9) * 1e3;
+  }
+
+  std::vector<std::unique_ptr<Contender>> contenders;
+  contenders.push_back(makeSoftraster(scene, options, softraster::Method::Exact));
+  contenders.push_back(makeSoftraster(scene, options, softraster::Method::ExactScalar));
+  contenders.push_back(makeLavapipe(scene, options));
+
+  // Frame by frame in turn, so that a noisy spell of the machine hits every renderer alike.
+  for (unsigned i = 0; i < options.warmup + options.frames; ++i) {
+    for (auto& contender : contenders) {
+      if (!contender->run.ok()) continue;
+      const auto start = Clock::now();
+      const softraster::Status status = contender->frame();
+      const double milliseconds = millisecondsSince(start);
+      if (!status) {
+        contender->run.error = status.message();
+        continue;
+      }
+      if (i >= options.warmup) contender->run.frameMilliseconds.push_back(milliseconds);
+    }
+  }
+  for (auto& contender : contenders) {
+    BenchRun& run = contender->run;
+    run.medianMilliseconds = median(run.frameMilliseconds);
+    if (!run.frameMilliseconds.empty()) {
+      run.minMilliseconds = *std::min_element(run.frameMilliseconds.begin(), run.frameMilliseconds.end());
+    }
+  }
+
+  // Agreement of each method's last frame with lavapipe's.
+  Contender& lavapipe = *contenders.back();
+  std::optional<Frame> reference;
+  if (lavapipe.run.ok()) {
+    auto read = lavapipe.read();
+    if (read) {
+      reference = std::move(*read);
+    } else {
+      lavapipe.run.error = read.error();
+    }
+  }
+  for (std::size_t i = 0; i + 1 < contenders.size(); ++i) {
+    BenchRun& run = contenders[i]->run;
+    if (lavapipe.run.ok() && run.ok() && run.medianMilliseconds > 0) {
+      run.ratioVsLavapipe = lavapipe.run.medianMilliseconds / run.medianMilliseconds;
+    }
+    if (!run.ok() || !reference) continue;
+    auto frame = contenders[i]->read();
+    if (!frame) {
+      run.error = frame.error();
+      continue;
+    }
+    run.agreement = compareFrames(*frame, *reference, scene);
+  }
+  if (lavapipe.run.ok()) lavapipe.run.ratioVsLavapipe = 1;
+  for (auto& contender : contenders) out.runs.push_back(std::move(contender->run));
+  return out;
+}
+
+}  // namespace
+
+bool BenchResults::allAgree() const {
+  for (const BenchScene& scene : scenes) {
+    for (const BenchRun& run : scene.runs) {
+      if (!run.ok()) return false;
+      if (run.renderer == "softraster" && (!run.agreement || !run.agreement->passed())) return false;
+    }
+  }
+  return true;
+}
+
+BenchMachine measureMachine() {
+  BenchMachine machine;
+  machine.cpu = cpuModel();
+  machine.cores = coreCount();
+  machine.memsetGigabytesPerSecond = memsetGigabytesPerSecond();
+  return machine;
+}
+
+std::uint64_t triangleCount(const Scene& scene) {
+  using softraster::Topology;
+  std::uint64_t triangles = 0;
+  for (const Draw& draw : scene.draws) {
+    const std::uint64_t n = draw.indexed ? draw.indices.size() : draw.mesh.vertexCount();
+    switch (draw.state.topology) {
+      case Topology::TriangleList: triangles += n / 3; break;
+      case Topology::TriangleStrip:
+      case Topology::TriangleFan: triangles += n >= 3 ? n - 2 : 0; break;
+      default: break;
+    }
+  }
+  return triangles;
+}
+
+BenchResults runBench(const std::vector<Scene>& scenes, const BenchOptions& options, const BenchMachine& machine) {
+  BenchResults results;
+  results.machine = machine;
+  results.frames = options.frames;
+  results.warmup = options.warmup;
+  results.threads = options.threads;
+  for (std::size_t i = 0; i < scenes.size(); ++i) {
+    results.scenes.push_back(benchScene(scenes[i], options, machine));
+    if (options.onScene) options.onScene(i, scenes.size(), results.scenes.back());
+  }
+  return results;
+}
+
+}  // namespace crosscheck

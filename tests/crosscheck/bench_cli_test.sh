@@ -1,0 +1,105 @@
+#!/usr/bin/env bash
+# Command-line tests of `crosscheck bench` and of render/compare's --method and --threads, one case
+# per ctest test:
+#   bench_cli_test.sh CASE CROSSCHECK SOURCE_DIR ARTIFACTS_DIR
+# Exit 0: passed, 1: failed (with a message), 77: skipped (a tool it needs is missing).
+# Never checks a timing: the machine is shared.
+set -uo pipefail
+case_name=$1
+crosscheck=$2
+src=$3
+artifacts=$4/bench-cli/$case_name
+rm -rf "$artifacts"
+mkdir -p "$artifacts"
+cd "$src" || exit 1
+
+tiny=tests/data/bench/tiny_sphere.json
+
+fail() {
+  echo "FAILED: $*"
+  [ -f "$artifacts/out.txt" ] && { echo "--- stdout"; cat "$artifacts/out.txt"; }
+  [ -f "$artifacts/err.txt" ] && { echo "--- stderr"; cat "$artifacts/err.txt"; }
+  exit 1
+}
+run() {
+  "$crosscheck" "$@" >"$artifacts/out.txt" 2>"$artifacts/err.txt"
+  status=$?
+}
+expect_status() { [ "$status" -eq "$1" ] || fail "exit status $status, expected $1"; }
+expect_out() { grep -qE -- "$1" "$artifacts/out.txt" || fail "stdout has no line matching: $1"; }
+expect_err() { grep -qE -- "$1" "$artifacts/err.txt" || fail "stderr has no line matching: $1"; }
+expect_one_error_line() {
+  [ "$(wc -l <"$artifacts/err.txt")" -eq 1 ] || fail "expected exactly one error line"
+  [ ! -s "$artifacts/out.txt" ] || fail "expected nothing on stdout"
+}
+# check_usage PATTERN ARGS...: exit 2, one error line matching PATTERN, nothing on stdout.
+check_usage() {
+  local pattern=$1
+  shift
+  run "$@"
+  expect_status 2
+  expect_err "$pattern"
+  expect_one_error_line
+}
+
+case $case_name in
+  bad_usage)
+    check_usage '^crosscheck: --frames 0: expected a whole number from 1 to 100000$' bench --frames 0 "$tiny"
+    check_usage '^crosscheck: --frames abc: expected a whole number from 1 to 100000$' bench --frames abc "$tiny"
+    check_usage '^crosscheck: --frames -3: expected a whole number' bench --frames=-3 "$tiny"
+    check_usage '^crosscheck: --warmup x: expected a whole number from 0 to 100000$' bench --warmup x "$tiny"
+    check_usage '^crosscheck: --threads 2.5: expected a whole number from 0 to 1024$' bench --threads 2.5 "$tiny"
+    check_usage '^crosscheck: tests/data/bench/no_such_scene.json: cannot open scene file$' \
+      bench tests/data/bench/no_such_scene.json
+    check_usage '^crosscheck: scenez/: no such file or directory$' bench scenez/
+    check_usage '^crosscheck: tests/data/malformed_syntax.json: parse error at line 3' bench tests/data/malformed_syntax.json
+    check_usage '^crosscheck: --method fast: expected exact or exact-scalar$' \
+      render "$tiny" --method fast -o "$artifacts/x.png"
+    check_usage '^crosscheck: --threads many: expected a whole number from 0 to 1024$' compare "$tiny" --threads many
+    check_usage '^crosscheck: --threads 5000: expected a whole number from 0 to 1024$' compare "$tiny" --threads 5000
+    ;;
+  tiny_json)
+    need_python() { command -v python3 >/dev/null || { echo "SKIPPED: python3 is not installed"; exit 77; }; }
+    need_python
+    run bench "$tiny" --frames 2 --warmup 1 --threads 1 --json "$artifacts/bench.json"
+    expect_status 0
+    expect_out '> 1: softraster is faster'
+    expect_out '^tiny_sphere +48x32 +256 +softraster exact +1 '
+    expect_out '^tiny_sphere +48x32 +256 +softraster exact-scalar +1 '
+    expect_out '^tiny_sphere +48x32 +256 +lavapipe +1 .*\(reference\)$'
+    [ "$(grep -c ' 0/0/0$' "$artifacts/out.txt")" -eq 2 ] || fail "expected agreement 0/0/0 for both methods"
+    python3 - "$artifacts/bench.json" <<'PY' || fail "bench.json does not have the documented shape"
+import json, sys
+d = json.load(open(sys.argv[1]))
+assert set(d["machine"]) >= {"cpu", "cores", "memset_gb_per_s"}
+(s,) = d["scenes"]
+assert s["pixels"] == 48 * 32 and s["triangles"] == 256 and s["memory_limit_ms"] > 0
+assert [(r["renderer"], r.get("method")) for r in s["results"]] == [
+    ("softraster", "exact"), ("softraster", "exact-scalar"), ("lavapipe", None)]
+for r in s["results"]:
+    assert r["threads"] == 1 and len(r["frames_ms"]) == 2
+    for k in ("median_ms", "min_ms", "setup_ms", "ratio_vs_lavapipe"):
+        assert isinstance(r[k], (int, float)), k
+for r in s["results"][:2]:
+    assert (r["coverage_mismatches"], r["colour_max_delta"], r["depth_max_delta"]) == (0, 0, 0)
+PY
+    ;;
+  render_methods)
+    # Both methods and any thread count give the same bits (and the same as Vulkan).
+    run render "$tiny" --renderer vulkan -o "$artifacts/vulkan.png"
+    expect_status 0
+    for args in "--method exact --threads 1" "--method exact --threads 3" "--method exact-scalar" "--threads 0"; do
+      # shellcheck disable=SC2086
+      run render "$tiny" --renderer soft $args -o "$artifacts/soft.png"
+      expect_status 0
+      cmp -s "$artifacts/soft.png" "$artifacts/vulkan.png" || fail "render $args differs from Vulkan"
+    done
+    run compare "$tiny" --method exact-scalar --threads 2 --json
+    expect_status 0
+    expect_out '"passed":true'
+    ;;
+  *)
+    fail "unknown case $case_name"
+    ;;
+esac
+echo "passed: $case_name"

@@ -1,0 +1,116 @@
+// The bench runner and its JSON on a tiny scene: every renderer gives timed frames, each
+// softraster method agrees with lavapipe to the bit, and the JSON has the documented fields.
+// Never asserts on timings (the machine is shared): only that they exist and are ordered.
+#include "output/bench_json.hpp"
+#include "output/bench_table.hpp"
+#include "run/bench.hpp"
+#include "scene/scene.hpp"
+
+#include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
+
+#include <filesystem>
+#include <string>
+#include <vector>
+
+namespace {
+
+const std::filesystem::path kTinySphere = std::filesystem::path(TEST_DATA_DIR) / "bench" / "tiny_sphere.json";
+
+crosscheck::BenchResults benchTiny() {
+  auto scene = crosscheck::loadScene(kTinySphere);
+  EXPECT_TRUE(scene) << scene.error();
+  if (!scene) return {};
+  std::vector<crosscheck::Scene> scenes;
+  scenes.push_back(std::move(*scene));
+  crosscheck::BenchOptions options;
+  options.frames = 2;
+  options.warmup = 1;
+  options.threads = 2;
+  return crosscheck::runBench(scenes, options, crosscheck::measureMachine());
+}
+
+}  // namespace
+
+TEST(Bench, TinySceneHasEveryRendererAndExactAgreement) {
+  const crosscheck::BenchResults results = benchTiny();
+  ASSERT_EQ(results.scenes.size(), 1u);
+  const crosscheck::BenchScene& scene = results.scenes[0];
+  EXPECT_EQ(scene.pixels, 48u * 32u);
+  EXPECT_EQ(scene.triangles, 2u * 16u * 8u);
+  EXPECT_EQ(scene.bytesWritten, 48u * 32u * 8u);
+  EXPECT_GT(scene.memoryLimitMilliseconds, 0);
+  ASSERT_EQ(scene.runs.size(), 3u);
+  const std::vector<std::pair<std::string, std::string>> expected = {
+      {"softraster", "exact"}, {"softraster", "exact-scalar"}, {"lavapipe", ""}};
+  for (std::size_t i = 0; i < 3; ++i) {
+    const crosscheck::BenchRun& run = scene.runs[i];
+    SCOPED_TRACE(run.renderer + " " + run.method);
+    EXPECT_TRUE(run.ok()) << run.error;
+    EXPECT_EQ(run.renderer, expected[i].first);
+    EXPECT_EQ(run.method, expected[i].second);
+    EXPECT_EQ(run.frameMilliseconds.size(), 2u);
+    EXPECT_LE(run.minMilliseconds, run.medianMilliseconds);
+    EXPECT_GT(run.setupMilliseconds, 0);
+    EXPECT_GT(run.ratioVsLavapipe, 0);
+    EXPECT_GE(run.threads, 1u);
+    if (run.renderer == "lavapipe") {
+      EXPECT_FALSE(run.agreement);
+      EXPECT_EQ(run.threads, 2u);
+      continue;
+    }
+    ASSERT_TRUE(run.agreement);
+    EXPECT_EQ(run.agreement->coverageMismatches, 0u);
+    for (int ch = 0; ch < 4; ++ch) EXPECT_EQ(run.agreement->colourMaxDelta[ch], 0) << "channel " << ch;
+    EXPECT_EQ(run.agreement->depthMaxDelta, 0.0);
+  }
+  EXPECT_EQ(scene.runs[0].threads, 2u);
+  EXPECT_EQ(scene.runs[1].threads, 1u);  // the scalar method draws on the calling thread alone
+  EXPECT_TRUE(results.allAgree());
+  EXPECT_FALSE(results.machine.cpu.empty());
+  EXPECT_GE(results.machine.cores, 1u);
+  EXPECT_GT(results.machine.memsetGigabytesPerSecond, 0);
+
+  const std::string table = crosscheck::benchTable(results);
+  EXPECT_NE(table.find("softraster exact-scalar"), std::string::npos) << table;
+  EXPECT_NE(table.find("> 1: softraster is faster"), std::string::npos) << table;
+  EXPECT_NE(table.find("0/0/0"), std::string::npos) << table;
+}
+
+TEST(Bench, JsonHasTheDocumentedFields) {
+  const crosscheck::BenchResults results = benchTiny();
+  const auto json = nlohmann::json::parse(crosscheck::benchJson(results), nullptr, false);
+  ASSERT_FALSE(json.is_discarded());
+  ASSERT_TRUE(json.contains("machine"));
+  EXPECT_TRUE(json["machine"]["cpu"].is_string());
+  EXPECT_TRUE(json["machine"]["cores"].is_number_integer());
+  EXPECT_TRUE(json["machine"]["memset_gb_per_s"].is_number());
+  ASSERT_EQ(json["scenes"].size(), 1u);
+  const auto& scene = json["scenes"][0];
+  EXPECT_EQ(scene["scene"], kTinySphere.string());
+  EXPECT_EQ(scene["pixels"], 48 * 32);
+  EXPECT_EQ(scene["triangles"], 256);
+  EXPECT_TRUE(scene["memory_limit_ms"].is_number());
+  ASSERT_EQ(scene["results"].size(), 3u);
+  for (const auto& r : scene["results"]) {
+    SCOPED_TRACE(r.dump());
+    for (const char* field : {"renderer", "threads", "median_ms", "min_ms", "setup_ms", "coverage_mismatches",
+                              "colour_max_delta", "depth_max_delta", "ratio_vs_lavapipe"}) {
+      EXPECT_TRUE(r.contains(field)) << field;
+    }
+    EXPECT_TRUE(r["median_ms"].is_number());
+    EXPECT_TRUE(r["min_ms"].is_number());
+    EXPECT_TRUE(r["setup_ms"].is_number());
+    EXPECT_TRUE(r["threads"].is_number_integer());
+    EXPECT_TRUE(r["ratio_vs_lavapipe"].is_number());
+    if (r["renderer"] == "softraster") {
+      EXPECT_TRUE(r["method"] == "exact" || r["method"] == "exact-scalar");
+      EXPECT_EQ(r["coverage_mismatches"], 0);
+      EXPECT_EQ(r["colour_max_delta"], 0);
+      EXPECT_EQ(r["depth_max_delta"], 0.0);
+    } else {
+      EXPECT_EQ(r["renderer"], "lavapipe");
+      EXPECT_FALSE(r.contains("method"));
+    }
+  }
+}
