@@ -25,6 +25,18 @@ Framebuffer::Framebuffer(std::uint32_t width, std::uint32_t height, DepthFormat 
 
 Framebuffer Framebuffer::resolve() const {
   Framebuffer out(width_, height_, depthFormat_, 1);
+  resolveInto(out);
+  return out;
+}
+
+void Framebuffer::resolveInto(Framebuffer& out) const {
+  if (&out == this) {  // resolving in place: a single-sample framebuffer is its own resolve
+    if (samples_ != 1) out = resolve();
+    return;
+  }
+  if (out.width_ != width_ || out.height_ != height_ || out.depthFormat_ != depthFormat_ || out.samples_ != 1) {
+    out = Framebuffer(width_, height_, depthFormat_, 1);
+  }
   const std::size_t pixels = static_cast<std::size_t>(width_) * height_;
   const float toFloat = static_cast<float>(1.0 / 255.0);  // how lavapipe's texel fetch converts UNORM8
   const float average = 1.0f / static_cast<float>(samples_);
@@ -36,7 +48,6 @@ Framebuffer Framebuffer::resolve() const {
     }
     out.depth_[p] = depth_[p * samples_];
   }
-  return out;
 }
 
 void Framebuffer::clear(Vec4 colour, float depth) {

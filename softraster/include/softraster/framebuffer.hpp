@@ -29,6 +29,9 @@ class Framebuffer {
   // A single-sample framebuffer: colour = average of the samples (float sum in sample order,
   // times 0.25, stored as UNORM8), depth = sample 0. A single-sample framebuffer resolves to a copy.
   Framebuffer resolve() const;
+  // The same resolve into `out`, reusing its storage when it already has this framebuffer's size
+  // and depth format with one sample (no allocation per frame).
+  void resolveInto(Framebuffer& out) const;
 
   // Clears colour (converted as a UNORM8 store converts) and depth (as a depth clear converts:
   // lrint(depth * (2^n - 1)) for UNORM formats).
