@@ -166,7 +166,9 @@ inline Mask depthTestPasses(CompareOp op, Words incoming, Words stored) {
   const Floats one = broadcast(1.0f), zero = broadcast(0.0f);
   const Floats clamped = v > zero ? (v < one ? v : one) : zero;
   const Floats rounded = (clamped * broadcast(255.0f) + broadcast(8388608.0f)) - broadcast(8388608.0f);
-  return __builtin_convertvector(rounded, Words);
+  // An exact integer in [0, 255]: the signed conversion (one cvttps2dq) gives it; AVX2 has no
+  // unsigned one, which would cost a compare, a subtraction and a blend per channel.
+  return reinterpret_cast<Words>(__builtin_convertvector(rounded, Mask));
 }
 
 [[SOFTRASTER_FAST_TARGET]] inline Words packColour(const Vec4T<FloatBatch>& c) {
