@@ -7,6 +7,8 @@
 #include "render/render.hpp"
 #include "scene/scene.hpp"
 
+#include "scene_list.hpp"
+
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -80,14 +82,7 @@ void crossCheckScene(const std::string& name) {
   if (::testing::Test::HasFailure()) writeArtifacts(name, *soft, *reference, *scene);
 }
 
-std::vector<std::string> sceneNames() {
-  std::vector<std::string> names;
-  for (const auto& entry : std::filesystem::directory_iterator(kScenes)) {
-    if (entry.path().extension() == ".json") names.push_back(entry.path().stem().string());
-  }
-  std::sort(names.begin(), names.end());
-  return names;
-}
+std::vector<std::string> sceneNames() { return conformanceSceneNames(); }
 
 class Scene : public ::testing::TestWithParam<std::string> {};
 

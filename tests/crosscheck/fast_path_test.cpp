@@ -10,6 +10,8 @@
 #include <softraster/pipeline.hpp>
 #include <vertex_color.hpp>
 
+#include "scene_list.hpp"
+
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -21,14 +23,7 @@ namespace {
 
 const std::filesystem::path kScenes = SCENES_DIR;
 
-std::vector<std::string> sceneNames() {
-  std::vector<std::string> names;
-  for (const auto& entry : std::filesystem::directory_iterator(kScenes)) {
-    if (entry.path().extension() == ".json") names.push_back(entry.path().stem().string());
-  }
-  std::sort(names.begin(), names.end());
-  return names;
-}
+std::vector<std::string> sceneNames() { return conformanceSceneNames(); }
 
 // The first sample whose colour or depth differs, as a readable failure; empty when identical.
 std::string firstDifference(const softraster::Framebuffer& fast, const softraster::Framebuffer& scalar) {

@@ -43,14 +43,12 @@ class FastFragmentStage {
                     const Viewport& viewport, const PixelRect& region, bool inverseZ)
       : scalar_(state, uniforms, framebuffer, viewport, region, inverseZ),
         uniforms_(uniforms),
-        depthState_(state.depth),
-        blend_(state.blend),
-        region_(region),
-        depthRange_(fragmentDepthRange(viewport, state.rasterization.depthClampEnable)),
-        inverseZ_(inverseZ),
-        width_(framebuffer.width()),
-        colour_(reinterpret_cast<std::uint32_t*>(framebuffer.colour().data())),
-        depth_(framebuffer.depthStorage().data()) {}
+        target_(scalar_.target()),
+        colour_(reinterpret_cast<std::uint32_t*>(target_.colour)) {}
+
+  // target_ refers into scalar_, so a copy would point at another stage's target.
+  FastFragmentStage(const FastFragmentStage&) = delete;
+  FastFragmentStage& operator=(const FastFragmentStage&) = delete;
 
   template <int E>
   void shadePixels(const EdgeFunction (&edges)[E], const PixelRect& bounds, const TriangleInterpolants<N>& t) const {
@@ -78,7 +76,7 @@ class FastFragmentStage {
 
   [[SOFTRASTER_FAST_TARGET]] void shadeTriangle(const EdgeFunction (&edges)[3], const PixelRect& bounds,
                                                 const TriangleInterpolants<N>& t) const {
-    const PixelRect box = intersect(bounds, region_);
+    const PixelRect box = intersect(bounds, target_.region);
     if (box.empty()) return;
     const BlockEdges blocks = blockEdges(edges);
     BlockPlanes planes;
@@ -106,18 +104,18 @@ class FastFragmentStage {
   [[SOFTRASTER_FAST_TARGET]] void shadeBlock(int px, int py, unsigned covered, const BlockPlanes& t) const {
     const Floats fx = broadcast(static_cast<float>(px)) + kLaneX;
     const Floats fy = broadcast(static_cast<float>(py)) + kLaneY;
-    const std::size_t first = static_cast<std::size_t>(py) * width_ + static_cast<std::size_t>(px);
+    const std::size_t first = static_cast<std::size_t>(py) * target_.width + static_cast<std::size_t>(px);
     Words stored{};
-    if (depthState_.testEnable) {
-      const Words current = loadBlock(depth_ + first, width_, covered);
+    if (target_.depth.testEnable) {
+      const Words current = loadBlock(target_.depthStorage + first, target_.width, covered);
       Mask passes;
-      if (inverseZ_) {  // the course's 1/z buffer: larger is nearer, so compare the other way round
+      if (target_.inverseZ) {  // the course's 1/z buffer: larger is nearer, so compare the other way round
         stored = reinterpret_cast<Words>(evaluatePlane(t.oneOverW, fx, fy));
-        passes = depthTestPasses<Format>(depthState_.compareOp, current, stored);
+        passes = depthTestPasses<Format>(target_.depth.compareOp, current, stored);
       } else {
         const Floats z = evaluatePlane(t.depth, fx, fy) + t.depthOffset;
-        stored = depthToStorage<Format>(clampDepth(z, depthRange_));
-        passes = depthTestPasses<Format>(depthState_.compareOp, stored, current);
+        stored = depthToStorage<Format>(clampDepth(z, target_.depthRange));
+        passes = depthTestPasses<Format>(target_.depth.compareOp, stored, current);
       }
       covered &= maskBits(passes);
       if (covered == 0) return;
@@ -135,21 +133,15 @@ class FastFragmentStage {
       }
     }
     Words colour = packColour(Shader::template fragment<FloatBatch>(uniforms_, varyings.data()));
-    if (blend_.enable) colour = blendColour(colour, loadBlock(colour_ + first, width_, covered), blend_);
-    storeBlock(colour_ + first, width_, covered, colour);
-    if (depthState_.testEnable && depthState_.writeEnable) storeBlock(depth_ + first, width_, covered, stored);
+    if (target_.blend.enable) colour = blendColour(colour, loadBlock(colour_ + first, target_.width, covered), target_.blend);
+    storeBlock(colour_ + first, target_.width, covered, colour);
+    if (target_.depth.testEnable && target_.depth.writeEnable) storeBlock(target_.depthStorage + first, target_.width, covered, stored);
   }
 
   FragmentStage<Shader, true, Format> scalar_;
   const typename Shader::Uniforms& uniforms_;
-  DepthState depthState_;
-  BlendState blend_;
-  PixelRect region_;
-  DepthRange depthRange_;
-  bool inverseZ_;
-  std::uint32_t width_;
-  std::uint32_t* colour_;  // packed RGBA8, one word per pixel
-  std::uint32_t* depth_;
+  const FragmentTarget& target_;  // the scalar stage's: one value, derived once
+  std::uint32_t* colour_;         // target_.colour as packed RGBA8, one word per pixel
 };
 
 }  // namespace softraster::detail::fast

@@ -28,6 +28,31 @@ namespace softraster::detail {
 // other threads, fast/bands.hpp compiles it the same way there).
 enum class InstructionSet : std::uint8_t { Baseline, Fma, Avx2Fma };
 
+// What a fragment stage tests against and writes to, for one draw (or one band of it): derived
+// once from the state and the framebuffer, shared by the scalar and the fast stage.
+struct FragmentTarget {
+  DepthState depth;
+  BlendState blend;
+  PixelRect region;
+  DepthRange depthRange;
+  bool inverseZ;
+  std::uint32_t width;
+  std::uint8_t* colour;
+  std::uint32_t* depthStorage;
+};
+
+inline FragmentTarget fragmentTarget(const PipelineState& state, Framebuffer& framebuffer, const Viewport& viewport,
+                                     const PixelRect& region, bool inverseZ) {
+  return {state.depth,
+          state.blend,
+          region,
+          fragmentDepthRange(viewport, state.rasterization.depthClampEnable),
+          inverseZ,
+          framebuffer.width(),
+          framebuffer.colour().data(),
+          framebuffer.depthStorage().data()};
+}
+
 template <class Shader, bool Fused, DepthFormat Format>
 class FragmentStage {
  public:
@@ -36,55 +61,49 @@ class FragmentStage {
 
   FragmentStage(const PipelineState& state, const typename Shader::Uniforms& uniforms, Framebuffer& framebuffer,
                 const Viewport& viewport, const PixelRect& region, bool inverseZ)
-      : uniforms_(uniforms),
-        depthState_(state.depth),
-        blend_(state.blend),
-        region_(region),
-        depthRange_(fragmentDepthRange(viewport, state.rasterization.depthClampEnable)),
-        inverseZ_(inverseZ),
-        width_(framebuffer.width()),
-        colour_(framebuffer.colour().data()),
-        depth_(framebuffer.depthStorage().data()) {}
+      : uniforms_(uniforms), target_(fragmentTarget(state, framebuffer, viewport, region, inverseZ)) {}
+
+  const FragmentTarget& target() const { return target_; }
 
   // Every pixel centre inside all E edges (3: a triangle; 4: a line or point quad).
   template <int E>
   void shadePixels(const EdgeFunction (&edges)[E], const PixelRect& bounds, const TriangleInterpolants<N>& t) const {
     std::array<float, (N == 0 ? 1 : N)> varyings{};
-    rasterizeEdges(edges, bounds, region_, [&](int px, int py) {
+    rasterizeEdges(edges, bounds, target_.region, [&](int px, int py) {
       const float fx = static_cast<float>(px), fy = static_cast<float>(py);
-      const std::size_t pixel = static_cast<std::size_t>(py) * width_ + static_cast<std::size_t>(px);
+      const std::size_t pixel = static_cast<std::size_t>(py) * target_.width + static_cast<std::size_t>(px);
       std::uint32_t stored = 0;
-      if (depthState_.testEnable) {
+      if (target_.depth.testEnable) {
         bool passes;
-        if (inverseZ_) {
+        if (target_.inverseZ) {
           stored = std::bit_cast<std::uint32_t>(evaluatePlane<Fused>(t.oneOverW, fx, fy));
-          passes = depthTestPasses<Format>(depthState_.compareOp, depth_[pixel], stored);
+          passes = depthTestPasses<Format>(target_.depth.compareOp, target_.depthStorage[pixel], stored);
         } else {
-          stored = depthToStorage<Format>(clampDepth(interpolateDepth<Fused>(t, fx, fy), depthRange_));
-          passes = depthTestPasses<Format>(depthState_.compareOp, stored, depth_[pixel]);
+          stored = depthToStorage<Format>(clampDepth(interpolateDepth<Fused>(t, fx, fy), target_.depthRange));
+          passes = depthTestPasses<Format>(target_.depth.compareOp, stored, target_.depthStorage[pixel]);
         }
         if (!passes) return;
       }
       interpolateVaryings<Fused>(t, kInterpolation, fx, fy, varyings.data());
-      blendColour(colour_ + 4 * pixel, shadeFragment<Shader>(uniforms_, varyings.data()), blend_);
-      if (depthState_.testEnable && depthState_.writeEnable) depth_[pixel] = stored;
+      blendColour(target_.colour + 4 * pixel, shadeFragment<Shader>(uniforms_, varyings.data()), target_.blend);
+      if (target_.depth.testEnable && target_.depth.writeEnable) target_.depthStorage[pixel] = stored;
     });
   }
 
   // 4x MSAA: every pixel with a sample inside all three edges of a triangle.
   void shadeSamples(const EdgeFunction (&edges)[3], const PixelRect& bounds, const TriangleInterpolants<N>& t) const {
     std::array<float, (N == 0 ? 1 : N)> varyings{};
-    rasterizeEdgesSampled(edges, bounds, region_, [&](int px, int py, unsigned mask) {
+    rasterizeEdgesSampled(edges, bounds, target_.region, [&](int px, int py, unsigned mask) {
       const float fx = static_cast<float>(px), fy = static_cast<float>(py);
-      const std::size_t pixel = static_cast<std::size_t>(py) * width_ + static_cast<std::size_t>(px);
+      const std::size_t pixel = static_cast<std::size_t>(py) * target_.width + static_cast<std::size_t>(px);
       std::uint32_t stored[4];
-      unsigned passed = depthState_.testEnable ? 0u : mask;  // without the depth test every covered sample passes
-      for (int s = 0; s < 4 && depthState_.testEnable; ++s) {
+      unsigned passed = target_.depth.testEnable ? 0u : mask;  // without the depth test every covered sample passes
+      for (int s = 0; s < 4 && target_.depth.testEnable; ++s) {
         if (!(mask & (1u << s))) continue;
         const float z = clampDepth(
-            interpolateDepth<Fused>(t, fx + kSamplePositions4x[s][0], fy + kSamplePositions4x[s][1]), depthRange_);
+            interpolateDepth<Fused>(t, fx + kSamplePositions4x[s][0], fy + kSamplePositions4x[s][1]), target_.depthRange);
         stored[s] = depthToStorage<Format>(z);
-        if (depthTestPasses<Format>(depthState_.compareOp, stored[s], depth_[pixel * 4 + static_cast<std::size_t>(s)])) {
+        if (depthTestPasses<Format>(target_.depth.compareOp, stored[s], target_.depthStorage[pixel * 4 + static_cast<std::size_t>(s)])) {
           passed |= 1u << s;
         }
       }
@@ -94,8 +113,8 @@ class FragmentStage {
       for (int s = 0; s < 4; ++s) {
         if (!(passed & (1u << s))) continue;
         const std::size_t sample = pixel * 4 + static_cast<std::size_t>(s);
-        blendColour(colour_ + 4 * sample, c, blend_);
-        if (depthState_.testEnable && depthState_.writeEnable) depth_[sample] = stored[s];
+        blendColour(target_.colour + 4 * sample, c, target_.blend);
+        if (target_.depth.testEnable && target_.depth.writeEnable) target_.depthStorage[sample] = stored[s];
       }
     });
   }
@@ -104,14 +123,7 @@ class FragmentStage {
   static constexpr InterpolationSet<N> kInterpolation = interpolationOf<Shader>();
 
   const typename Shader::Uniforms& uniforms_;
-  DepthState depthState_;
-  BlendState blend_;
-  PixelRect region_;
-  DepthRange depthRange_;
-  bool inverseZ_;
-  std::uint32_t width_;
-  std::uint8_t* colour_;
-  std::uint32_t* depth_;
+  FragmentTarget target_;
 };
 
 }  // namespace softraster::detail
