@@ -72,12 +72,14 @@ void beginRendering(VkCommandBuffer cmd, const FramePass& pass) {
   vkCmdBeginRendering(cmd, &info);
 }
 
-// The draws in order. A pipeline or push constants equal to the previous draw's are not bound
-// again (bound state persists across draws, and all pipelines share one layout).
+// The draws in order. A pipeline, push constants or uniform block equal to the previous draw's
+// are not bound again (bound state persists across draws, and all pipelines share one layout).
 void recordDraws(VkCommandBuffer cmd, const FramePass& pass) {
   if (pass.indices) vkCmdBindIndexBuffer(cmd, pass.indices, 0, VK_INDEX_TYPE_UINT32);
   VkPipeline bound = VK_NULL_HANDLE;
   std::span<const std::byte> pushed;
+  bool uniformsBound = false;
+  std::uint32_t boundOffset = 0;
   for (const PassDraw& d : pass.draws) {
     if (d.pipeline != bound) {
       vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, d.pipeline);
@@ -90,6 +92,12 @@ void recordDraws(VkCommandBuffer cmd, const FramePass& pass) {
       vkCmdPushConstants(cmd, pass.layout, kPushConstantStages, 0, static_cast<std::uint32_t>(d.pushConstants.size()),
                          d.pushConstants.data());
       pushed = d.pushConstants;
+    }
+    if (d.bindUniforms && !(uniformsBound && boundOffset == d.uniformOffset)) {
+      vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pass.layout, 0, 1, &pass.uniforms, 1,
+                              &d.uniformOffset);
+      uniformsBound = true;
+      boundOffset = d.uniformOffset;
     }
     if (d.indexed)
       vkCmdDrawIndexed(cmd, d.count, 1, d.firstIndex, 0, 0);

@@ -31,6 +31,8 @@ struct PassDraw {
   std::uint32_t firstIndex = 0;            // into the frame's index buffer, when indexed
   std::uint32_t count = 0;                 // indices when indexed, else vertices
   std::span<const std::byte> pushConstants;  // empty: the previous draw's stay
+  bool bindUniforms = false;       // the draw has a uniform block...
+  std::uint32_t uniformOffset = 0;  // ...at this dynamic offset in the frame's uniform buffer
 };
 
 // Everything the render pass of a frame reads.
@@ -41,6 +43,7 @@ struct FramePass {
   VkPipelineLayout layout = VK_NULL_HANDLE;
   VkBuffer vertices = VK_NULL_HANDLE;  // the frame's buffers (null when no draw uses one)
   VkBuffer indices = VK_NULL_HANDLE;
+  VkDescriptorSet uniforms = VK_NULL_HANDLE;  // the frame's uniform blocks (null when no draw has one)
   std::span<const PassDraw> draws;
 };
 

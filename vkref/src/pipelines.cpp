@@ -91,6 +91,9 @@ Status checkDraw(const DrawCall& d, std::uint32_t width, std::uint32_t height, c
   if (d.pushConstants.size() > kPushConstantBytes || d.pushConstants.size() % 4 != 0)
     return Status::error(std::to_string(d.pushConstants.size()) +
                          " bytes of push constants (need a multiple of 4, at most 128)");
+  if (d.uniformData.size() > limits.maxUniformBufferRange || d.uniformData.size() % 4 != 0)
+    return Status::error(std::to_string(d.uniformData.size()) + " bytes of uniform block (need a multiple of 4, at most " +
+                         std::to_string(limits.maxUniformBufferRange) + ")");
 
   const softraster::PipelineState& s = d.state;
   if (s.topology > softraster::Topology::TriangleFan) return Status::error("unsupported topology");
@@ -144,8 +147,19 @@ Status checkDraw(const DrawCall& d, std::uint32_t width, std::uint32_t height, c
 
 softraster::Result<std::unique_ptr<PipelineCache>> PipelineCache::create(const Device& device) {
   std::unique_ptr<PipelineCache> cache(new PipelineCache(device.device));
+  const VkDescriptorSetLayoutBinding uniformBinding{0, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER_DYNAMIC, 1,
+                                                    kPushConstantStages, nullptr};
+  const VkDescriptorSetLayoutCreateInfo setInfo{.sType = VK_STRUCTURE_TYPE_DESCRIPTOR_SET_LAYOUT_CREATE_INFO,
+                                                .bindingCount = 1,
+                                                .pBindings = &uniformBinding};
+  if (Status s = check(vkCreateDescriptorSetLayout(device.device, &setInfo, nullptr, &cache->setLayout_),
+                       "vkCreateDescriptorSetLayout");
+      !s)
+    return s;
   const VkPushConstantRange pushRange{kPushConstantStages, 0, kPushConstantBytes};
   const VkPipelineLayoutCreateInfo layoutInfo{.sType = VK_STRUCTURE_TYPE_PIPELINE_LAYOUT_CREATE_INFO,
+                                              .setLayoutCount = 1,
+                                              .pSetLayouts = &cache->setLayout_,
                                               .pushConstantRangeCount = 1,
                                               .pPushConstantRanges = &pushRange};
   if (Status s = check(vkCreatePipelineLayout(device.device, &layoutInfo, nullptr, &cache->layout_),
@@ -158,6 +172,7 @@ softraster::Result<std::unique_ptr<PipelineCache>> PipelineCache::create(const D
 PipelineCache::~PipelineCache() {
   for (const auto& [key, pipeline] : pipelines_) vkDestroyPipeline(device_, pipeline, nullptr);
   vkDestroyPipelineLayout(device_, layout_, nullptr);
+  vkDestroyDescriptorSetLayout(device_, setLayout_, nullptr);
 }
 
 std::uint32_t PipelineCache::programIndex(const ShaderProgram& p, FrameMemo& memo) {

@@ -70,8 +70,10 @@ class PipelineCache {
     std::vector<Entry> entries_;
   };
 
-  // The one layout of every pipeline: kPushConstantBytes of push constants, no descriptor sets.
+  // The one layout of every pipeline: kPushConstantBytes of push constants and set 0, whose
+  // binding 0 is a dynamic uniform buffer (a draw's uniform block) for both stages.
   VkPipelineLayout layout() const { return layout_; }
+  VkDescriptorSetLayout uniformSetLayout() const { return setLayout_; }
   // The pipeline for a checked draw (see checkDraw), compiled on its first use.
   softraster::Result<VkPipeline> get(const DrawCall& draw, const TargetFormat& target, FrameMemo& memo);
   std::size_t size() const { return pipelines_.size(); }
@@ -110,6 +112,7 @@ class PipelineCache {
                                          const TargetFormat& target) const;
 
   VkDevice device_;
+  VkDescriptorSetLayout setLayout_ = VK_NULL_HANDLE;
   VkPipelineLayout layout_ = VK_NULL_HANDLE;
   std::vector<Program> programs_;
   std::unordered_multimap<std::size_t, std::uint32_t> programsByHash_;

@@ -1,7 +1,7 @@
 // vkref::Renderer on the plain Vulkan C API (1.3: dynamic rendering, synchronization2): only the
 // orchestration. create() opens the device (device.cpp) and the pipeline cache (pipelines.cpp);
-// prepare() checks the request, creates its images (resources.cpp), uploads its vertices and
-// indices into one buffer each, takes its pipelines from the cache and records its two command
+// prepare() checks the request, creates its images (resources.cpp), uploads its vertices,
+// indices and uniform blocks into one buffer each, takes its pipelines from the cache and records its two command
 // buffers: the render pass (passes.cpp) and the copies to the host (readback.cpp); submit() runs
 // the first, readBack() the second and unpacks the images.
 // Deliberately synchronous: every submission is waited for before the call returns, so a frame
@@ -33,6 +33,7 @@ struct PreparedFrame::Impl {
   const detail::Device* device = nullptr;  // of the Renderer that prepared the frame
   detail::Targets targets;
   detail::Geometry geometry;
+  detail::UniformSet uniforms;
   detail::HostImages host;
   std::unique_ptr<detail::Commands> commands;
   bool submitted = false;
@@ -99,6 +100,9 @@ Result<PreparedFrame> Renderer::prepare(const FrameRequest& request) {
   auto geometry = detail::uploadGeometry(device, drawn);
   if (!geometry) return geometry.status();
   frame->geometry = std::move(*geometry);
+  auto uniforms = detail::UniformSet::create(device, impl_->pipelines->uniformSetLayout(), frame->geometry);
+  if (!uniforms) return uniforms.status();
+  frame->uniforms = std::move(*uniforms);
 
   std::vector<detail::PassDraw> passDraws(drawn.size());
   detail::PipelineCache::FrameMemo memo;
@@ -115,6 +119,8 @@ Result<PreparedFrame> Renderer::prepare(const FrameRequest& request) {
     p.firstIndex = frame->geometry.ranges[i].firstIndex;
     p.count = d.indexed ? static_cast<std::uint32_t>(d.indices.size()) : detail::vertexCount(d);
     p.pushConstants = d.pushConstants;
+    p.bindUniforms = !d.uniformData.empty();
+    p.uniformOffset = frame->geometry.ranges[i].uniformOffset;
   }
 
   auto commands = detail::Commands::create(device);
@@ -126,6 +132,7 @@ Result<PreparedFrame> Renderer::prepare(const FrameRequest& request) {
                                .layout = impl_->pipelines->layout(),
                                .vertices = frame->geometry.vertices.handle(),
                                .indices = frame->geometry.indices.handle(),
+                               .uniforms = frame->uniforms.handle(),
                                .draws = passDraws};
   if (Status s = detail::recordRenderPass(frame->commands->render(), pass); !s) return s;
   if (Status s = detail::recordCopies(frame->commands->copy(), frame->targets, frame->host); !s) return s;

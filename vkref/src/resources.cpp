@@ -3,6 +3,7 @@
 
 #include "errors.hpp"
 
+#include <algorithm>
 #include <cstring>
 #include <optional>
 #include <utility>
@@ -177,10 +178,18 @@ softraster::Result<Geometry> uploadGeometry(const Device& device, std::span<cons
   Geometry g;
   g.ranges.resize(draws.size());
   // Lay the draws out first, so each buffer is allocated once.
-  VkDeviceSize vertexBytes = 0;
+  VkDeviceSize vertexBytes = 0, uniformBytes = 0, lastUniformOffset = 0;
   std::size_t indexCount = 0;
+  for (const DrawCall* d : draws) g.uniformRange = std::max<VkDeviceSize>(g.uniformRange, d->uniformData.size());
+  const VkDeviceSize uniformAlignment = std::max<VkDeviceSize>(device.limits.minUniformBufferOffsetAlignment, 16);
   for (std::size_t i = 0; i < draws.size(); ++i) {
     const DrawCall& d = *draws[i];
+    if (!d.uniformData.empty()) {
+      uniformBytes = alignUp(uniformBytes, uniformAlignment);
+      g.ranges[i].uniformOffset = static_cast<std::uint32_t>(uniformBytes);
+      lastUniformOffset = uniformBytes;
+      uniformBytes += d.uniformData.size();
+    }
     if (!d.program->attributes.empty()) {
       vertexBytes = alignUp(vertexBytes, kVertexAlignment);
       g.ranges[i].vertexOffset = vertexBytes;
@@ -201,6 +210,14 @@ softraster::Result<Geometry> uploadGeometry(const Device& device, std::span<cons
     if (!indices) return indices.status();
     g.indices = std::move(*indices);
   }
+  if (g.uniformRange > 0) {
+    // Every block is bound with the same range, so the last one is followed by padding up to it.
+    auto uniforms = Buffer::create(device, lastUniformOffset + g.uniformRange,
+                                   VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT);
+    if (!uniforms) return uniforms.status();
+    g.uniforms = std::move(*uniforms);
+  }
+  auto* uniformBase = static_cast<std::byte*>(g.uniforms.mapped());
   auto* vertexBase = static_cast<std::byte*>(g.vertices.mapped());
   auto* indexBase = static_cast<std::uint32_t*>(g.indices.mapped());
   for (std::size_t i = 0; i < draws.size(); ++i) {
@@ -209,8 +226,59 @@ softraster::Result<Geometry> uploadGeometry(const Device& device, std::span<cons
       std::memcpy(vertexBase + g.ranges[i].vertexOffset, d.vertexData.data(), d.vertexData.size());
     if (d.indexed && !d.indices.empty())
       std::memcpy(indexBase + g.ranges[i].firstIndex, d.indices.data(), d.indices.size() * sizeof(std::uint32_t));
+    if (!d.uniformData.empty())
+      std::memcpy(uniformBase + g.ranges[i].uniformOffset, d.uniformData.data(), d.uniformData.size());
   }
   return g;
+}
+
+// ---- UniformSet --------------------------------------------------------------------------------
+
+softraster::Result<UniformSet> UniformSet::create(const Device& device, VkDescriptorSetLayout layout,
+                                                  const Geometry& geometry) {
+  UniformSet u;
+  if (geometry.uniformRange == 0) return u;
+  u.device_ = device.device;
+  const VkDescriptorPoolSize size{VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER_DYNAMIC, 1};
+  const VkDescriptorPoolCreateInfo poolInfo{
+      .sType = VK_STRUCTURE_TYPE_DESCRIPTOR_POOL_CREATE_INFO, .maxSets = 1, .poolSizeCount = 1, .pPoolSizes = &size};
+  if (Status s = check(vkCreateDescriptorPool(device.device, &poolInfo, nullptr, &u.pool_), "vkCreateDescriptorPool");
+      !s)
+    return s;
+  const VkDescriptorSetAllocateInfo allocInfo{.sType = VK_STRUCTURE_TYPE_DESCRIPTOR_SET_ALLOCATE_INFO,
+                                              .descriptorPool = u.pool_,
+                                              .descriptorSetCount = 1,
+                                              .pSetLayouts = &layout};
+  if (Status s = check(vkAllocateDescriptorSets(device.device, &allocInfo, &u.set_), "vkAllocateDescriptorSets"); !s)
+    return s;
+  const VkDescriptorBufferInfo buffer{geometry.uniforms.handle(), 0, geometry.uniformRange};
+  const VkWriteDescriptorSet write{.sType = VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET,
+                                   .dstSet = u.set_,
+                                   .dstBinding = 0,
+                                   .descriptorCount = 1,
+                                   .descriptorType = VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER_DYNAMIC,
+                                   .pBufferInfo = &buffer};
+  vkUpdateDescriptorSets(device.device, 1, &write, 0, nullptr);
+  return u;
+}
+
+UniformSet::UniformSet(UniformSet&& other) noexcept
+    : device_(std::exchange(other.device_, VK_NULL_HANDLE)),
+      pool_(std::exchange(other.pool_, VK_NULL_HANDLE)),
+      set_(std::exchange(other.set_, VK_NULL_HANDLE)) {}
+
+UniformSet& UniformSet::operator=(UniformSet&& other) noexcept {
+  if (this != &other) {
+    if (pool_) vkDestroyDescriptorPool(device_, pool_, nullptr);
+    device_ = std::exchange(other.device_, VK_NULL_HANDLE);
+    pool_ = std::exchange(other.pool_, VK_NULL_HANDLE);
+    set_ = std::exchange(other.set_, VK_NULL_HANDLE);
+  }
+  return *this;
+}
+
+UniformSet::~UniformSet() {
+  if (pool_) vkDestroyDescriptorPool(device_, pool_, nullptr);  // frees the set
 }
 
 }  // namespace vkref::detail

@@ -1,5 +1,6 @@
 // vkref resources: buffers and images with their memory, the images a frame renders into, and
-// the upload of a frame's vertices and indices into one vertex buffer and one index buffer.
+// the upload of a frame's vertices, indices and uniform blocks into one buffer each, and the
+// descriptor set of its uniform blocks.
 // Deliberately simple: buffers are host-visible, coherent and mapped for their whole life (on
 // lavapipe all memory is host memory, so there are no staging copies), images are 2D with one
 // level and one layer, and every object has its own allocation (a frame has a handful of them,
@@ -79,19 +80,42 @@ struct Targets {
 softraster::Result<Targets> createTargets(const Device& device, std::uint32_t width, std::uint32_t height,
                                           VkFormat depthFormat, VkSampleCountFlagBits samples);
 
-// Every vertex and index of a frame, in one vertex buffer and one index buffer (either empty when
-// no draw has any), and where each draw's share begins.
+// Every vertex, index and uniform block of a frame, in one vertex buffer, one index buffer and one
+// uniform buffer (each empty when no draw has any), and where each draw's share begins.
 struct Geometry {
   struct Range {
-    VkDeviceSize vertexOffset = 0;  // bytes into `vertices`
-    std::uint32_t firstIndex = 0;   // indices into `indices`
+    VkDeviceSize vertexOffset = 0;   // bytes into `vertices`
+    std::uint32_t firstIndex = 0;    // indices into `indices`
+    std::uint32_t uniformOffset = 0;  // bytes into `uniforms`: the draw's dynamic offset
   };
-  Buffer vertices, indices;
-  std::vector<Range> ranges;  // one per draw uploaded, in the same order
+  Buffer vertices, indices, uniforms;
+  VkDeviceSize uniformRange = 0;  // bytes every draw's block is bound with (the largest block)
+  std::vector<Range> ranges;      // one per draw uploaded, in the same order
 };
 
-// Uploads the vertex data of each draw whose program reads vertices and the indices of each
-// indexed draw. Every draw must have a program.
+// Uploads the vertex data of each draw whose program reads vertices, the indices of each indexed
+// draw and each draw's uniform block (at offsets the device's alignment allows). Every draw must
+// have a program.
 softraster::Result<Geometry> uploadGeometry(const Device& device, std::span<const DrawCall* const> draws);
+
+// The descriptor set that binds a frame's uniform buffer as a dynamic uniform buffer (set 0,
+// binding 0; each draw picks its block by dynamic offset), with the pool it comes from. Move-only.
+class UniformSet {
+ public:
+  // A set for `geometry.uniforms`, or an empty one when the frame has no uniform blocks.
+  static softraster::Result<UniformSet> create(const Device& device, VkDescriptorSetLayout layout,
+                                               const Geometry& geometry);
+  UniformSet() = default;
+  UniformSet(UniformSet&& other) noexcept;
+  UniformSet& operator=(UniformSet&& other) noexcept;
+  ~UniformSet();
+
+  VkDescriptorSet handle() const { return set_; }
+
+ private:
+  VkDevice device_ = VK_NULL_HANDLE;
+  VkDescriptorPool pool_ = VK_NULL_HANDLE;
+  VkDescriptorSet set_ = VK_NULL_HANDLE;
+};
 
 }  // namespace vkref::detail

@@ -2,7 +2,7 @@
 // ShaderProgram and softraster::PipelineState), what it gets back (FrameImages: colour, depth as
 // floats and depth as stored) and the handle of a frame prepared once and submitted many times.
 // Deliberately plain values: no Vulkan type appears here, and nothing in a request is kept after
-// Renderer::prepare returns (vertices and indices are uploaded, push constants recorded).
+// Renderer::prepare returns (vertices, indices and uniform blocks are uploaded, push constants recorded).
 #pragma once
 
 #include <softraster/framebuffer.hpp>
@@ -36,6 +36,10 @@ struct DrawCall {
   bool indexed = true;                      // vkCmdDrawIndexed with `indices`, else vkCmdDraw of all vertices
   std::vector<std::uint32_t> indices;       // assembled by state.topology
   std::vector<std::byte> pushConstants;     // visible to vertex and fragment stages, <= 128 bytes
+  // The uniform block at set 0, binding 0 (std140), visible to vertex and fragment stages, for
+  // uniforms that do not fit the push constants; at most maxUniformBufferRange bytes. Empty: the
+  // program reads none.
+  std::vector<std::byte> uniformData;
 };
 
 struct FrameRequest {
