@@ -9,6 +9,7 @@ packages=(
   libvulkan-dev mesa-vulkan-drivers         # Vulkan loader and lavapipe
   vulkan-validationlayers glslang-tools     # validation in tests; GLSL -> SPIR-V at build time
   libtinyobjloader-dev nlohmann-json3-dev   # OBJ meshes and scene files
+  libglm-dev                                # scene matrices (model, normal, camera) in double
   libstb-dev libcli11-dev libgtest-dev      # PNG output, command line, tests
   zlib1g-dev                                # the report's pixel data
   chromium libxml2-utils bsdutils           # tests: the report in a browser, JUnit (xmllint), a terminal (script)

@@ -18,10 +18,7 @@ double millisecondsSince(Clock::time_point start) {
   return std::chrono::duration<double, std::milli>(Clock::now() - start).count();
 }
 
-// What every shading model reads of a draw besides its mesh.
-shaders::DrawParameters parametersOf(const Scene& scene, const Draw& draw) {
-  return {scene.viewProjection, draw.pointSize};
-}
+shaders::DrawParameters parametersOf(const Scene& scene, const Draw& draw) { return drawParameters(scene, draw); }
 
 // A shading model's compiled SPIR-V pair and the vertex layout of its C++ twin, for vkref.
 vkref::ShaderProgram programOf(const shaders::ShadingModel& model) {
@@ -120,7 +117,8 @@ softraster::Result<vkref::PreparedFrame> prepareVulkan(const Scene& scene, vkref
     call.vertexData = draw.shading->vertexBytes(draw.mesh);
     call.indexed = draw.indexed;
     call.indices = draw.indices;
-    call.pushConstants = draw.shading->uniformBytes(parametersOf(scene, draw));
+    (draw.shading->uniformBuffer ? call.uniformData : call.pushConstants) =
+        draw.shading->uniformBytes(parametersOf(scene, draw));
     request.draws.push_back(std::move(call));
   }
   auto prepared = renderer.prepare(request);

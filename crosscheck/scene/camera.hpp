@@ -1,11 +1,12 @@
-// Cameras of the course material, turned into one view-projection matrix for Vulkan's clip space
-// (x right, y down, depth 0 at the near plane and 1 at the far plane).
+// Cameras of the course material, as a view matrix (world to camera space) and a projection
+// matrix (camera to Vulkan's clip space: x right, y down, depth 0 at the near plane and 1 at the
+// far plane), both in double precision (GLM); the scene rounds each product to float once.
 // Camera space follows the course's pinhole model: x right, y down, z forward; world space uses
 // the same axes unless a look-at camera says which way is up.
 // Deliberately no orthographic camera and no lens shift until a scene needs one.
 #pragma once
 
-#include <softraster/math.hpp>
+#include <glm/mat4x4.hpp>
 
 #include <array>
 
@@ -27,8 +28,12 @@ struct LookAtCamera {
   double nearPlane = 0.1, farPlane = 100;
 };
 
-// Matrices are computed in double and rounded to float once, so both renderers get the same bits.
-softraster::Mat4 viewProjection(const PinholeCamera& camera, int width, int height);
-softraster::Mat4 viewProjection(const LookAtCamera& camera, int width, int height);
+struct CameraMatrices {
+  glm::dmat4 view{1.0};        // world -> camera
+  glm::dmat4 projection{1.0};  // camera -> clip
+};
+
+CameraMatrices cameraMatrices(const PinholeCamera& camera, int width, int height);
+CameraMatrices cameraMatrices(const LookAtCamera& camera, int width, int height);
 
 }  // namespace crosscheck

@@ -36,6 +36,15 @@ softraster::Result<ObjMesh> loadObjMesh(const std::filesystem::path& path, softr
   const std::size_t positionCount = attrib.vertices.size() / 3;
   const bool hasVertexColours = attrib.colors.size() == attrib.vertices.size() && !attrib.colors.empty() &&
                                 std::any_of(attrib.colors.begin(), attrib.colors.end(), [](float c) { return c != 1.0f; });
+  // Normals (vn) are kept only when every face corner names one: a mesh half with normals would
+  // light half of itself from computed ones without saying so.
+  const std::size_t normalCount = attrib.normals.size() / 3;
+  bool everyCornerHasNormal = normalCount > 0;
+  for (const tinyobj::shape_t& shape : reader.GetShapes()) {
+    for (const tinyobj::index_t& index : shape.mesh.indices) {
+      if (index.normal_index < 0 || static_cast<std::size_t>(index.normal_index) >= normalCount) everyCornerHasNormal = false;
+    }
+  }
   ObjMesh mesh;
   for (const tinyobj::shape_t& shape : reader.GetShapes()) {
     std::size_t offset = 0;
@@ -59,6 +68,10 @@ softraster::Result<ObjMesh> loadObjMesh(const std::filesystem::path& path, softr
         mesh.vertices.colours.push_back(hasVertexColours ? softraster::Vec4{attrib.colors[3 * i], attrib.colors[3 * i + 1],
                                                                             attrib.colors[3 * i + 2], 1.0f}
                                                          : faceColour);
+        if (everyCornerHasNormal) {
+          const auto n = static_cast<std::size_t>(shape.mesh.indices[offset + c].normal_index);
+          mesh.vertices.normals.push_back({attrib.normals[3 * n], attrib.normals[3 * n + 1], attrib.normals[3 * n + 2]});
+        }
       }
       for (std::size_t c = 2; c < corners; ++c) {
         mesh.indices.insert(mesh.indices.end(), {first, first + static_cast<std::uint32_t>(c - 1),

@@ -1,7 +1,7 @@
 // OBJ meshes through tinyobjloader: positions, faces (polygons split as a fan: (a,b,c),(a,c,d)...)
-// and a colour per vertex from the face's material (Kd), the OBJ vertex colour, or a fallback,
-// as a model-neutral shaders::Mesh.
-// Deliberately ignores normals and texture coordinates until a shading model reads them.
+// a colour per vertex from the face's material (Kd), the OBJ vertex colour, or a fallback, and
+// the normals (vn) when every face corner has one, as a model-neutral shaders::Mesh.
+// Deliberately ignores texture coordinates until a shading model reads them.
 #pragma once
 
 #include <softraster/status.hpp>

@@ -2,8 +2,12 @@
 #include "scene/scene.hpp"
 
 #include "scene/camera.hpp"
+#include "scene/normals.hpp"
 #include "scene/obj_mesh.hpp"
 
+#include <glm/gtc/matrix_inverse.hpp>
+#include <glm/gtc/matrix_transform.hpp>
+#include <glm/mat3x3.hpp>
 #include <nlohmann/json.hpp>
 
 #include <array>
@@ -29,6 +33,26 @@ struct SceneError : std::runtime_error {
 };
 
 std::string placeOf(const std::string& parent, const std::string& key) { return parent + "/" + key; }
+
+softraster::Mat4 roundedToFloat(const glm::dmat4& m) {
+  softraster::Mat4 out;
+  for (int c = 0; c < 4; ++c) {
+    for (int r = 0; r < 4; ++r) out.at(r, c) = static_cast<float>(m[c][r]);
+  }
+  return out;
+}
+
+softraster::Vec4 roundedToFloat(const glm::dvec4& v) {
+  return {static_cast<float>(v.x), static_cast<float>(v.y), static_cast<float>(v.z), static_cast<float>(v.w)};
+}
+
+// The inverse transpose of m's upper 3x3, as a Mat4 whose columns' xyz hold it.
+softraster::Mat4 normalMatrix(const glm::dmat4& m) {
+  const glm::dmat3 n = glm::inverseTranspose(glm::dmat3(m));
+  glm::dmat4 out(0.0);
+  for (int c = 0; c < 3; ++c) out[c] = glm::dvec4(n[c], 0.0);
+  return roundedToFloat(out);
+}
 
 // Rejects keys the format does not know, so a typo is an error instead of a silent default.
 void checkKeys(const json& object, const std::string& place, std::initializer_list<const char*> known) {
@@ -134,7 +158,7 @@ const shaders::ShadingModel* readShadingModel(const json& d, const std::string& 
   throw SceneError(placeOf(place, "shading"), "'" + name + "' is not one of " + list);
 }
 
-softraster::Mat4 readCamera(const json& camera, const std::string& place, int width, int height) {
+CameraMatrices readCamera(const json& camera, const std::string& place, int width, int height) {
   const std::string type = readString(camera, "type", place, "pinhole");
   if (type == "pinhole") {
     checkKeys(camera, place, {"type", "position", "yaw", "pitch", "focal_length", "near", "far"});
@@ -147,7 +171,7 @@ softraster::Mat4 readCamera(const json& camera, const std::string& place, int wi
     c.farPlane = readNumber(camera, "far", place, c.farPlane);
     if (!(c.focalLengthPixels > 0)) throw SceneError(placeOf(place, "focal_length"), "must be positive");
     if (!(c.nearPlane > 0 && c.farPlane > c.nearPlane)) throw SceneError(place, "needs 0 < near < far");
-    return viewProjection(c, width, height);
+    return cameraMatrices(c, width, height);
   }
   if (type == "look_at") {
     checkKeys(camera, place, {"type", "eye", "target", "up", "fov_y", "aspect", "near", "far"});
@@ -162,11 +186,11 @@ softraster::Mat4 readCamera(const json& camera, const std::string& place, int wi
     if (!(c.fovYDegrees > 0 && c.fovYDegrees < 180)) throw SceneError(placeOf(place, "fov_y"), "must be in (0, 180)");
     if (!(c.nearPlane > 0 && c.farPlane > c.nearPlane)) throw SceneError(place, "needs 0 < near < far");
     if (c.eye == c.target) throw SceneError(place, "eye and target are the same point");
-    return viewProjection(c, width, height);
+    return cameraMatrices(c, width, height);
   }
   if (type == "clip_space") {  // positions are clip coordinates (w = 1): exact control of window positions
     checkKeys(camera, place, {"type"});
-    return softraster::Mat4::identity();
+    return {};
   }
   throw SceneError(placeOf(place, "type"), "'" + type + "' is not one of pinhole, look_at, clip_space");
 }
@@ -269,7 +293,8 @@ std::int64_t readSphereDivisions(const json& sphere, const char* key, const std:
 // A UV sphere: `segments` around its axis (y), `rings` from pole to pole (a single vertex at
 // each pole), 2 * segments * (rings - 1) triangles, indexed, every face wound so that its
 // normal by the right-hand rule points outwards (front facing with counter_clockwise, as
-// meshes/sphere.obj). Each vertex is coloured by its normal, 0.5 + 0.5 * n, alpha 1. Positions
+// meshes/sphere.obj). Each vertex is coloured by its normal, 0.5 + 0.5 * n, alpha 1 (unless the
+// draw gives a "colour"), and has its exact normal. Positions
 // are computed in double and rounded to float once, so both renderers get the same bits.
 void makeSphere(const json& sphere, const std::string& place, Draw& draw) {
   checkKeys(sphere, place, {"segments", "rings", "radius", "centre"});
@@ -301,6 +326,7 @@ void makeSphere(const json& sphere, const std::string& place, Draw& draw) {
                                    static_cast<float>(centre[2] + radius * n[2])});
     draw.mesh.colours.push_back({static_cast<float>(0.5 + 0.5 * n[0]), static_cast<float>(0.5 + 0.5 * n[1]),
                                  static_cast<float>(0.5 + 0.5 * n[2]), 1.0f});
+    draw.mesh.normals.push_back({static_cast<float>(n[0]), static_cast<float>(n[1]), static_cast<float>(n[2])});
   }
   const auto top = std::uint32_t{0}, bottom = static_cast<std::uint32_t>(normals.size() - 1);
   const auto ring = [&](std::int64_t j, std::int64_t i) {  // ring j in 1..rings-1, segment i (wrapping)
@@ -330,10 +356,112 @@ void makeSphere(const json& sphere, const std::string& place, Draw& draw) {
   }
 }
 
-Draw readDraw(const json& d, const std::string& place, const std::filesystem::path& sceneDir) {
-  checkKeys(d, place, {"name", "obj", "sphere", "positions", "colours", "colour", "indices", "shading", "topology", "viewport",
-                       "scissor", "cull", "front_face", "depth_clamp", "depth_bias", "line_width", "line_rasterization",
-                       "point_size", "polygon_mode", "blend", "depth_test", "depth_write", "depth_compare"});
+Draw readDrawMesh(const json& d, const std::string& place, const std::filesystem::path& sceneDir);
+
+// "transform": the object-to-world matrix M = T * Rz * Ry * Rx * S (scale first, then rotations
+// about x, y and z, then translation; angles in degrees, right-handed about the scene's axes,
+// "rotate" plus "spin" times the scene's time).
+glm::dmat4 readTransform(const json& t, const std::string& place, double time) {
+  checkKeys(t, place, {"scale", "rotate", "spin", "translate"});
+  glm::dvec3 scale(1.0);
+  if (t.contains("scale")) {
+    if (t["scale"].is_number()) {
+      scale = glm::dvec3(readNumber(t["scale"], placeOf(place, "scale")));
+    } else {
+      const auto v = readNumbers(t["scale"], placeOf(place, "scale"), 3, 3);
+      scale = {v[0], v[1], v[2]};
+    }
+  }
+  const auto rotate = readVec3(t, "rotate", place, {0, 0, 0});
+  const auto spin = readVec3(t, "spin", place, {0, 0, 0});
+  const auto translate = readVec3(t, "translate", place, {0, 0, 0});
+  for (double v : {scale.x, scale.y, scale.z, rotate[0], rotate[1], rotate[2], spin[0], spin[1], spin[2], translate[0],
+                   translate[1], translate[2]}) {
+    if (!std::isfinite(v)) throw SceneError(place, "every value must be finite");
+  }
+  glm::dmat4 m = glm::translate(glm::dmat4(1.0), glm::dvec3(translate[0], translate[1], translate[2]));
+  const glm::dvec3 axes[3] = {{0, 0, 1}, {0, 1, 0}, {1, 0, 0}};
+  for (int k = 0; k < 3; ++k) {  // z, then y, then x: applied to a point in the order x, y, z
+    const int a = 2 - k;
+    m = glm::rotate(m, glm::radians(rotate[a] + spin[a] * time), axes[k]);
+  }
+  return glm::scale(m, scale);
+}
+
+// "material": what the lit models read beyond the vertex colours.
+shaders::Material readMaterial(const json& m, const std::string& place) {
+  checkKeys(m, place, {"indirect", "ambient", "specular", "shininess"});
+  shaders::Material material;
+  const auto rgb = [&](const char* key, softraster::Vec4 fallback) {
+    if (!m.contains(key)) return fallback;
+    const auto v = readNumbers(m[key], placeOf(place, key), 3, 3);
+    for (double c : v) {
+      if (!(c >= 0) || !std::isfinite(c)) throw SceneError(placeOf(place, key), "components must be finite and >= 0");
+    }
+    return softraster::Vec4{static_cast<float>(v[0]), static_cast<float>(v[1]), static_cast<float>(v[2]), 0};
+  };
+  material.indirect = rgb("indirect", material.indirect);
+  material.ambient = rgb("ambient", material.ambient);
+  material.specular = rgb("specular", material.specular);
+  material.shininess = static_cast<float>(readNumber(m, "shininess", place, material.shininess));
+  if (!(material.shininess >= 0 && material.shininess <= 10000)) {
+    throw SceneError(placeOf(place, "shininess"), "must be in [0, 10000]");
+  }
+  return material;
+}
+
+// Normals for a model that reads them: "normals" is "flat", "smooth", "file" (the OBJ's vn) or,
+// for inline positions, one [x, y, z] per position. Default: the OBJ's vn when it has them, the
+// sphere's own, else flat.
+void readNormals(const json& d, const std::string& place, Draw& draw, bool haveOwn) {
+  const std::string at = placeOf(place, "normals");
+  std::string mode = haveOwn ? "file" : "flat";
+  if (d.contains("normals")) {
+    const json& n = d["normals"];
+    if (n.is_array()) {
+      if (!d.contains("positions")) throw SceneError(at, "inline normals need inline positions");
+      if (n.size() != draw.mesh.vertexCount()) {
+        throw SceneError(at, "expected one normal per position (" + std::to_string(draw.mesh.vertexCount()) + ")");
+      }
+      draw.mesh.normals.clear();
+      for (std::size_t i = 0; i < n.size(); ++i) {
+        const auto v = readNumbers(n[i], placeOf(at, std::to_string(i)), 3, 3);
+        draw.mesh.normals.push_back({static_cast<float>(v[0]), static_cast<float>(v[1]), static_cast<float>(v[2])});
+      }
+      return;
+    }
+    mode = readString(d, "normals", place, mode);
+  }
+  if (mode == "file") {
+    if (!haveOwn) throw SceneError(at, "'file': the mesh has no normals of its own (an OBJ without vn)");
+    return;
+  }
+  if (mode != "flat" && mode != "smooth") throw SceneError(at, "'" + mode + "' is not one of flat, smooth, file, or an array");
+  if (draw.state.topology != softraster::Topology::TriangleList) {
+    throw SceneError(at, "flat and smooth normals are computed for triangle lists only; give one per position");
+  }
+  computeNormals(draw.mesh, draw.indices, draw.indexed, mode == "flat" ? NormalMode::Flat : NormalMode::Smooth);
+}
+
+Draw readDraw(const json& d, const std::string& place, const std::filesystem::path& sceneDir, double time) {
+  Draw draw = readDrawMesh(d, place, sceneDir);
+  if (d.contains("transform")) draw.model = readTransform(d["transform"], placeOf(place, "transform"), time);
+  if (d.contains("material")) draw.material = readMaterial(d["material"], placeOf(place, "material"));
+  const bool readsNormals = (draw.shading->meshInputs & shaders::kReadsNormals) != 0;
+  if (readsNormals) {
+    readNormals(d, place, draw, !draw.mesh.normals.empty());
+  } else {
+    if (d.contains("normals")) throw SceneError(placeOf(place, "normals"), "shading '" + std::string(draw.shading->name) + "' reads no normals");
+    draw.mesh.normals.clear();
+  }
+  return draw;
+}
+
+Draw readDrawMesh(const json& d, const std::string& place, const std::filesystem::path& sceneDir) {
+  checkKeys(d, place, {"name", "obj", "sphere", "positions", "colours", "colour", "indices", "normals", "shading",
+                       "transform", "material", "topology", "viewport", "scissor", "cull", "front_face", "depth_clamp",
+                       "depth_bias", "line_width", "line_rasterization", "point_size", "polygon_mode", "blend",
+                       "depth_test", "depth_write", "depth_compare"});
   Draw draw;
   draw.name = readString(d, "name", place, place);
   draw.shading = readShadingModel(d, place);
@@ -344,16 +472,16 @@ Draw readDraw(const json& d, const std::string& place, const std::filesystem::pa
                                                        : softraster::Vec4{1, 1, 1, 1};
 
   if (d.contains("sphere")) {
-    for (const char* other : {"obj", "positions", "indices", "colours", "colour"}) {
+    for (const char* other : {"obj", "positions", "indices", "colours"}) {
       if (d.contains(other)) {
-        throw SceneError(place, std::string("a draw has either \"sphere\" or \"") + other +
-                                    "\", not both (a sphere is coloured by its normals)");
+        throw SceneError(place, std::string("a draw has either \"sphere\" or \"") + other + "\", not both");
       }
     }
     if (draw.state.topology != softraster::Topology::TriangleList) {
       throw SceneError(placeOf(place, "topology"), "a sphere is a triangle list");
     }
     makeSphere(d["sphere"], placeOf(place, "sphere"), draw);
+    if (d.contains("colour")) draw.mesh.colours.assign(draw.mesh.vertexCount(), colour);
     return draw;
   }
 
@@ -444,7 +572,7 @@ void applyOverride(json& document, const std::string& assignment) {
 
 Scene readScene(json& document, const std::filesystem::path& path, const std::vector<std::string>& overrides) {
   for (const std::string& assignment : overrides) applyOverride(document, assignment);
-  checkKeys(document, "", {"description", "framebuffer", "camera", "draws", "tolerance"});
+  checkKeys(document, "", {"description", "framebuffer", "camera", "time", "light", "draws", "tolerance"});
   Scene scene;
   scene.path = path;
   scene.description = readString(document, "description", "", "");
@@ -468,15 +596,30 @@ Scene readScene(json& document, const std::filesystem::path& path, const std::ve
     if (!(scene.clearDepth >= 0 && scene.clearDepth <= 1)) throw SceneError("/framebuffer/clear_depth", "must be in [0, 1]");
   }
 
-  scene.viewProjection = readCamera(document.contains("camera") ? document["camera"] : json::object(), "/camera",
-                                    static_cast<int>(scene.width), static_cast<int>(scene.height));
+  scene.camera = readCamera(document.contains("camera") ? document["camera"] : json::object(), "/camera",
+                            static_cast<int>(scene.width), static_cast<int>(scene.height));
+  scene.viewProjection = roundedToFloat(scene.camera.projection * scene.camera.view);
+  scene.time = readNumber(document, "time", "", 0);
+  if (!std::isfinite(scene.time)) throw SceneError("/time", "must be finite");
+  if (document.contains("light")) {
+    const json& l = document["light"];
+    checkKeys(l, "/light", {"position", "power", "colour"});
+    scene.light.position = readVec3(l, "position", "/light", scene.light.position);
+    scene.light.power = readVec3(l, "power", "/light", scene.light.power);
+    scene.light.colour = readVec3(l, "colour", "/light", scene.light.colour);
+    for (const auto* v : {&scene.light.position, &scene.light.power, &scene.light.colour}) {
+      for (double c : *v) {
+        if (!std::isfinite(c)) throw SceneError("/light", "every value must be finite");
+      }
+    }
+  }
 
   if (!document.contains("draws") || !document["draws"].is_array() || document["draws"].empty()) {
     throw SceneError("/draws", "expected a non-empty array of draws");
   }
   const json& draws = document["draws"];
   for (std::size_t i = 0; i < draws.size(); ++i) {
-    scene.draws.push_back(readDraw(draws[i], "/draws/" + std::to_string(i), path.parent_path()));
+    scene.draws.push_back(readDraw(draws[i], "/draws/" + std::to_string(i), path.parent_path(), scene.time));
   }
 
   if (document.contains("tolerance")) {
@@ -494,6 +637,25 @@ Scene readScene(json& document, const std::filesystem::path& path, const std::ve
 }
 
 }  // namespace
+
+shaders::DrawParameters drawParameters(const Scene& scene, const Draw& draw) {
+  shaders::DrawParameters p;
+  const glm::dmat4 modelView = scene.camera.view * draw.model;
+  p.modelViewProjection = roundedToFloat(scene.camera.projection * modelView);
+  p.modelToWorld = roundedToFloat(draw.model);
+  p.normalToWorld = normalMatrix(draw.model);
+  p.modelToCamera = roundedToFloat(modelView);
+  p.normalToCamera = normalMatrix(modelView);
+  const glm::dvec4 light(scene.light.position[0], scene.light.position[1], scene.light.position[2], 1.0);
+  p.light.positionInWorld = roundedToFloat(light);
+  p.light.positionInCamera = roundedToFloat(scene.camera.view * light);
+  const auto rgb = [](const std::array<double, 3>& c) { return roundedToFloat(glm::dvec4(c[0], c[1], c[2], 0.0)); };
+  p.light.power = rgb(scene.light.power);
+  p.light.colour = rgb(scene.light.colour);
+  p.material = draw.material;
+  p.pointSize = draw.pointSize;
+  return p;
+}
 
 softraster::Result<Scene> loadScene(const std::filesystem::path& path, const std::vector<std::string>& overrides) {
   using softraster::Status;

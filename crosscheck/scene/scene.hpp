@@ -8,6 +8,7 @@
 // Deliberately no scene graph: a scene is a camera plus a flat list of draws.
 #pragma once
 
+#include "scene/camera.hpp"
 #include "scene/tolerance.hpp"
 
 #include <softraster/framebuffer.hpp>
@@ -18,6 +19,9 @@
 #include <draw_inputs.hpp>
 #include <shading_models.hpp>
 
+#include <glm/mat4x4.hpp>
+
+#include <array>
 #include <cstdint>
 #include <filesystem>
 #include <string>
@@ -31,10 +35,19 @@ struct Draw {
   std::string name;
   const shaders::ShadingModel* shading = nullptr;  // never null in a loaded scene
   softraster::PipelineState state;
-  shaders::Mesh mesh;                   // positions and a colour per vertex
+  shaders::Mesh mesh;                   // positions, a colour per vertex, normals if the model reads them
   bool indexed = true;                  // false: vertices are drawn in order (vkCmdDraw)
   float pointSize = 1.0f;               // the shader's gl_PointSize (a uniform)
   std::vector<std::uint32_t> indices;
+  glm::dmat4 model{1.0};                // object -> world: "transform" at the scene's time
+  shaders::Material material;           // what the lit models read beyond the vertex colours
+};
+
+// The scene's one point light (world space), read by the lit models.
+struct SceneLight {
+  std::array<double, 3> position{0, -0.5, -0.7};
+  std::array<double, 3> power{14, 14, 14};  // the course's P
+  std::array<double, 3> colour{1, 1, 1};    // Phong's light colour
 };
 
 struct Scene {
@@ -45,10 +58,17 @@ struct Scene {
   float clearDepth = 1.0f;
   softraster::DepthFormat depthFormat = softraster::DepthFormat::D32Sfloat;
   std::uint32_t samples = 1;  // 1 or 4 (MSAA: compared after the resolve; depth via sample 0)
-  softraster::Mat4 viewProjection = softraster::Mat4::identity();
+  CameraMatrices camera;      // view and projection, double precision
+  softraster::Mat4 viewProjection = softraster::Mat4::identity();  // projection * view, rounded once
+  double time = 0;            // drives each draw's "spin"
+  SceneLight light;
   std::vector<Draw> draws;
   Tolerance tolerance;
 };
+
+// What the draw's shading model reads besides its mesh: its matrices (each product taken in
+// double and rounded to float once), the light in world and camera space, the material.
+shaders::DrawParameters drawParameters(const Scene& scene, const Draw& draw);
 
 // Loads and validates a scene. `overrides` are "key.path=JSON value" assignments applied to the
 // file's JSON before it is read (e.g. "camera.yaw=90"). The error is one line:
