@@ -1,21 +1,23 @@
 // The table of shading models: one row per model, the one place crosscheck learns which models
 // exist (its scene parser looks names up here; both render adapters draw through a row).
 // A row holds the name scene files use, the SPIR-V pair compiled from NAME.vert / NAME.frag, the
-// vertex layout and push-constant size of the C++ twin, and functions instantiated from the twin
+// vertex layout, uniform size and placement (push constants or a uniform block) of the C++ twin, and functions instantiated from the twin
 // by one template (shading_models.cpp) that turn a model-neutral draw (draw_inputs.hpp) into the
 // twin's vertices and uniforms: as bytes for Vulkan, as the twin's own types for softraster's
 // Context::draw<Shader> / drawIndexed<Shader>.
 //
 // Adding a shading model touches only:
 //   1. shaders/NAME.vert and NAME.frag (GLSL) and NAME.hpp (the C++ twin: softraster's shader
-//      contract, softraster/shader.hpp, plus vertexFrom and uniformsFrom);
+//      contract, softraster/shader.hpp, plus vertexFrom and uniformsFrom, and optionally
+//      kUniformBuffer (uniforms in a uniform block) and kMeshInputs (normals));
 //   2. shaders/CMakeLists.txt: one compile_shader_pair line;
-//   3. shaders/shading_models.cpp: one row in kModels (and #include "NAME.hpp" for a new twin);
+//   3. a row in its family's shaders/models_FAMILY.cpp (a new family: a new models_FAMILY.cpp,
+//      listed in shaders/CMakeLists.txt and in shading_models.cpp);
 //   4. scenes/README.md: the name in the `shading` row.
 // (A model that reads a mesh attribute or a per-draw value no model read before also adds it to
 // draw_inputs.hpp and to what fills it in crosscheck: scene/scene.cpp, render/render.cpp.)
-// Deliberately no virtual classes and no registry: the table is a constant array, a row is data
-// and function pointers, and the per-pixel work stays inside softraster's template over the twin.
+// Deliberately no virtual classes and no registry: the table is a fixed list, a row is data and
+// function pointers, and the per-pixel work stays inside softraster's template over the twin.
 #pragma once
 
 #include "draw_inputs.hpp"
@@ -62,7 +64,9 @@ struct ShadingModel {
   std::span<const std::uint32_t> fragmentSpirv;       // NAME.frag
   std::span<const softraster::VertexAttribute> attributes;  // the twin's kAttributes
   std::uint32_t vertexStride = 0;                     // sizeof(twin::Vertex), bytes
-  std::uint32_t uniformSize = 0;                      // sizeof(twin::Uniforms): the push-constant block, bytes
+  std::uint32_t uniformSize = 0;                      // sizeof(twin::Uniforms), bytes
+  bool uniformBuffer = false;  // the uniforms are a uniform block (set 0, binding 0), not push constants
+  unsigned meshInputs = 0;     // kReadsNormals...: what the mesh must hold beyond positions and colours
   // Vulkan: the mesh as twin::Vertex, vertexStride bytes per vertex; the uniforms as twin::Uniforms.
   std::vector<std::byte> (*vertexBytes)(const Mesh& mesh) = nullptr;
   std::vector<std::byte> (*uniformBytes)(const DrawParameters& draw) = nullptr;

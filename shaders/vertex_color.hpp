@@ -36,7 +36,7 @@ struct VertexColorShader {
   }};
 
   static Vertex vertexFrom(const Mesh& mesh, std::size_t i) { return {mesh.positions[i], mesh.colours[i]}; }
-  static Uniforms uniformsFrom(const DrawParameters& draw) { return {draw.viewProjection, draw.pointSize}; }
+  static Uniforms uniformsFrom(const DrawParameters& draw) { return {draw.modelViewProjection, draw.pointSize}; }
 
   static softraster::Vec4 vertex(const Uniforms& u, const Vertex& in, float* vColour) {
     const softraster::Mat4& m = u.modelViewProjection;

@@ -1,0 +1,189 @@
+// The GLSL built-in functions the shader twins call, computed as lavapipe computes them (Mesa
+// 22.3.6: SPIR-V lowering in compiler/spirv/vtn_glsl450.c and nir_builtin_builder.h, code
+// generation in gallium/auxiliary/gallivm/lp_bld_arit.c; docs/lavapipe-rules.md, "Shader
+// arithmetic"), so a twin gives the GLSL's bits. Each is written over the twin's float type F
+// (float, or softraster::FloatBatch, one value per lane).
+//   dot(a, b)         (a.x*b.x + a.y*b.y) + a.z*b.z, every step rounded
+//   length(v)         sqrt(dot(v, v))
+//   normalize(v)      v / length(v), a real division per component
+//   reflect(i, n)     i - n * (dot(i, n) * 2)
+//   maxConstant(x, c) max(x, c) with c a constant: SSE maxps(x, c) (a NaN x gives c)
+//   pow(x, y)         exp2(log2_safe(x) * y), 0 where x == 0 or x is NaN; gallivm's polynomials
+// The polynomials use fmuladd as gallivm does on a CPU with FMA (every x86-64 CPU this project
+// targets has it); a lavapipe on a CPU without FMA rounds them differently.
+// Deliberately absent: denormal flushing (lavapipe's shaders run with DAZ/FTZ; the lit scenes
+// never produce denormals), and every built-in no twin calls yet.
+#pragma once
+
+#include <softraster/simd.hpp>
+
+#include <bit>
+#include <cmath>
+#include <cstdint>
+#include <limits>
+
+namespace shaders::glsl {
+
+template <class F>
+struct Vec3T {
+  F x{}, y{}, z{};
+};
+
+template <class F>
+Vec3T<F> operator+(const Vec3T<F>& a, const Vec3T<F>& b) {
+  return {a.x + b.x, a.y + b.y, a.z + b.z};
+}
+template <class F>
+Vec3T<F> operator-(const Vec3T<F>& a, const Vec3T<F>& b) {
+  return {a.x - b.x, a.y - b.y, a.z - b.z};
+}
+template <class F>
+Vec3T<F> operator-(const Vec3T<F>& a) {
+  return {-a.x, -a.y, -a.z};
+}
+template <class F>
+Vec3T<F> operator*(const Vec3T<F>& a, const Vec3T<F>& b) {
+  return {a.x * b.x, a.y * b.y, a.z * b.z};
+}
+template <class F>
+Vec3T<F> operator*(const Vec3T<F>& a, const F& s) {
+  return {a.x * s, a.y * s, a.z * s};
+}
+template <class F>
+Vec3T<F> operator/(const Vec3T<F>& a, const F& s) {
+  return {a.x / s, a.y / s, a.z / s};
+}
+
+// ---- Lane-wise application of a float function to a batch ----
+
+namespace detail {
+template <class Function>
+softraster::FloatBatch lanewise(softraster::FloatBatch a, Function f) {
+  alignas(32) float lanes[softraster::kBatchLanes];
+  a.store(lanes);
+  for (float& lane : lanes) lane = f(lane);
+  return softraster::FloatBatch::load(lanes);
+}
+template <class Function>
+softraster::FloatBatch lanewise(softraster::FloatBatch a, softraster::FloatBatch b, Function f) {
+  alignas(32) float x[softraster::kBatchLanes], y[softraster::kBatchLanes];
+  a.store(x);
+  b.store(y);
+  for (int i = 0; i < softraster::kBatchLanes; ++i) x[i] = f(x[i], y[i]);
+  return softraster::FloatBatch::load(x);
+}
+}  // namespace detail
+
+// ---- sqrt: IEEE (llvm.sqrt) ----
+
+inline float sqrt(float x) { return std::sqrt(x); }
+inline softraster::FloatBatch sqrt(softraster::FloatBatch x) {
+  return detail::lanewise(x, [](float v) { return std::sqrt(v); });
+}
+
+// ---- Geometric functions ----
+
+template <class F>
+F dot(const Vec3T<F>& a, const Vec3T<F>& b) {
+  return (a.x * b.x + a.y * b.y) + a.z * b.z;
+}
+
+template <class F>
+F length(const Vec3T<F>& v) {
+  return sqrt(dot(v, v));
+}
+
+template <class F>
+Vec3T<F> normalize(const Vec3T<F>& v) {
+  return v / length(v);
+}
+
+template <class F>
+Vec3T<F> reflect(const Vec3T<F>& i, const Vec3T<F>& n) {
+  return i - n * (dot(i, n) * F(2.0f));
+}
+
+// max(x, c) for a constant c, which NIR knows is a number: SSE maxps with x first, so a NaN x
+// gives c, and max(-0, +0) gives +0.
+template <class F>
+F maxConstant(const F& x, float c) {
+  using softraster::sseMax;  // the float overload; FloatBatch's is found by argument-dependent lookup
+  return sseMax(x, F(c));
+}
+
+// ---- exp2, log2_safe and pow (lp_build_exp2, lp_build_log2_approx, lp_build_pow) ----
+
+namespace detail {
+
+// lp_build_polynomial: x2 = x*x; even and odd coefficients each walked from the highest index
+// down, the first taken as it is, each later one fmuladd(x2, value, coeff); then
+// fmuladd(odd, x, even). Coefficients are rounded to float.
+template <std::size_t N>
+float polynomial(float x, const double (&coefficients)[N]) {
+  const float x2 = x * x;
+  float even = 0, odd = 0;
+  bool haveEven = false, haveOdd = false;
+  for (std::size_t i = N; i-- > 0;) {
+    const auto c = static_cast<float>(coefficients[i]);
+    if (i % 2 == 0) {
+      even = haveEven ? std::fma(x2, even, c) : c;
+      haveEven = true;
+    } else {
+      odd = haveOdd ? std::fma(x2, odd, c) : c;
+      haveOdd = true;
+    }
+  }
+  return haveOdd ? std::fma(odd, x, even) : even;
+}
+
+// lp_build_exp2_polynomial, EXP_POLY_DEGREE 5: 2^x on [0, 1).
+inline constexpr double kExp2Polynomial[] = {1.000000000000000000000, 0.693153073200168932794,
+                                             0.240153617044375388211, 0.0558263180532956664775,
+                                             0.00898934009049466391101, 0.00187757667519147912699};
+// lp_build_log2_polynomial, LOG_POLY_DEGREE 4.
+inline constexpr double kLog2Polynomial[] = {2.88539009343309178325, 0.961791550404184197881,
+                                             0.577440339438736392009, 0.403343858251329912514,
+                                             0.406718052498846252698};
+
+// cvttps2dq: truncation, 0x80000000 for NaN and out-of-range values.
+inline std::int32_t truncateToInt(float x) {
+  if (!(x > -2147483904.0f && x < 2147483648.0f)) return std::numeric_limits<std::int32_t>::min();
+  return static_cast<std::int32_t>(x);
+}
+
+}  // namespace detail
+
+inline float exp2(float x) {
+  x = softraster::sseMin(128.0f, x);         // lp_build_min_ext(128, x): a NaN x passes
+  x = softraster::sseMax(-126.99999f, x);    // lp_build_max_ext(-126.99999, x)
+  const float whole = std::floor(x);         // lp_build_ifloor_fract: floor, fraction, integer
+  const float fraction = x - whole;
+  const std::uint32_t exponent =
+      (static_cast<std::uint32_t>(detail::truncateToInt(whole)) + 127u) << 23;  // integer wrap as in the JIT
+  return std::bit_cast<float>(exponent) * detail::polynomial(fraction, detail::kExp2Polynomial);
+}
+
+inline float log2Safe(float x) {
+  const auto bits = std::bit_cast<std::uint32_t>(x);
+  const auto exponent = static_cast<float>(static_cast<std::int32_t>((bits & 0x7f800000u) >> 23) - 127);
+  const float mantissa = std::bit_cast<float>((bits & 0x007fffffu) | 0x3f800000u);
+  const float y = (mantissa - 1.0f) / (mantissa + 1.0f);
+  const float z = y * y;
+  float result = std::fma(y, detail::polynomial(z, detail::kLog2Polynomial), exponent);
+  if (x >= std::numeric_limits<float>::infinity()) result = std::numeric_limits<float>::infinity();
+  if (x == 0.0f) result = -std::numeric_limits<float>::infinity();
+  if (x < 0.0f) result = std::bit_cast<float>(0x7fc00000u);
+  return result;
+}
+
+inline float pow(float x, float y) {
+  const float result = exp2(log2Safe(x) * y);
+  // lp_build_cmp(EQUAL) is an unordered compare: a NaN x counts as 0 too.
+  return (x == 0.0f || std::isnan(x)) ? 0.0f : result;
+}
+
+inline softraster::FloatBatch pow(softraster::FloatBatch x, softraster::FloatBatch y) {
+  return detail::lanewise(x, y, [](float a, float b) { return pow(a, b); });
+}
+
+}  // namespace shaders::glsl

@@ -1,0 +1,37 @@
+#version 450
+#extension GL_GOOGLE_include_directive : require
+// The lit shading models' vertex stage (lighting.glsl has the light models).
+// MODEL: 0 the course's omni light, 1 Phong, 2 Blinn-Phong. PER_PIXEL 0: lit here, per vertex
+// (Gouraud), the colour interpolated; PER_PIXEL 1: the position, normal and colour in the
+// lighting space go to the fragment stage, which lights each pixel. INTERPOLATION: the varyings'
+// qualifier (empty: perspective-correct, or noperspective). C++ twin: lit.hpp.
+#define BLINN (MODEL == 2)
+#include "lighting.glsl"
+
+layout(location = 0) in vec3 inPosition;
+layout(location = 1) in vec3 inNormal;
+layout(location = 2) in vec4 inColour;
+
+#if PER_PIXEL
+layout(location = 0) INTERPOLATION out vec3 vPosition;
+layout(location = 1) INTERPOLATION out vec3 vNormal;
+layout(location = 2) INTERPOLATION out vec4 vColour;
+#else
+layout(location = 0) INTERPOLATION out vec4 vColour;
+#endif
+
+void main() {
+  gl_Position = toClip(inPosition);
+  gl_PointSize = u.pointSize;
+  vec3 position = toLighting(inPosition);
+  vec3 normal = normalToLighting(inNormal);
+#if PER_PIXEL
+  vPosition = position;
+  vNormal = normal;
+  vColour = inColour;
+#elif MODEL == 0
+  vColour = vec4(courseLight(position, normal, inColour.rgb), inColour.a);
+#else
+  vColour = vec4(phongLight(position, normal, inColour.rgb), inColour.a);
+#endif
+}

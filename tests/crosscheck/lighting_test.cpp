@@ -1,0 +1,115 @@
+// The lit scenes' parameters, cross-checked: the light moved and the time changed with --set
+// style overrides (loadScene's), both renderers compared to the bit, and the override shown to
+// change the image (so agreement is not two renderers ignoring it). Also the lavapipe built-ins
+// the twins call (shaders/lavapipe_builtins.hpp) against libm, to their polynomials' accuracy.
+#include "compare/compare.hpp"
+#include "render/render.hpp"
+#include "scene/scene.hpp"
+
+#include <lavapipe_builtins.hpp>
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <filesystem>
+#include <string>
+#include <vector>
+
+namespace {
+
+const std::filesystem::path kScenes = SCENES_DIR;
+
+struct Rendered {
+  crosscheck::Frame soft, vulkan;
+};
+
+// softraster and lavapipe (validation on, any message fails) agree to the bit on the scene.
+Rendered renderAgreeing(const std::string& name, const std::vector<std::string>& overrides) {
+  Rendered r;
+  auto scene = crosscheck::loadScene(kScenes / (name + ".json"), overrides);
+  EXPECT_TRUE(scene) << scene.error();
+  if (!scene) return r;
+  vkref::DeviceOptions device;
+  device.validation = true;
+  auto vulkan = crosscheck::openVulkan(device);
+  EXPECT_TRUE(vulkan) << vulkan.error();
+  if (!vulkan) return r;
+  auto soft = crosscheck::renderSoftraster(*scene, {});
+  auto reference = crosscheck::renderVulkan(*scene, **vulkan);
+  EXPECT_TRUE(soft && reference);
+  if (!soft || !reference) return r;
+  for (const std::string& m : (*vulkan)->validationMessages()) ADD_FAILURE() << "validation: " << m;
+  const crosscheck::Comparison c = crosscheck::compareFrames(*soft, *reference, *scene);
+  EXPECT_EQ(c.coverageMismatches, 0u);
+  for (int ch = 0; ch < 4; ++ch) EXPECT_EQ(c.colourMaxDelta[ch], 0) << "channel " << ch;
+  r.soft = std::move(*soft);
+  r.vulkan = std::move(*reference);
+  return r;
+}
+
+std::size_t pixelsDiffering(const crosscheck::Frame& a, const crosscheck::Frame& b) {
+  std::size_t n = 0;
+  for (std::size_t i = 0; i + 3 < a.rgba.size() && i + 3 < b.rgba.size(); i += 4) {
+    n += a.rgba[i] != b.rgba[i] || a.rgba[i + 1] != b.rgba[i + 1] || a.rgba[i + 2] != b.rgba[i + 2];
+  }
+  return n;
+}
+
+TEST(Lighting, LightMovedWithSetMatchesAndChangesTheImage) {
+  const Rendered still = renderAgreeing("light_room_pixel", {});
+  const Rendered moved = renderAgreeing("light_room_pixel", {"light.position=[0.6,0.3,-0.2]", "light.power=[6,10,18]"});
+  EXPECT_GT(pixelsDiffering(still.soft, moved.soft), 10000u) << "moving the light should relight most of the room";
+}
+
+TEST(Lighting, TimeTurnsTheModelAndMatches) {
+  const Rendered early = renderAgreeing("blinn_phong_obj", {"time=0"});
+  const Rendered late = renderAgreeing("blinn_phong_obj", {"time=2.25"});
+  EXPECT_GT(pixelsDiffering(early.soft, late.soft), 1000u) << "time should turn the torus";
+}
+
+TEST(Lighting, UnknownLightFieldIsOneErrorLine) {
+  auto scene = crosscheck::loadScene(kScenes / "light_room_pixel.json", {"light.brightness=3"});
+  ASSERT_FALSE(scene);
+  EXPECT_NE(scene.error().find("light_room_pixel.json: /light/brightness: unknown field"), std::string::npos)
+      << scene.error();
+  EXPECT_EQ(scene.error().find('\n'), std::string::npos);
+}
+
+TEST(Lighting, NormalsOnAnUnlitModelAreAnError) {
+  auto scene = crosscheck::loadScene(kScenes / "light_room_pixel.json", {"draws.0.shading=vertex_color",
+                                                                        "draws.0.normals=smooth"});
+  ASSERT_FALSE(scene);
+  EXPECT_NE(scene.error().find("/draws/0/normals: shading 'vertex_color' reads no normals"), std::string::npos)
+      << scene.error();
+}
+
+TEST(Lighting, FileNormalsNeedAMeshWithVn) {
+  auto scene = crosscheck::loadScene(kScenes / "light_room_pixel.json", {"draws.0.normals=file"});
+  ASSERT_FALSE(scene);
+  EXPECT_NE(scene.error().find("/draws/0/normals: 'file': the mesh has no normals of its own"), std::string::npos)
+      << scene.error();
+}
+
+// gallivm's pow is a polynomial approximation: close to libm's (its own accuracy, ~1e-6
+// relative over the range the lit models use), with lavapipe's edge cases.
+TEST(LavapipeBuiltins, PowIsCloseToLibmWithLavapipesEdgeCases) {
+  using shaders::glsl::pow;
+  double worst = 0;
+  for (float x = 0.001f; x <= 1.0f; x += 0.0137f) {
+    for (float y : {1.0f, 2.5f, 8.0f, 32.0f, 60.0f}) {
+      const double exact = std::pow(static_cast<double>(x), static_cast<double>(y));
+      if (exact < 1e-30) continue;
+      worst = std::max(worst, std::fabs(pow(x, y) - exact) / exact);
+    }
+  }
+  EXPECT_LT(worst, 2e-5);
+  EXPECT_EQ(pow(0.0f, 3.0f), 0.0f);
+  EXPECT_EQ(pow(0.0f, 0.0f), 0.0f);                 // not 1: lavapipe selects 0 wherever x == 0
+  EXPECT_EQ(pow(std::nanf(""), 2.0f), 0.0f);        // the unordered compare counts NaN as 0
+  EXPECT_TRUE(std::isnan(pow(-2.0f, 2.0f)));        // log2 of a negative number is NaN
+  EXPECT_EQ(pow(1e-30f, 60.0f), 0.0f);              // exp2 below -127 flushes to 0
+  EXPECT_EQ(shaders::glsl::exp2(200.0f), INFINITY);
+  EXPECT_EQ(shaders::glsl::log2Safe(0.0f), -INFINITY);
+}
+
+}  // namespace
