@@ -20,6 +20,7 @@
 #include <set>
 #include <sstream>
 #include <stdexcept>
+#include <string_view>
 
 namespace crosscheck {
 namespace {
@@ -195,6 +196,77 @@ CameraMatrices readCamera(const json& camera, const std::string& place, int widt
   throw SceneError(placeOf(place, "type"), "'" + type + "' is not one of pinhole, look_at, clip_space");
 }
 
+// A draw's "blend" object (scenes/README.md): source, destination and op for colour and alpha
+// alike, "colour" and "alpha" objects overriding them for one side, constants, write_mask and
+// enable (default true; false keeps the write mask with blending off).
+softraster::BlendState readBlend(const json& b, const std::string& place) {
+  using softraster::BlendFactor;
+  using softraster::BlendOp;
+  checkKeys(b, place, {"enable", "source", "destination", "op", "colour", "alpha", "constants", "write_mask"});
+  const std::vector<std::pair<const char*, BlendFactor>> factors = {
+      {"zero", BlendFactor::Zero},
+      {"one", BlendFactor::One},
+      {"src_color", BlendFactor::SrcColor},
+      {"one_minus_src_color", BlendFactor::OneMinusSrcColor},
+      {"dst_color", BlendFactor::DstColor},
+      {"one_minus_dst_color", BlendFactor::OneMinusDstColor},
+      {"src_alpha", BlendFactor::SrcAlpha},
+      {"one_minus_src_alpha", BlendFactor::OneMinusSrcAlpha},
+      {"dst_alpha", BlendFactor::DstAlpha},
+      {"one_minus_dst_alpha", BlendFactor::OneMinusDstAlpha},
+      {"constant_color", BlendFactor::ConstantColor},
+      {"one_minus_constant_color", BlendFactor::OneMinusConstantColor},
+      {"constant_alpha", BlendFactor::ConstantAlpha},
+      {"one_minus_constant_alpha", BlendFactor::OneMinusConstantAlpha},
+      {"src_alpha_saturate", BlendFactor::SrcAlphaSaturate}};
+  const std::vector<std::pair<const char*, BlendOp>> ops = {{"add", BlendOp::Add},
+                                                            {"subtract", BlendOp::Subtract},
+                                                            {"reverse_subtract", BlendOp::ReverseSubtract},
+                                                            {"min", BlendOp::Min},
+                                                            {"max", BlendOp::Max}};
+  softraster::BlendState state;
+  state.enable = readBool(b, "enable", place, true);
+  const BlendFactor source = readEnum(b, "source", place, BlendFactor::One, factors);
+  const BlendFactor destination = readEnum(b, "destination", place, BlendFactor::Zero, factors);
+  const BlendOp op = readEnum(b, "op", place, BlendOp::Add, ops);
+  const auto side = [&](const char* key, BlendFactor& s, BlendFactor& dst, BlendOp& o) {
+    s = source;
+    dst = destination;
+    o = op;
+    if (!b.contains(key)) return;
+    const std::string sp = placeOf(place, key);
+    checkKeys(b[key], sp, {"source", "destination", "op"});
+    s = readEnum(b[key], "source", sp, source, factors);
+    dst = readEnum(b[key], "destination", sp, destination, factors);
+    o = readEnum(b[key], "op", sp, op, ops);
+  };
+  side("colour", state.srcColorBlendFactor, state.dstColorBlendFactor, state.colorBlendOp);
+  side("alpha", state.srcAlphaBlendFactor, state.dstAlphaBlendFactor, state.alphaBlendOp);
+  if (b.contains("constants")) {
+    const std::string cp = placeOf(place, "constants");
+    const auto v = readNumbers(b["constants"], cp, 4, 4);
+    for (int i = 0; i < 4; ++i) {
+      if (!(v[static_cast<std::size_t>(i)] >= 0 && v[static_cast<std::size_t>(i)] <= 1)) {
+        throw SceneError(placeOf(cp, std::to_string(i)), "must be in [0, 1]");
+      }
+      state.blendConstants[i] = static_cast<float>(v[static_cast<std::size_t>(i)]);
+    }
+  }
+  if (b.contains("write_mask")) {
+    const std::string mask = readString(b, "write_mask", place, "");
+    state.colorWriteMask = 0;
+    for (char c : mask) {
+      const std::size_t bit = std::string_view("rgba").find(c);
+      if (bit == std::string_view::npos || (state.colorWriteMask & (1u << bit))) {
+        throw SceneError(placeOf(place, "write_mask"),
+                         "'" + mask + "' is not a set of the letters r, g, b, a, each at most once (\"\" writes nothing)");
+      }
+      state.colorWriteMask = static_cast<std::uint8_t>(state.colorWriteMask | (1u << bit));
+    }
+  }
+  return state;
+}
+
 void readDrawState(const json& d, const std::string& place, softraster::PipelineState& state) {
   using softraster::CompareOp;
   using softraster::CullMode;
@@ -253,15 +325,7 @@ void readDrawState(const json& d, const std::string& place, softraster::Pipeline
                           {"front_and_back", CullMode::FrontAndBack}});
   rs.frontFace = readEnum(d, "front_face", place, rs.frontFace,
                           {{"counter_clockwise", FrontFace::CounterClockwise}, {"clockwise", FrontFace::Clockwise}});
-  if (d.contains("blend")) {
-    const std::string bp = placeOf(place, "blend");
-    checkKeys(d["blend"], bp, {"source", "destination"});
-    const std::vector<std::pair<const char*, softraster::BlendFactor>> factors = {
-        {"zero", softraster::BlendFactor::Zero}, {"one", softraster::BlendFactor::One}};
-    state.blend.enable = true;
-    state.blend.source = readEnum(d["blend"], "source", bp, softraster::BlendFactor::One, factors);
-    state.blend.destination = readEnum(d["blend"], "destination", bp, softraster::BlendFactor::Zero, factors);
-  }
+  if (d.contains("blend")) state.blend = readBlend(d["blend"], placeOf(place, "blend"));
   auto& ds = state.depth;
   ds.testEnable = readBool(d, "depth_test", place, ds.testEnable);
   ds.writeEnable = readBool(d, "depth_write", place, ds.writeEnable);

@@ -155,3 +155,92 @@ TEST(SceneFile, SphereBadValuesAreOneErrorLineEach) {
   EXPECT_NE(sphereError({"draws.0.topology=line_list"}).find("/draws/0/topology: a sphere is a triangle list"),
             std::string::npos);
 }
+
+// The draw's "blend" object: the short form, the colour and alpha sides, constants, write mask.
+namespace {
+
+const std::filesystem::path kBlendTriangle = kData / "blend_triangle.json";
+
+softraster::BlendState blendWith(const std::vector<std::string>& overrides) {
+  const auto scene = crosscheck::loadScene(kBlendTriangle, overrides);
+  EXPECT_TRUE(scene) << scene.error();
+  return scene ? scene->draws.at(0).state.blend : softraster::BlendState{};
+}
+
+std::string blendError(const std::vector<std::string>& overrides) {
+  const auto scene = crosscheck::loadScene(kBlendTriangle, overrides);
+  EXPECT_FALSE(scene.ok()) << "overrides accepted";
+  if (scene.ok()) return {};
+  const std::string error = scene.error();
+  EXPECT_EQ(error.find('\n'), std::string::npos) << "one line: " << error;
+  EXPECT_NE(error.find(kBlendTriangle.string()), std::string::npos) << "names the file: " << error;
+  return error;
+}
+
+}  // namespace
+
+TEST(SceneFile, BlendShortFormIsTheSameForColourAndAlphaWithAdd) {
+  using softraster::BlendFactor;
+  const softraster::BlendState b = blendWith({});
+  EXPECT_TRUE(b.enable);
+  EXPECT_EQ(b.srcColorBlendFactor, BlendFactor::SrcAlpha);
+  EXPECT_EQ(b.dstColorBlendFactor, BlendFactor::OneMinusSrcAlpha);
+  EXPECT_EQ(b.srcAlphaBlendFactor, BlendFactor::SrcAlpha);
+  EXPECT_EQ(b.dstAlphaBlendFactor, BlendFactor::OneMinusSrcAlpha);
+  EXPECT_EQ(b.colorBlendOp, softraster::BlendOp::Add);
+  EXPECT_EQ(b.alphaBlendOp, softraster::BlendOp::Add);
+  EXPECT_EQ(b.colorWriteMask, softraster::kColourRGBA);
+  for (float k : b.blendConstants) EXPECT_EQ(k, 0.0f);
+  const auto scene = crosscheck::loadScene(kBlendTriangle, {"draws.0.blend={}"});
+  ASSERT_TRUE(scene) << scene.error();
+  const softraster::BlendState empty = scene->draws[0].state.blend;
+  EXPECT_TRUE(empty.enable);
+  EXPECT_EQ(empty.srcColorBlendFactor, BlendFactor::One);
+  EXPECT_EQ(empty.dstAlphaBlendFactor, BlendFactor::Zero);
+}
+
+TEST(SceneFile, BlendSidesConstantsAndWriteMask) {
+  using softraster::BlendFactor;
+  using softraster::BlendOp;
+  const softraster::BlendState b = blendWith(
+      {"draws.0.blend.op=reverse_subtract", "draws.0.blend.colour={\"source\": \"constant_color\", \"op\": \"max\"}",
+       "draws.0.blend.alpha={\"destination\": \"src_alpha_saturate\"}", "draws.0.blend.constants=[0.25, 0.5, 0.75, 1]",
+       "draws.0.blend.write_mask=bga"});
+  EXPECT_EQ(b.srcColorBlendFactor, BlendFactor::ConstantColor);
+  EXPECT_EQ(b.dstColorBlendFactor, BlendFactor::OneMinusSrcAlpha);  // from the short form
+  EXPECT_EQ(b.colorBlendOp, BlendOp::Max);
+  EXPECT_EQ(b.srcAlphaBlendFactor, BlendFactor::SrcAlpha);
+  EXPECT_EQ(b.dstAlphaBlendFactor, BlendFactor::SrcAlphaSaturate);
+  EXPECT_EQ(b.alphaBlendOp, BlendOp::ReverseSubtract);
+  EXPECT_EQ(b.blendConstants[0], 0.25f);
+  EXPECT_EQ(b.blendConstants[3], 1.0f);
+  EXPECT_EQ(b.colorWriteMask, softraster::kColourG | softraster::kColourB | softraster::kColourA);
+  const softraster::BlendState off = blendWith({"draws.0.blend={\"enable\": false, \"write_mask\": \"\"}"});
+  EXPECT_FALSE(off.enable);
+  EXPECT_EQ(off.colorWriteMask, 0);
+}
+
+TEST(SceneFile, BlendBadValuesAreOneErrorLineEach) {
+  EXPECT_NE(blendError({"draws.0.blend.source=src1_color"})
+                .find("/draws/0/blend/source: 'src1_color' is not one of zero, one, src_color"),
+            std::string::npos);
+  EXPECT_NE(blendError({"draws.0.blend.colour={\"destination\": \"dst_colour\"}"})
+                .find("/draws/0/blend/colour/destination: 'dst_colour' is not one of"),
+            std::string::npos);
+  EXPECT_NE(blendError({"draws.0.blend.alpha={\"op\": \"multiply\"}"})
+                .find("/draws/0/blend/alpha/op: 'multiply' is not one of add, subtract, reverse_subtract, min, max"),
+            std::string::npos);
+  EXPECT_NE(blendError({"draws.0.blend.alpha={\"factor\": \"one\"}"}).find("/draws/0/blend/alpha/factor: unknown field"),
+            std::string::npos);
+  EXPECT_NE(blendError({"draws.0.blend.equation=add"}).find("/draws/0/blend/equation: unknown field"), std::string::npos);
+  EXPECT_NE(blendError({"draws.0.blend.colour=add"}).find("/draws/0/blend/colour: expected an object"), std::string::npos);
+  EXPECT_NE(blendError({"draws.0.blend.constants=[1, 0, 0]"}).find("/draws/0/blend/constants: expected an array of 4"),
+            std::string::npos);
+  EXPECT_NE(blendError({"draws.0.blend.constants=[0, 1.5, 0, 0]"}).find("/draws/0/blend/constants/1: must be in [0, 1]"),
+            std::string::npos);
+  EXPECT_NE(blendError({"draws.0.blend.write_mask=rgbx"}).find("/draws/0/blend/write_mask: 'rgbx' is not a set of"),
+            std::string::npos);
+  EXPECT_NE(blendError({"draws.0.blend.write_mask=rr"}).find("/draws/0/blend/write_mask: 'rr'"), std::string::npos);
+  EXPECT_NE(blendError({"draws.0.blend.enable=1"}).find("/draws/0/blend/enable: expected true or false"),
+            std::string::npos);
+}

@@ -66,7 +66,8 @@ vkref::FrameRequest overlappingTriangles(const vkref::ShaderProgram& program, st
   r.draws.push_back(triangle(program, 0.2f, 0.1f, 0.6f, 0.3f, {0, 1, 0, 1}));
   for (int i = 0; i < 3; ++i) {
     vkref::DrawCall d = triangle(program, 0.1f * i, -0.3f, 0.5f, 0.1f, {0.125f, 0.125f, 0.125f, 0});
-    d.state.blend = {true, softraster::BlendFactor::One, softraster::BlendFactor::One};
+    d.state.blend.enable = true;
+    d.state.blend.dstColorBlendFactor = d.state.blend.dstAlphaBlendFactor = softraster::BlendFactor::One;
     d.state.depth.testEnable = false;
     r.draws.push_back(std::move(d));
   }

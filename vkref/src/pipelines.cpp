@@ -26,7 +26,11 @@ static_assert(static_cast<int>(softraster::CompareOp::Always) == VK_COMPARE_OP_A
               "softraster::CompareOp lists Vulkan's compare ops in Vulkan's order");
 // A tripwire: a field added to PipelineState must also join PipelineCache::Key (and compile()),
 // or draws differing only in it would share a pipeline.
-static_assert(sizeof(softraster::PipelineState) == 80, "PipelineState changed: update PipelineCache::Key");
+static_assert(static_cast<int>(softraster::BlendFactor::SrcAlphaSaturate) == VK_BLEND_FACTOR_SRC_ALPHA_SATURATE &&
+                  static_cast<int>(softraster::BlendOp::Max) == VK_BLEND_OP_MAX &&
+                  softraster::kColourA == VK_COLOR_COMPONENT_A_BIT,
+              "softraster's blend enums are Vulkan's values");
+static_assert(sizeof(softraster::PipelineState) == 100, "PipelineState changed: update PipelineCache::Key");
 
 // The viewport a draw uses: a zero width or height means the whole framebuffer.
 VkViewport viewportFor(const softraster::Viewport& v, std::uint32_t width, std::uint32_t height) {
@@ -243,9 +247,16 @@ softraster::Result<VkPipeline> PipelineCache::get(const DrawCall& d, const Targe
   key.depthTest = s.depth.testEnable;
   key.depthWrite = s.depth.writeEnable;
   key.depthCompare = byte(s.depth.compareOp);
-  key.blend = s.blend.enable;
-  key.blendSource = byte(s.blend.source);
-  key.blendDestination = byte(s.blend.destination);
+  const softraster::BlendState& b = s.blend;
+  key.blend = b.enable;
+  key.srcColorFactor = byte(b.srcColorBlendFactor);
+  key.dstColorFactor = byte(b.dstColorBlendFactor);
+  key.colorOp = byte(b.colorBlendOp);
+  key.srcAlphaFactor = byte(b.srcAlphaBlendFactor);
+  key.dstAlphaFactor = byte(b.dstAlphaBlendFactor);
+  key.alphaOp = byte(b.alphaBlendOp);
+  key.writeMask = b.colorWriteMask;
+  for (int i = 0; i < 4; ++i) key.blendConstants[static_cast<std::size_t>(i)] = bits(b.blendConstants[i]);
 
   if (const auto found = pipelines_.find(key); found != pipelines_.end()) return found->second;
   softraster::Result<VkPipeline> pipeline = compile(programs_[key.program], s, target);
@@ -323,23 +334,23 @@ softraster::Result<VkPipeline> PipelineCache::compile(const Program& p, const so
         .depthTestEnable = state.depth.testEnable ? VK_TRUE : VK_FALSE,
         .depthWriteEnable = state.depth.writeEnable ? VK_TRUE : VK_FALSE,
         .depthCompareOp = static_cast<VkCompareOp>(state.depth.compareOp)};
+    // softraster's blend enums are VkBlendFactor / VkBlendOp values, its mask VkColorComponentFlags.
     const softraster::BlendState& b = state.blend;
-    const auto factor = [](softraster::BlendFactor f) {
-      return f == softraster::BlendFactor::One ? VK_BLEND_FACTOR_ONE : VK_BLEND_FACTOR_ZERO;
-    };
+    const auto factor = [](softraster::BlendFactor f) { return static_cast<VkBlendFactor>(f); };
+    const auto op = [](softraster::BlendOp o) { return static_cast<VkBlendOp>(o); };
     const VkPipelineColorBlendAttachmentState blendAttachment{
         .blendEnable = b.enable ? VK_TRUE : VK_FALSE,
-        .srcColorBlendFactor = factor(b.source),
-        .dstColorBlendFactor = factor(b.destination),
-        .colorBlendOp = VK_BLEND_OP_ADD,
-        .srcAlphaBlendFactor = factor(b.source),
-        .dstAlphaBlendFactor = factor(b.destination),
-        .alphaBlendOp = VK_BLEND_OP_ADD,
-        .colorWriteMask = VK_COLOR_COMPONENT_R_BIT | VK_COLOR_COMPONENT_G_BIT | VK_COLOR_COMPONENT_B_BIT |
-                          VK_COLOR_COMPONENT_A_BIT};
-    const VkPipelineColorBlendStateCreateInfo blend{.sType = VK_STRUCTURE_TYPE_PIPELINE_COLOR_BLEND_STATE_CREATE_INFO,
-                                                    .attachmentCount = 1,
-                                                    .pAttachments = &blendAttachment};
+        .srcColorBlendFactor = factor(b.srcColorBlendFactor),
+        .dstColorBlendFactor = factor(b.dstColorBlendFactor),
+        .colorBlendOp = op(b.colorBlendOp),
+        .srcAlphaBlendFactor = factor(b.srcAlphaBlendFactor),
+        .dstAlphaBlendFactor = factor(b.dstAlphaBlendFactor),
+        .alphaBlendOp = op(b.alphaBlendOp),
+        .colorWriteMask = static_cast<VkColorComponentFlags>(b.colorWriteMask)};
+    VkPipelineColorBlendStateCreateInfo blend{.sType = VK_STRUCTURE_TYPE_PIPELINE_COLOR_BLEND_STATE_CREATE_INFO,
+                                              .attachmentCount = 1,
+                                              .pAttachments = &blendAttachment};
+    for (int i = 0; i < 4; ++i) blend.blendConstants[i] = b.blendConstants[i];
     const VkPipelineRenderingCreateInfo rendering{.sType = VK_STRUCTURE_TYPE_PIPELINE_RENDERING_CREATE_INFO,
                                                   .colorAttachmentCount = 1,
                                                   .pColorAttachmentFormats = &kColourFormat,

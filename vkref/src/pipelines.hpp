@@ -101,7 +101,9 @@ class PipelineCache {
     bool depthTest = false, depthWrite = false;
     std::uint8_t depthCompare = 0;
     bool blend = false;
-    std::uint8_t blendSource = 0, blendDestination = 0;
+    std::uint8_t srcColorFactor = 0, dstColorFactor = 0, colorOp = 0, srcAlphaFactor = 0, dstAlphaFactor = 0,
+                 alphaOp = 0, writeMask = 0;
+    std::array<std::uint32_t, 4> blendConstants{};  // by their bits
     auto operator<=>(const Key&) const = default;
   };
 

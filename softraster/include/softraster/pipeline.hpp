@@ -6,12 +6,13 @@
 // path (detail/fast/) where options.hpp's Method::Exact allows it, else the scalar one.
 // Coverage: polygon modes fill, line and point (lavapipe's draw-pipeline path: in point mode x
 // and y are clipped at 2w, measured); 4x MSAA for filled triangles (Framebuffer::resolve()
-// resolves as lavapipe does); depth bias for filled triangles; the course's 1/z depth buffer.
+// resolves as lavapipe does); depth bias for filled triangles; the course's 1/z depth buffer;
+// blending with every core factor and op, blend constants and the colour write mask.
 // A Context holds no global state and reports errors through Status; it never prints. It owns
 // its threads (ContextOptions::threads); draws from several threads on one Context are safe and
 // take turns where they use the threads; one Context per thread avoids that wait.
-// Deliberately absent: MSAA lines, points and polygon modes, depth bias in polygon modes, blend
-// factors beyond ZERO/ONE, alternative rasterization methods (each a later issue).
+// Deliberately absent: MSAA lines, points and polygon modes, depth bias in polygon modes,
+// dual-source blending, alternative rasterization methods (each a later issue).
 #pragma once
 
 #include <softraster/detail/exact/draw.hpp>
@@ -82,6 +83,12 @@ class Context {
       return Status::error("softraster draws only filled triangles with 4x MSAA so far");
     }
     if (!(rs.lineWidth >= 1.0f)) return Status::error("line width must be at least 1");
+    const BlendState& b = state.blend;
+    for (BlendFactor f : {b.srcColorBlendFactor, b.dstColorBlendFactor, b.srcAlphaBlendFactor, b.dstAlphaBlendFactor}) {
+      if (f > BlendFactor::SrcAlphaSaturate) return Status::error("unknown blend factor (dual-source factors are not supported)");
+    }
+    if (b.colorBlendOp > BlendOp::Max || b.alphaBlendOp > BlendOp::Max) return Status::error("unknown blend op");
+    if (b.colorWriteMask > kColourRGBA) return Status::error("colour write mask has bits other than R, G, B and A");
     if (rs.polygonMode != PolygonMode::Fill && rs.depthBias.enable) {
       return Status::error("depth bias with polygon mode line or point is not supported by softraster yet");
     }

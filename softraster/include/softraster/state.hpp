@@ -3,7 +3,8 @@
 // VkPipeline from the same value softraster draws with. A field here that one renderer cannot
 // honour is an error in that renderer, never a silent default.
 // The sample count is the framebuffer's (framebuffer.hpp), not state here.
-// Deliberately absent until a scene needs it: blend factors other than ZERO and ONE, stencil,
+// Deliberately absent until a scene needs it: dual-source blending (the SRC1 blend factors, which
+// need a second fragment output), logic ops, more than one colour attachment, stencil,
 // multisample state (sample shading, sample mask, alpha to coverage), smooth and stippled lines.
 #pragma once
 
@@ -59,14 +60,46 @@ struct DepthState {
   CompareOp compareOp = CompareOp::Less;
 };
 
-// Colour blending with op ADD; the same factors for colour and alpha. With ZERO and ONE the UNORM8
-// result is exact in both renderers: a saturating 8-bit add (additive blending counts fragments).
-enum class BlendFactor : std::uint8_t { Zero, One };
+// VkBlendFactor 0..14, in Vulkan's order (the SRC1 factors, 15..18, are absent: no dual-source
+// blending).
+enum class BlendFactor : std::uint8_t {
+  Zero,
+  One,
+  SrcColor,
+  OneMinusSrcColor,
+  DstColor,
+  OneMinusDstColor,
+  SrcAlpha,
+  OneMinusSrcAlpha,
+  DstAlpha,
+  OneMinusDstAlpha,
+  ConstantColor,
+  OneMinusConstantColor,
+  ConstantAlpha,
+  OneMinusConstantAlpha,
+  SrcAlphaSaturate,
+};
 
+// VkBlendOp's core set, 0..4 in Vulkan's order (MIN and MAX ignore the factors).
+enum class BlendOp : std::uint8_t { Add, Subtract, ReverseSubtract, Min, Max };
+
+// VkColorComponentFlagBits.
+enum ColourComponent : std::uint8_t { kColourR = 1, kColourG = 2, kColourB = 4, kColourA = 8, kColourRGBA = 15 };
+
+// VkPipelineColorBlendAttachmentState of the one colour attachment, plus
+// VkPipelineColorBlendStateCreateInfo::blendConstants (static pipeline state). The default is
+// blending off with every component written. The write mask applies with blending off too.
+// On the R8G8B8A8_UNORM target both renderers blend in 8-bit integers (fragment/colour.hpp).
 struct BlendState {
   bool enable = false;
-  BlendFactor source = BlendFactor::One;
-  BlendFactor destination = BlendFactor::Zero;
+  BlendFactor srcColorBlendFactor = BlendFactor::One;
+  BlendFactor dstColorBlendFactor = BlendFactor::Zero;
+  BlendOp colorBlendOp = BlendOp::Add;
+  BlendFactor srcAlphaBlendFactor = BlendFactor::One;
+  BlendFactor dstAlphaBlendFactor = BlendFactor::Zero;
+  BlendOp alphaBlendOp = BlendOp::Add;
+  std::uint8_t colorWriteMask = kColourRGBA;  // ColourComponent bits
+  float blendConstants[4] = {0, 0, 0, 0};
 };
 
 struct PipelineState {

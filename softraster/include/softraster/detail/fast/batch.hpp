@@ -22,6 +22,7 @@
 
 #include <softraster/detail/exact/interpolation.hpp>
 #include <softraster/detail/exact/triangle_setup.hpp>
+#include <softraster/detail/fragment/colour.hpp>
 #include <softraster/detail/fragment/depth.hpp>
 #include <softraster/formats.hpp>
 #include <softraster/simd.hpp>
@@ -176,18 +177,110 @@ inline Mask depthTestPasses(CompareOp op, Words incoming, Words stored) {
          (unorm8FromFloat(c.z.native()) << 16) | (unorm8FromFloat(c.w.native()) << 24);
 }
 
-// blendColour per lane on packed RGBA8: each side the value or zero, the sum saturating.
-[[SOFTRASTER_FAST_TARGET]] inline Words blendColour(Words source, Words destination, const BlendState& blend) {
-  if (!blend.enable) return source;
-  const Words byte = broadcastWord(0xffu);
-  Words out{};
-  for (int k = 0; k < 4; ++k) {
-    const Words s = blend.source == BlendFactor::One ? (source >> (8 * k)) & byte : Words{};
-    const Words d = blend.destination == BlendFactor::One ? (destination >> (8 * k)) & byte : Words{};
-    const Words sum = s + d;
-    out |= (sum > byte ? byte : sum) << (8 * k);
+// blendColour per lane on packed RGBA8 (fragment/colour.hpp's arithmetic, 32 bytes at a time):
+// factors as bytes, the products in 16-bit lanes, saturating 8-bit adds and subtractions, byte
+// min and max, then the write mask.
+[[SOFTRASTER_FAST_TARGET]] inline __m256i bytesOf(Words w) { return reinterpret_cast<__m256i>(w); }
+
+// Each pixel's alpha byte in all four of its bytes.
+[[SOFTRASTER_FAST_TARGET]] inline __m256i alphaInEveryByte(__m256i v) {
+  const __m256i alpha = _mm256_setr_epi8(3, 3, 3, 3, 7, 7, 7, 7, 11, 11, 11, 11, 15, 15, 15, 15,  //
+                                         3, 3, 3, 3, 7, 7, 7, 7, 11, 11, 11, 11, 15, 15, 15, 15);
+  return _mm256_shuffle_epi8(v, alpha);
+}
+
+// The inputs every factor is made of, per pixel: source, destination, their alphas, the constants.
+struct BlendInputs {
+  __m256i s, d, sa, da, k, ka;
+};
+
+// 255 - v in every byte.
+[[SOFTRASTER_FAST_TARGET]] inline __m256i inverse(__m256i v) { return _mm256_xor_si256(v, _mm256_set1_epi8(-1)); }
+
+// blendFactor8 on bytes: the factor for the colour channels (alpha = false) or for alpha.
+[[SOFTRASTER_FAST_TARGET]] inline __m256i factorBytes(BlendFactor f, bool alpha, const BlendInputs& in) {
+  const __m256i ones = _mm256_set1_epi8(-1);
+  switch (f) {
+    case BlendFactor::Zero: return _mm256_setzero_si256();
+    case BlendFactor::One: return ones;
+    case BlendFactor::SrcColor: return in.s;
+    case BlendFactor::OneMinusSrcColor: return inverse(in.s);
+    case BlendFactor::DstColor: return in.d;
+    case BlendFactor::OneMinusDstColor: return inverse(in.d);
+    case BlendFactor::SrcAlpha: return in.sa;
+    case BlendFactor::OneMinusSrcAlpha: return inverse(in.sa);
+    case BlendFactor::DstAlpha: return in.da;
+    case BlendFactor::OneMinusDstAlpha: return inverse(in.da);
+    case BlendFactor::ConstantColor: return in.k;
+    case BlendFactor::OneMinusConstantColor: return inverse(in.k);
+    case BlendFactor::ConstantAlpha: return in.ka;
+    case BlendFactor::OneMinusConstantAlpha: return inverse(in.ka);
+    case BlendFactor::SrcAlphaSaturate: return alpha ? ones : _mm256_min_epu8(in.sa, inverse(in.da));
   }
-  return out;
+  return _mm256_setzero_si256();
+}
+
+// mulUnorm8 (fragment/colour.hpp) on 16-bit lanes holding bytes, and on bytes: both halves widened to 16 bits, (t + (t >> 8) + 128) >> 8, packed back
+// (unpack and pack work within 128-bit lanes alike, so the bytes return to their places).
+[[SOFTRASTER_FAST_TARGET]] inline __m256i mulUnorm16(__m256i a, __m256i b) {
+  const __m256i t = _mm256_mullo_epi16(a, b);
+  return _mm256_srli_epi16(_mm256_add_epi16(_mm256_add_epi16(t, _mm256_srli_epi16(t, 8)), _mm256_set1_epi16(128)), 8);
+}
+
+[[SOFTRASTER_FAST_TARGET]] inline __m256i mulUnorm8(__m256i x, __m256i f) {
+  const __m256i zero = _mm256_setzero_si256();
+  const __m256i lo = mulUnorm16(_mm256_unpacklo_epi8(x, zero), _mm256_unpacklo_epi8(f, zero));
+  const __m256i hi = mulUnorm16(_mm256_unpackhi_epi8(x, zero), _mm256_unpackhi_epi8(f, zero));
+  return _mm256_packus_epi16(lo, hi);
+}
+
+// A blend term: the product, with the ZERO and ONE factors (both channel groups alike) skipped.
+[[SOFTRASTER_FAST_TARGET]] inline __m256i blendTerm(__m256i x, __m256i factor, BlendFactor colour, BlendFactor alpha) {
+  if (colour == BlendFactor::One && alpha == BlendFactor::One) return x;
+  if (colour == BlendFactor::Zero && alpha == BlendFactor::Zero) return _mm256_setzero_si256();
+  return mulUnorm8(x, factor);
+}
+
+[[SOFTRASTER_FAST_TARGET]] inline __m256i blendOpBytes(BlendOp op, __m256i s, __m256i d, __m256i st, __m256i dt) {
+  switch (op) {
+    case BlendOp::Add: return _mm256_adds_epu8(st, dt);
+    case BlendOp::Subtract: return _mm256_subs_epu8(st, dt);
+    case BlendOp::ReverseSubtract: return _mm256_subs_epu8(dt, st);
+    case BlendOp::Min: return _mm256_min_epu8(s, d);
+    case BlendOp::Max: return _mm256_max_epu8(s, d);
+  }
+  return s;
+}
+
+[[SOFTRASTER_FAST_TARGET]] inline Words blendColour(Words source, Words destination, const ColourBlend& blend) {
+  if (!blend.readsDestination) return source;
+  const BlendState& b = blend.state;
+  const __m256i s = bytesOf(source), d = bytesOf(destination);
+  const __m256i alphaBytes = _mm256_set1_epi32(static_cast<int>(0xff000000u));
+  __m256i out = s;
+  if (b.enable) {
+    const auto k = blend.constants;
+    const std::uint32_t packed = k[0] | (k[1] << 8) | (k[2] << 16) | (std::uint32_t{k[3]} << 24);
+    const BlendInputs in{s, d, alphaInEveryByte(s), alphaInEveryByte(d), _mm256_set1_epi32(static_cast<int>(packed)),
+                         _mm256_set1_epi8(static_cast<char>(k[3]))};
+    const __m256i sf = _mm256_blendv_epi8(factorBytes(b.srcColorBlendFactor, false, in),
+                                          factorBytes(b.srcAlphaBlendFactor, true, in), alphaBytes);
+    const __m256i df = _mm256_blendv_epi8(factorBytes(b.dstColorBlendFactor, false, in),
+                                          factorBytes(b.dstAlphaBlendFactor, true, in), alphaBytes);
+    const __m256i st = blendTerm(s, sf, b.srcColorBlendFactor, b.srcAlphaBlendFactor);
+    const __m256i dt = blendTerm(d, df, b.dstColorBlendFactor, b.dstAlphaBlendFactor);
+    out = blendOpBytes(b.colorBlendOp, s, d, st, dt);
+    if (b.alphaBlendOp != b.colorBlendOp) {
+      out = _mm256_blendv_epi8(out, blendOpBytes(b.alphaBlendOp, s, d, st, dt), alphaBytes);
+    }
+  }
+  if ((b.colorWriteMask & kColourRGBA) != kColourRGBA) {
+    std::uint32_t keep = 0;
+    for (int i = 0; i < 4; ++i) keep |= (b.colorWriteMask & (1u << i)) ? 0xffu << (8 * i) : 0u;
+    const __m256i m = _mm256_set1_epi32(static_cast<int>(keep));
+    out = _mm256_or_si256(_mm256_and_si256(out, m), _mm256_andnot_si256(m, d));
+  }
+  return reinterpret_cast<Words>(out);
 }
 
 // One block's 32-bit values (colour as packed RGBA8, or depth as stored) at `first` (lane 0) in

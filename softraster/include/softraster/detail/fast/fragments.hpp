@@ -5,7 +5,8 @@
 //     block's coverage from the 64-bit edge functions at its eight pixel centres;
 //   - depth per lane at the integer pixel coordinates (no incremental stepping: the plane is
 //     evaluated per pixel exactly as the scalar path does), the depth test before shading;
-//   - varyings with the real 1/w division, the shader on the batch, UNORM8 conversion, blending,
+//   - varyings with the real 1/w division, the shader on the batch, UNORM8 conversion, blending
+//     (every factor and op, in 8-bit integer SIMD on the packed pixels) and the write mask,
 //     masked stores of the lanes that are covered and pass the depth test.
 // Pixels of one triangle are independent, and triangles are drawn one after another, so the
 // result is the scalar path's, bit for bit (tests/softraster/fast_path_test.cpp checks it).
@@ -133,7 +134,7 @@ class FastFragmentStage {
       }
     }
     Words colour = packColour(Shader::template fragment<FloatBatch>(uniforms_, varyings.data()));
-    if (target_.blend.enable) colour = blendColour(colour, loadBlock(colour_ + first, target_.width, covered), target_.blend);
+    if (target_.blend.readsDestination) colour = blendColour(colour, loadBlock(colour_ + first, target_.width, covered), target_.blend);
     storeBlock(colour_ + first, target_.width, covered, colour);
     if (target_.depth.testEnable && target_.depth.writeEnable) storeBlock(target_.depthStorage + first, target_.width, covered, stored);
   }

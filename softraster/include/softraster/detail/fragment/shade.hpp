@@ -32,7 +32,7 @@ enum class InstructionSet : std::uint8_t { Baseline, Fma, Avx2Fma };
 // once from the state and the framebuffer, shared by the scalar and the fast stage.
 struct FragmentTarget {
   DepthState depth;
-  BlendState blend;
+  ColourBlend blend;  // the draw's BlendState, prepared for UNORM8 (fragment/colour.hpp)
   PixelRect region;
   DepthRange depthRange;
   bool inverseZ;
@@ -44,7 +44,7 @@ struct FragmentTarget {
 inline FragmentTarget fragmentTarget(const PipelineState& state, Framebuffer& framebuffer, const Viewport& viewport,
                                      const PixelRect& region, bool inverseZ) {
   return {state.depth,
-          state.blend,
+          colourBlend(state.blend),
           region,
           fragmentDepthRange(viewport, state.rasterization.depthClampEnable),
           inverseZ,
