@@ -1,7 +1,7 @@
 #!/usr/bin/env python3
 """Writes the bench scenes (bench/*.json, for `crosscheck bench`) and their small copies in this
-folder (bench_*.json), which the conformance suite cross-checks in every test run. All use the
-vertex_color shading model. The spheres are procedural ("sphere" draws), so no large mesh file is
+folder (bench_*.json), which the conformance suite cross-checks in every test run. All but the
+lit ones (the per-pixel lit room, the Blinn-Phong quad) use the vertex_color shading model. The spheres are procedural ("sphere" draws), so no large mesh file is
 committed; the small triangles are inline and seeded, so every run writes the same files.
 Run from scenes/:  python3 tools/make_bench_scenes.py"""
 import json
@@ -130,6 +130,42 @@ write("bench/wireframe_sphere_100k.json", sphere_scene(HD_W, HD_H, 250, 201,
       "Bench: the 100,000-triangle sphere in polygon mode LINE at 1920x1080: lavapipe's draw-pipeline path, "
       "three lines per front-facing triangle.", polygon_mode="line"))
 
+
+
+def lit_room(width, height, description):
+    """The per-pixel lit room (light_room_pixel.json) at another size."""
+    with open("light_room_pixel.json") as f:
+        scene = json.load(f)
+    scene["description"] = description
+    scene["framebuffer"]["width"], scene["framebuffer"]["height"] = width, height
+    scene["camera"]["focal_length"] = ROOM["camera"]["focal_length"] * height / ROOM["framebuffer"]["height"]
+    for d in scene["draws"]:
+        d["obj"] = "../" + d["obj"]
+    return scene
+
+
+def phong_quad(width, height, description):
+    """A full-screen plane facing the camera, lit per pixel with Blinn-Phong."""
+    hw, hh = 2.2, 1.25  # beyond the view at 60 degrees and 16:9 from z = -2
+    return {"description": description,
+            "framebuffer": {"width": width, "height": height, "clear_colour": [0, 0, 0, 1]},
+            "camera": {"type": "look_at", "eye": [0, 0, -2], "target": [0, 0, 0], "up": [0, -1, 0], "fov_y": 60},
+            "light": {"position": [0.4, -0.3, -0.6], "colour": [1, 0.95, 0.9]},
+            "draws": [{"name": "quad", "positions": [[-hw, -hh, 0], [hw, -hh, 0], [hw, hh, 0], [-hw, hh, 0]],
+                       "colours": [[0.8, 0.3, 0.2], [0.3, 0.8, 0.2], [0.2, 0.3, 0.8], [0.7, 0.7, 0.7]],
+                       # wound so the flat normal (b - a) x (c - a) faces the camera (-z)
+                       "indices": [0, 3, 2, 0, 2, 1], "cull": "none", "shading": "blinn_phong_pixel",
+                       "normals": "flat",
+                       "material": {"ambient": [0.1, 0.1, 0.1], "specular": [0.6, 0.6, 0.6], "shininess": 32}}],
+            "tolerance": {"colour": 0}}
+
+
+write("bench/light_room_1080p.json", lit_room(HD_W, HD_H, "Bench: scenes/light_room_pixel.json at 1920x1080: the "
+      "course's light model evaluated per pixel over the whole frame (two normalizes and a division per pixel)."))
+write("bench/phong_quad_1080p.json", phong_quad(HD_W, HD_H,
+      "Bench: a full-screen quad lit per pixel with Blinn-Phong at 1920x1080: the cost of a real fragment shader "
+      "(three normalizes, a pow) on every pixel. A warm highlight right of centre on a colour-graded plane."))
+
 # Small copies for the conformance suite: the same cases at sizes that cross-check in a moment.
 write("bench_quad_stack.json", quad_stack(320, 240, False,
       "Small copy of bench/quad_stack_back_to_front.json: 10 full-screen quads in clip space drawn back to front "
@@ -146,3 +182,6 @@ write("bench_small_triangles.json", small_triangles(320, 240, 1000, 7,
 write("bench_wireframe_sphere.json", sphere_scene(320, 240, 48, 25,
       "Small copy of bench/wireframe_sphere_100k.json: a procedural sphere of 2304 triangles in polygon mode "
       "LINE, back faces culled: many short lines sharing endpoints.", polygon_mode="line"))
+write("bench_phong_quad.json", phong_quad(320, 180,
+      "Small copy of bench/phong_quad_1080p.json: a full-screen quad lit per pixel with Blinn-Phong; a highlight right "
+      "of centre on a colour-graded plane. Tests the per-pixel Blinn-Phong model over every pixel."))

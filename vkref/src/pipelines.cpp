@@ -24,12 +24,12 @@ constexpr VkFormat kAttributeFormats[] = {VK_FORMAT_R32_SFLOAT, VK_FORMAT_R32G32
                                           VK_FORMAT_R32G32B32A32_SFLOAT};
 static_assert(static_cast<int>(softraster::CompareOp::Always) == VK_COMPARE_OP_ALWAYS,
               "softraster::CompareOp lists Vulkan's compare ops in Vulkan's order");
-// A tripwire: a field added to PipelineState must also join PipelineCache::Key (and compile()),
-// or draws differing only in it would share a pipeline.
 static_assert(static_cast<int>(softraster::BlendFactor::SrcAlphaSaturate) == VK_BLEND_FACTOR_SRC_ALPHA_SATURATE &&
                   static_cast<int>(softraster::BlendOp::Max) == VK_BLEND_OP_MAX &&
-                  softraster::kColourA == VK_COLOR_COMPONENT_A_BIT,
+                  static_cast<int>(softraster::kColourA) == static_cast<int>(VK_COLOR_COMPONENT_A_BIT),
               "softraster's blend enums are Vulkan's values");
+// A tripwire: a field added to PipelineState must also join PipelineCache::Key (and compile()),
+// or draws differing only in it would share a pipeline.
 static_assert(sizeof(softraster::PipelineState) == 100, "PipelineState changed: update PipelineCache::Key");
 
 // The viewport a draw uses: a zero width or height means the whole framebuffer.
