@@ -161,6 +161,28 @@ inline Mask depthTestPasses(CompareOp op, Words incoming, Words stored) {
   }
 }
 
+// The same with the compare op known at compile time (the block loop is instantiated per op).
+template <CompareOp Op, class V>
+inline Mask compareLanes(V incoming, V stored) {
+  if constexpr (Op == CompareOp::Never) return Mask{};
+  if constexpr (Op == CompareOp::Less) return reinterpret_cast<Mask>(incoming < stored);
+  if constexpr (Op == CompareOp::Equal) return reinterpret_cast<Mask>(incoming == stored);
+  if constexpr (Op == CompareOp::LessOrEqual) return reinterpret_cast<Mask>(incoming <= stored);
+  if constexpr (Op == CompareOp::Greater) return reinterpret_cast<Mask>(incoming > stored);
+  if constexpr (Op == CompareOp::NotEqual) return reinterpret_cast<Mask>(incoming != stored);
+  if constexpr (Op == CompareOp::GreaterOrEqual) return reinterpret_cast<Mask>(incoming >= stored);
+  if constexpr (Op == CompareOp::Always) return ~Mask{};
+}
+
+template <DepthFormat Format, CompareOp Op>
+inline Mask depthTestPasses(Words incoming, Words stored) {
+  if constexpr (Format == DepthFormat::D32Sfloat) {
+    return compareLanes<Op>(reinterpret_cast<Floats>(incoming), reinterpret_cast<Floats>(stored));
+  } else {
+    return compareLanes<Op>(incoming, stored);
+  }
+}
+
 // unorm8FromFloat per lane: clamp to [0, 1] (NaN to 0), times 255, round half to even.
 [[SOFTRASTER_FAST_TARGET]] inline Words unorm8FromFloat(Floats v) {
   const Floats one = broadcast(1.0f), zero = broadcast(0.0f);
@@ -199,6 +221,19 @@ inline Mask depthTestPasses(CompareOp op, Words incoming, Words stored) {
   __m128i row1 = _mm_setzero_si128();
   if (bits >> 4) row1 = _mm_maskload_epi32(reinterpret_cast<const int*>(first + stride), _mm256_extracti128_si256(mask, 1));
   return reinterpret_cast<Words>(_mm256_set_m128i(row1, row0));
+}
+
+// The same for a block wholly inside the image (all eight lanes): plain loads and stores.
+[[SOFTRASTER_FAST_TARGET]] inline Words loadFullBlock(const std::uint32_t* first, std::size_t stride) {
+  const __m128i row0 = _mm_loadu_si128(reinterpret_cast<const __m128i*>(first));
+  const __m128i row1 = _mm_loadu_si128(reinterpret_cast<const __m128i*>(first + stride));
+  return reinterpret_cast<Words>(_mm256_set_m128i(row1, row0));
+}
+
+[[SOFTRASTER_FAST_TARGET]] inline void storeFullBlock(std::uint32_t* first, std::size_t stride, Words values) {
+  const __m256i v = reinterpret_cast<__m256i>(values);
+  _mm_storeu_si128(reinterpret_cast<__m128i*>(first), _mm256_castsi256_si128(v));
+  _mm_storeu_si128(reinterpret_cast<__m128i*>(first + stride), _mm256_extracti128_si256(v, 1));
 }
 
 [[SOFTRASTER_FAST_TARGET]] inline void storeBlock(std::uint32_t* first, std::size_t stride, unsigned bits, Words values) {
