@@ -1,4 +1,5 @@
-// Framebuffer storage, clears (deferred: see framebuffer.hpp), the MSAA resolve and depth read-out.
+// Framebuffer storage, clears (deferred: see framebuffer.hpp), the MSAA resolve (SSE2 where the
+// build has it, the same operations per channel) and depth read-out.
 #include <softraster/detail/fragment/colour.hpp>
 #include <softraster/framebuffer.hpp>
 
@@ -6,6 +7,10 @@
 #include <bit>
 #include <cmath>
 #include <cstring>
+
+#if defined(__SSE2__)
+#include <emmintrin.h>
+#endif
 
 namespace softraster {
 
@@ -42,7 +47,31 @@ void Framebuffer::resolveInto(Framebuffer& out) const {
   const std::size_t pixels = static_cast<std::size_t>(width_) * height_;
   const float toFloat = static_cast<float>(1.0 / 255.0);  // how lavapipe's texel fetch converts UNORM8
   const float average = 1.0f / static_cast<float>(samples_);
-  for (std::size_t p = 0; p < pixels; ++p) {
+  std::size_t p = 0;
+#if defined(__SSE2__)
+  if (samples_ == 4) {  // the loop below with the four channels of a pixel in four lanes
+    const __m128i zero = _mm_setzero_si128();
+    const __m128 scale = _mm_set1_ps(toFloat), quarter = _mm_set1_ps(average);
+    const __m128 magic = _mm_set1_ps(8388608.0f), max = _mm_set1_ps(255.0f);
+    for (; p < pixels; ++p) {
+      const __m128i bytes = _mm_loadu_si128(reinterpret_cast<const __m128i*>(colour_.data() + 16 * p));
+      const __m128i low = _mm_unpacklo_epi8(bytes, zero), high = _mm_unpackhi_epi8(bytes, zero);
+      const __m128 s0 = _mm_mul_ps(_mm_cvtepi32_ps(_mm_unpacklo_epi16(low, zero)), scale);
+      const __m128 s1 = _mm_mul_ps(_mm_cvtepi32_ps(_mm_unpackhi_epi16(low, zero)), scale);
+      const __m128 s2 = _mm_mul_ps(_mm_cvtepi32_ps(_mm_unpacklo_epi16(high, zero)), scale);
+      const __m128 s3 = _mm_mul_ps(_mm_cvtepi32_ps(_mm_unpackhi_epi16(high, zero)), scale);
+      const __m128 v = _mm_mul_ps(_mm_add_ps(_mm_add_ps(_mm_add_ps(s0, s1), s2), s3), quarter);
+      // unorm8FromFloat: v > 0 ? min(v, 1) : 0 (v is never NaN here), then round half to even.
+      const __m128 clamped = _mm_min_ps(_mm_max_ps(v, _mm_setzero_ps()), _mm_set1_ps(1.0f));
+      const __m128 rounded = _mm_sub_ps(_mm_add_ps(_mm_mul_ps(clamped, max), magic), magic);
+      const __m128i words = _mm_cvttps_epi32(rounded);
+      const int rgba = _mm_cvtsi128_si32(_mm_packus_epi16(_mm_packs_epi32(words, zero), zero));
+      std::memcpy(out.colour_.data() + 4 * p, &rgba, sizeof rgba);
+      out.depth_[p] = depth_[p * 4];
+    }
+  }
+#endif
+  for (; p < pixels; ++p) {
     for (int c = 0; c < 4; ++c) {
       float sum = 0.0f;
       for (std::uint32_t s = 0; s < samples_; ++s) sum = sum + static_cast<float>(colour_[(p * samples_ + s) * 4 + c]) * toFloat;
