@@ -5,7 +5,8 @@
 // fragment stage clipped to the band, replaying its records in submission order.
 // Every pixel belongs to exactly one band and sees its primitives in submission order, so the
 // output is the same bits whatever the thread count (tests/softraster/fast_path_test.cpp).
-// Records are drawn in chunks of kChunk primitives, so memory stays bounded for any draw.
+// Records are drawn in chunks of kChunk primitives, so memory stays bounded for any draw; the
+// records and bins are the Context's scratch (exact/scratch.hpp), so a draw allocates none.
 // A clear pending on the framebuffer (Framebuffer::clear) is written by the first chunk, each
 // band's rows (full width) by the band's thread just before it draws them; rows outside the
 // draw region by the calling thread.
@@ -16,6 +17,7 @@
 #pragma once
 
 #include <softraster/detail/exact/interpolation.hpp>
+#include <softraster/detail/exact/scratch.hpp>
 #include <softraster/detail/exact/triangle_setup.hpp>
 #include <softraster/detail/fast/pool.hpp>
 #include <softraster/detail/fragment/shade.hpp>
@@ -35,17 +37,20 @@ template <class Stage, class Uniforms, int N>
 class BandQueue {
  public:
   static constexpr int kBandRows = 32;
-  static constexpr std::size_t kChunk = 4096;
+  static constexpr std::size_t kChunk = 16384;  // ~3 MB of records: few enough hand-overs to the threads
 
-  BandQueue(ThreadPool* pool, const PipelineState& state, const Uniforms& uniforms, Framebuffer& framebuffer,
-            const Viewport& viewport, const PixelRect& region, bool inverseZ)
+  BandQueue(ThreadPool* pool, DrawScratch& scratch, const PipelineState& state, const Uniforms& uniforms,
+            Framebuffer& framebuffer, const Viewport& viewport, const PixelRect& region, bool inverseZ)
       : pool_(pool != nullptr && pool->threads() > 1 ? pool : nullptr),
         state_(state),
         uniforms_(uniforms),
         framebuffer_(framebuffer),
         viewport_(viewport),
         region_(region),
-        inverseZ_(inverseZ) {
+        inverseZ_(inverseZ),
+        records_(scratch.vector<Record>(ScratchSlot::BandRecords)),
+        bins_(scratch.vector<std::vector<std::uint32_t>>(ScratchSlot::BandBins)) {
+    records_.clear();
     if (pool_ == nullptr) direct_.emplace(state, uniforms, framebuffer, viewport, region, inverseZ);
   }
 
@@ -168,8 +173,8 @@ class BandQueue {
   PixelRect region_;
   bool inverseZ_;
   std::optional<Stage> direct_;
-  std::vector<Record> records_;
-  std::vector<std::vector<std::uint32_t>> bins_;
+  std::vector<Record>& records_;                    // the Context's scratch, kept between draws
+  std::vector<std::vector<std::uint32_t>>& bins_;   // (bins keep their capacity too)
 };
 
 }  // namespace softraster::detail
