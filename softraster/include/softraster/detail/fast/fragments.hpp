@@ -139,6 +139,8 @@ class FastFragmentStage {
     }
   }
 
+  static constexpr std::int64_t kCutBlocks = 4;  // rows of more blocks than this are cut by division
+
   // The k with a - k * step > 0, intersected into [first, last] (integers: exact).
   static void positiveRun(std::int64_t a, std::int64_t step, std::int64_t& first, std::int64_t& last) {
     if (step == 0) {
@@ -154,9 +156,10 @@ class FastFragmentStage {
   // not wholly outside an edge: inBox its lanes inside the box, inside whether every lane (and
   // sample) is inside all three edges, value the edge values at lane 0. lowest and highest: the
   // least and greatest offset from lane 0 of any lane (or sample) of a block, per edge.
-  // Where no edge value can wrap around 64 bits (cornersDecide), each row of blocks is cut
-  // exactly, by integer division, into the run of blocks not wholly outside any edge and, inside
-  // it, the run wholly inside all three; elsewhere every block is visited and tested.
+  // Where no edge value can wrap around 64 bits (cornersDecide), each row of more than
+  // kCutBlocks blocks is cut exactly, by integer division, into the run of blocks not wholly
+  // outside any edge and, inside it, the run wholly inside all three; a narrower row decides
+  // each block at its corners; elsewhere every block is visited and its lanes tested.
   template <class Block>
   [[SOFTRASTER_FAST_TARGET]] static void walkBlocks(const EdgeFunction (&edges)[3], const PixelRect& box,
                                                     const std::int64_t (&lowest)[3], const std::int64_t (&highest)[3],
@@ -168,10 +171,12 @@ class FastFragmentStage {
     }
     const bool corners = cornersDecide(edges, box);
     const std::int64_t blocks = (box.x1 - box.x0) / kBatchWidth + 1;
+    // Six divisions per row pay off over a wide row; a narrow one tests each block's corners.
+    const bool cut = corners && blocks > kCutBlocks;
     for (int py = box.y0; py <= box.y1; py += kBatchHeight) {
       const unsigned rows = py + 1 <= box.y1 ? 0xffu : 0x0fu;
       std::int64_t first = 0, last = blocks - 1, innerFirst = 1, innerLast = 0;
-      if (corners) {
+      if (cut) {
         innerFirst = 0, innerLast = blocks - 1;
         for (int i = 0; i < 3; ++i) {
           positiveRun(rowStart[i] + highest[i], stepX[i], first, last);
@@ -180,12 +185,16 @@ class FastFragmentStage {
       }
       std::int64_t value[3];
       for (int i = 0; i < 3; ++i) value[i] = rowStart[i] - first * stepX[i];
-      for (std::int64_t k = first; k <= last; ++k) {
+      for (std::int64_t k = first; k <= last; ++k, value[0] -= stepX[0], value[1] -= stepX[1], value[2] -= stepX[2]) {
         const int px = box.x0 + static_cast<int>(k) * kBatchWidth;
         const int columns = std::min(kBatchWidth, box.x1 - px + 1);
         const unsigned inBox = rows & (((1u << columns) - 1u) * 0x11u);
-        block(px, py, inBox, k >= innerFirst && k <= innerLast, value);
-        for (int i = 0; i < 3; ++i) value[i] -= stepX[i];
+        bool inside = k >= innerFirst && k <= innerLast;
+        if (corners && !cut) {
+          if (value[0] + highest[0] <= 0 || value[1] + highest[1] <= 0 || value[2] + highest[2] <= 0) continue;
+          inside = value[0] + lowest[0] > 0 && value[1] + lowest[1] > 0 && value[2] + lowest[2] > 0;
+        }
+        block(px, py, inBox, inside, value);
       }
       for (int i = 0; i < 3; ++i) rowStart[i] += kBatchHeight * edges[i].dcdy;
     }
