@@ -1,4 +1,5 @@
-// Framebuffer storage, clears and depth read-out.
+// Framebuffer storage, clears (deferred: see framebuffer.hpp), the MSAA resolve (SSE2 where the
+// build has it, the same operations per channel) and depth read-out.
 #include <softraster/detail/fragment/colour.hpp>
 #include <softraster/framebuffer.hpp>
 
@@ -6,6 +7,10 @@
 #include <bit>
 #include <cmath>
 #include <cstring>
+
+#if defined(__SSE2__)
+#include <emmintrin.h>
+#endif
 
 namespace softraster {
 
@@ -30,6 +35,7 @@ Framebuffer Framebuffer::resolve() const {
 }
 
 void Framebuffer::resolveInto(Framebuffer& out) const {
+  settled();
   if (&out == this) {  // resolving in place: a single-sample framebuffer is its own resolve
     if (samples_ != 1) out = resolve();
     return;
@@ -37,10 +43,35 @@ void Framebuffer::resolveInto(Framebuffer& out) const {
   if (out.width_ != width_ || out.height_ != height_ || out.depthFormat_ != depthFormat_ || out.samples_ != 1) {
     out = Framebuffer(width_, height_, depthFormat_, 1);
   }
+  out.pending_.reset();  // every sample of `out` is written here
   const std::size_t pixels = static_cast<std::size_t>(width_) * height_;
   const float toFloat = static_cast<float>(1.0 / 255.0);  // how lavapipe's texel fetch converts UNORM8
   const float average = 1.0f / static_cast<float>(samples_);
-  for (std::size_t p = 0; p < pixels; ++p) {
+  std::size_t p = 0;
+#if defined(__SSE2__)
+  if (samples_ == 4) {  // the loop below with the four channels of a pixel in four lanes
+    const __m128i zero = _mm_setzero_si128();
+    const __m128 scale = _mm_set1_ps(toFloat), quarter = _mm_set1_ps(average);
+    const __m128 magic = _mm_set1_ps(8388608.0f), max = _mm_set1_ps(255.0f);
+    for (; p < pixels; ++p) {
+      const __m128i bytes = _mm_loadu_si128(reinterpret_cast<const __m128i*>(colour_.data() + 16 * p));
+      const __m128i low = _mm_unpacklo_epi8(bytes, zero), high = _mm_unpackhi_epi8(bytes, zero);
+      const __m128 s0 = _mm_mul_ps(_mm_cvtepi32_ps(_mm_unpacklo_epi16(low, zero)), scale);
+      const __m128 s1 = _mm_mul_ps(_mm_cvtepi32_ps(_mm_unpackhi_epi16(low, zero)), scale);
+      const __m128 s2 = _mm_mul_ps(_mm_cvtepi32_ps(_mm_unpacklo_epi16(high, zero)), scale);
+      const __m128 s3 = _mm_mul_ps(_mm_cvtepi32_ps(_mm_unpackhi_epi16(high, zero)), scale);
+      const __m128 v = _mm_mul_ps(_mm_add_ps(_mm_add_ps(_mm_add_ps(s0, s1), s2), s3), quarter);
+      // unorm8FromFloat: v > 0 ? min(v, 1) : 0 (v is never NaN here), then round half to even.
+      const __m128 clamped = _mm_min_ps(_mm_max_ps(v, _mm_setzero_ps()), _mm_set1_ps(1.0f));
+      const __m128 rounded = _mm_sub_ps(_mm_add_ps(_mm_mul_ps(clamped, max), magic), magic);
+      const __m128i words = _mm_cvttps_epi32(rounded);
+      const int rgba = _mm_cvtsi128_si32(_mm_packus_epi16(_mm_packs_epi32(words, zero), zero));
+      std::memcpy(out.colour_.data() + 4 * p, &rgba, sizeof rgba);
+      out.depth_[p] = depth_[p * 4];
+    }
+  }
+#endif
+  for (; p < pixels; ++p) {
     for (int c = 0; c < 4; ++c) {
       float sum = 0.0f;
       for (std::uint32_t s = 0; s < samples_; ++s) sum = sum + static_cast<float>(colour_[(p * samples_ + s) * 4 + c]) * toFloat;
@@ -53,16 +84,44 @@ void Framebuffer::resolveInto(Framebuffer& out) const {
 void Framebuffer::clear(Vec4 colour, float depth) {
   std::uint8_t rgba[4];
   detail::storeColour(rgba, colour);
-  std::uint32_t word;
-  std::memcpy(&word, rgba, sizeof word);
-  // One 32-bit word per sample, written as words (a memset-speed fill, not four byte copies).
-  const std::size_t samples = colour_.size() / 4;
-  std::uint8_t* out = colour_.data();
-  for (std::size_t i = 0; i < samples; ++i) std::memcpy(out + 4 * i, &word, sizeof word);
-  std::fill(depth_.begin(), depth_.end(), depthClearValue(depthFormat_, depth));
+  PendingClear clear;
+  std::memcpy(&clear.colour, rgba, sizeof clear.colour);
+  clear.depth = depthClearValue(depthFormat_, depth);
+  pending_ = clear;
+}
+
+namespace {
+
+// `count` 32-bit words from `out` on set to `value`, in 64-byte pieces (a memset-speed fill).
+void fillWords(std::uint8_t* out, std::size_t count, std::uint32_t value) {
+  std::uint32_t piece[16];
+  for (std::uint32_t& w : piece) w = value;
+  std::size_t i = 0;
+  for (; i + 16 <= count; i += 16) std::memcpy(out + 4 * i, piece, sizeof piece);
+  for (; i < count; ++i) std::memcpy(out + 4 * i, &value, sizeof value);
+}
+
+}  // namespace
+
+void Framebuffer::clearRows(const PendingClear& clear, std::uint32_t y0, std::uint32_t y1) { fillRows(clear, y0, y1); }
+
+void Framebuffer::fillRows(const PendingClear& clear, std::uint32_t y0, std::uint32_t y1) const {
+  if (y0 > y1 || y0 >= height_) return;
+  y1 = std::min(y1, height_ - 1);
+  const std::size_t perRow = static_cast<std::size_t>(width_) * samples_;
+  const std::size_t first = y0 * perRow, count = (y1 - y0 + 1) * perRow;
+  fillWords(colour_.data() + 4 * first, count, clear.colour);
+  fillWords(reinterpret_cast<std::uint8_t*>(depth_.data() + first), count, clear.depth);
+}
+
+void Framebuffer::writePendingClear() const {
+  const PendingClear clear = *pending_;
+  pending_.reset();
+  if (height_ != 0) fillRows(clear, 0, height_ - 1);
 }
 
 float Framebuffer::depth(std::size_t sample) const {
+  settled();
   const int bits = unormDepthBits(depthFormat_);
   if (bits == 0) return std::bit_cast<float>(depth_[sample]);
   return static_cast<float>(static_cast<double>(depth_[sample]) / ((1u << bits) - 1));

@@ -10,12 +10,14 @@
 // blending with every core factor and op, blend constants and the colour write mask.
 // A Context holds no global state and reports errors through Status; it never prints. It owns
 // its threads (ContextOptions::threads); draws from several threads on one Context are safe and
-// take turns where they use the threads; one Context per thread avoids that wait.
+// take turns where they use the threads; one Context per thread avoids that wait. A steady-state
+// draw allocates nothing: its vectors are the Context's scratch (detail/exact/scratch.hpp).
 // Deliberately absent: MSAA lines, points and polygon modes, depth bias in polygon modes,
 // dual-source blending, alternative rasterization methods (each a later issue).
 #pragma once
 
 #include <softraster/detail/exact/draw.hpp>
+#include <softraster/detail/exact/scratch.hpp>
 #include <softraster/detail/fast/fragments.hpp>
 #include <softraster/framebuffer.hpp>
 #include <softraster/options.hpp>
@@ -38,7 +40,8 @@ class Context {
   explicit Context(ContextOptions options = {})
       : options_(options),
         pool_(std::make_unique<detail::ThreadPool>(
-            options.threads != 0 ? options.threads : std::max(1u, std::thread::hardware_concurrency()))) {}
+            options.threads != 0 ? options.threads : std::max(1u, std::thread::hardware_concurrency()))),
+        scratch_(std::make_unique<detail::ScratchPool>()) {}
 
   const ContextOptions& options() const { return options_; }
   // Threads drawing, the caller's included (options().threads, or the core count for 0).
@@ -48,9 +51,11 @@ class Context {
   template <class Shader>
   Status draw(const PipelineState& state, const typename Shader::Uniforms& uniforms,
               std::span<const typename Shader::Vertex> vertices, Framebuffer& framebuffer) const {
-    std::vector<std::uint32_t> sequence(vertices.size());
+    const detail::ScratchPool::Lease scratch = scratch_->lease();
+    std::vector<std::uint32_t>& sequence = (*scratch).vector<std::uint32_t>(detail::ScratchSlot::IndexSequence);
+    sequence.resize(vertices.size());
     for (std::size_t i = 0; i < sequence.size(); ++i) sequence[i] = static_cast<std::uint32_t>(i);
-    return drawPrimitives<Shader>(state, uniforms, vertices, sequence, framebuffer);
+    return drawPrimitives<Shader>(state, uniforms, vertices, sequence, framebuffer, *scratch);
   }
 
   // vkCmdDrawIndexed. An index past the end of `vertices` is an error and nothing is drawn.
@@ -65,7 +70,8 @@ class Context {
                              ") is past the last vertex (" + std::to_string(vertices.size()) + " vertices)");
       }
     }
-    return drawPrimitives<Shader>(state, uniforms, vertices, indices, framebuffer);
+    const detail::ScratchPool::Lease scratch = scratch_->lease();
+    return drawPrimitives<Shader>(state, uniforms, vertices, indices, framebuffer, *scratch);
   }
 
  private:
@@ -99,18 +105,18 @@ class Context {
   template <class Shader>
   Status drawPrimitives(const PipelineState& state, const typename Shader::Uniforms& uniforms,
                         std::span<const typename Shader::Vertex> vertices, std::span<const std::uint32_t> indices,
-                        Framebuffer& framebuffer) const {
+                        Framebuffer& framebuffer, detail::DrawScratch& scratch) const {
     static_assert(Shader::kVaryings >= 0 && Shader::kVaryings <= kMaxVaryings, "too many varyings");
     if (Status status = validate(state, framebuffer); !status) return status;
     switch (framebuffer.depthFormat()) {
       case DepthFormat::D16Unorm:
-        drawWithFormat<Shader, DepthFormat::D16Unorm>(state, uniforms, vertices, indices, framebuffer);
+        drawWithFormat<Shader, DepthFormat::D16Unorm>(state, uniforms, vertices, indices, framebuffer, scratch);
         break;
       case DepthFormat::X8D24UnormPack32:
-        drawWithFormat<Shader, DepthFormat::X8D24UnormPack32>(state, uniforms, vertices, indices, framebuffer);
+        drawWithFormat<Shader, DepthFormat::X8D24UnormPack32>(state, uniforms, vertices, indices, framebuffer, scratch);
         break;
       case DepthFormat::D32Sfloat:
-        drawWithFormat<Shader, DepthFormat::D32Sfloat>(state, uniforms, vertices, indices, framebuffer);
+        drawWithFormat<Shader, DepthFormat::D32Sfloat>(state, uniforms, vertices, indices, framebuffer, scratch);
         break;
     }
     return {};
@@ -119,28 +125,28 @@ class Context {
   template <class Shader, DepthFormat Format>
   void drawWithFormat(const PipelineState& state, const typename Shader::Uniforms& uniforms,
                       std::span<const typename Shader::Vertex> vertices, std::span<const std::uint32_t> indices,
-                      Framebuffer& framebuffer) const {
+                      Framebuffer& framebuffer, detail::DrawScratch& scratch) const {
 #if SOFTRASTER_HAS_FAST_PATH
     if constexpr (ShadesBatches<Shader>) {
       if (options_.method == Method::Exact && options_.fusedMultiplyAdd && detail::fast::cpuRunsFastPath()) {
-        drawFast<Shader, Format>(state, uniforms, vertices, indices, framebuffer);
+        drawFast<Shader, Format>(state, uniforms, vertices, indices, framebuffer, scratch);
         return;
       }
     }
 #endif
     if (options_.fusedMultiplyAdd) {
-      drawFused<Shader, Format>(state, uniforms, vertices, indices, framebuffer);
+      drawFused<Shader, Format>(state, uniforms, vertices, indices, framebuffer, scratch);
     } else {
-      drawExact<Shader, false, Format>(state, uniforms, vertices, indices, framebuffer);
+      drawExact<Shader, false, Format>(state, uniforms, vertices, indices, framebuffer, scratch);
     }
   }
 
   template <class Shader, bool Fused, DepthFormat Format>
   void drawExact(const PipelineState& state, const typename Shader::Uniforms& uniforms,
                  std::span<const typename Shader::Vertex> vertices, std::span<const std::uint32_t> indices,
-                 Framebuffer& framebuffer) const {
+                 Framebuffer& framebuffer, detail::DrawScratch& scratch) const {
     const bool inverseZ = options_.depthMode == DepthMode::InverseZ;
-    detail::ExactDraw<Shader, Fused, Format>(state, uniforms, framebuffer, inverseZ, threadsFor(options_.method))
+    detail::ExactDraw<Shader, Fused, Format>(state, uniforms, framebuffer, inverseZ, scratch, threadsFor(options_.method))
         .run(vertices, indices);
   }
 
@@ -152,8 +158,8 @@ class Context {
 #endif
   void drawFused(const PipelineState& state, const typename Shader::Uniforms& uniforms,
                  std::span<const typename Shader::Vertex> vertices, std::span<const std::uint32_t> indices,
-                 Framebuffer& framebuffer) const {
-    drawExact<Shader, true, Format>(state, uniforms, vertices, indices, framebuffer);
+                 Framebuffer& framebuffer, detail::DrawScratch& scratch) const {
+    drawExact<Shader, true, Format>(state, uniforms, vertices, indices, framebuffer, scratch);
   }
 
 #if SOFTRASTER_HAS_FAST_PATH
@@ -163,9 +169,9 @@ class Context {
   [[gnu::target("avx2,fma"), gnu::flatten]]
   void drawFast(const PipelineState& state, const typename Shader::Uniforms& uniforms,
                 std::span<const typename Shader::Vertex> vertices, std::span<const std::uint32_t> indices,
-                Framebuffer& framebuffer) const {
+                Framebuffer& framebuffer, detail::DrawScratch& scratch) const {
     detail::ExactDraw<Shader, true, Format, detail::fast::FastFragmentStage<Shader, Format>>(
-        state, uniforms, framebuffer, options_.depthMode == DepthMode::InverseZ, pool_.get())
+        state, uniforms, framebuffer, options_.depthMode == DepthMode::InverseZ, scratch, pool_.get())
         .run(vertices, indices);
   }
 #endif
@@ -176,6 +182,7 @@ class Context {
 
   ContextOptions options_;
   std::unique_ptr<detail::ThreadPool> pool_;
+  std::unique_ptr<detail::ScratchPool> scratch_;  // the draws' vectors, kept between draws (no allocation per draw)
 };
 
 }  // namespace softraster

@@ -13,6 +13,7 @@
 
 #include <softraster/detail/exact/interpolation.hpp>
 #include <softraster/detail/exact/line_point_setup.hpp>
+#include <softraster/detail/exact/scratch.hpp>
 #include <softraster/detail/exact/triangle_setup.hpp>
 #include <softraster/detail/fast/bands.hpp>
 #include <softraster/detail/fast/pool.hpp>
@@ -43,9 +44,10 @@ class ExactDraw {
   static constexpr int N = Shader::kVaryings;
   using Vertex = ShadedVertex<N>;
 
-  // pool: the Context's threads (nullptr or one thread: everything on the calling thread).
+  // pool: the Context's threads (nullptr or one thread: everything on the calling thread);
+  // scratch: the vectors this draw fills, kept by the Context between draws.
   ExactDraw(const PipelineState& state, const typename Shader::Uniforms& uniforms, Framebuffer& framebuffer,
-            bool inverseZ, ThreadPool* pool = nullptr)
+            bool inverseZ, DrawScratch& scratch, ThreadPool* pool = nullptr)
       : state_(state),
         rs_(state.rasterization),
         uniforms_(uniforms),
@@ -53,7 +55,10 @@ class ExactDraw {
         transform_(makeViewportTransform(viewport_)),
         region_(drawRegion(state.scissor, viewport_, framebuffer.width(), framebuffer.height())),
         multisample_(framebuffer.samples() == 4),
-        fragments_(pool, state, uniforms, framebuffer, viewport_, region_, inverseZ) {}
+        fragments_(pool, scratch, state, uniforms, framebuffer, viewport_, region_, inverseZ),
+        shaded_(scratch.vector<Vertex>(ScratchSlot::ShadedVertices)),
+        triangles_(scratch.vector<TriangleIndices>(ScratchSlot::Triangles)),
+        lines_(scratch.vector<LineIndices>(ScratchSlot::Lines)) {}
 
   // Draws vertices[indices[k]] in order, assembled by the state's topology.
   void run(std::span<const typename Shader::Vertex> vertices, std::span<const std::uint32_t> indices) {
@@ -88,7 +93,8 @@ class ExactDraw {
 
   void drawLines(std::span<const std::uint32_t> indices) {
     Vertex clippedA, clippedB;
-    for (const LineIndices& l : assembleLines(state_.topology, indices)) {
+    assembleLines(state_.topology, indices, lines_);
+    for (const LineIndices& l : lines_) {
       const Vertex& a = shaded_[l[0]];
       const Vertex& b = shaded_[l[1]];
       const std::uint32_t outside = a.clipMask | b.clipMask;
@@ -107,7 +113,8 @@ class ExactDraw {
     winding_ = windingFilter(rs_);
     if (!winding_.drawClockwise && !winding_.drawCounterClockwise) return;
     const bool unfilled = rs_.polygonMode != PolygonMode::Fill;
-    const std::vector<TriangleIndices> triangles = assembleTriangles(state_.topology, indices);
+    assembleTriangles(state_.topology, indices, triangles_);
+    const std::vector<TriangleIndices>& triangles = triangles_;
     const std::size_t batchSize = trianglesPerBatch(state_.topology);
     for (std::size_t start = 0; start < triangles.size(); start += batchSize) {
       const auto batch = std::span(triangles).subspan(start, std::min(batchSize, triangles.size() - start));
@@ -205,8 +212,10 @@ class ExactDraw {
   bool multisample_;
   BandQueue<Fragments, typename Shader::Uniforms, N> fragments_;  // the stage, on one thread or in bands
   WindingFilter winding_{true, true};
-  // Scratch, reused across primitives.
-  std::vector<Vertex> shaded_;
+  // Scratch: the Context's, reused across draws; polygon_ across primitives.
+  std::vector<Vertex>& shaded_;
+  std::vector<TriangleIndices>& triangles_;
+  std::vector<LineIndices>& lines_;
   ClippedPolygon<N> polygon_;
 };
 

@@ -5,13 +5,19 @@
 // fragment stage clipped to the band, replaying its records in submission order.
 // Every pixel belongs to exactly one band and sees its primitives in submission order, so the
 // output is the same bits whatever the thread count (tests/softraster/fast_path_test.cpp).
-// Records are drawn in chunks of kChunk primitives, so memory stays bounded for any draw.
-// With no pool (one thread) it forwards every call straight to one stage.
+// Records are drawn in chunks of kChunk primitives, so memory stays bounded for any draw; the
+// records and bins are the Context's scratch (exact/scratch.hpp), so a draw allocates none.
+// A clear pending on the framebuffer (Framebuffer::clear) is written by the first chunk, each
+// band's rows (full width) by the band's thread just before it draws them; rows outside the
+// draw region by the calling thread.
+// With no pool (one thread) it forwards every call straight to one stage (whose framebuffer
+// access writes a pending clear whole).
 // Deliberately absent: square tiles (bands are simpler to bin and balance as well on 2-8 threads),
 // a per-tile depth range.
 #pragma once
 
 #include <softraster/detail/exact/interpolation.hpp>
+#include <softraster/detail/exact/scratch.hpp>
 #include <softraster/detail/exact/triangle_setup.hpp>
 #include <softraster/detail/fast/pool.hpp>
 #include <softraster/detail/fragment/shade.hpp>
@@ -31,17 +37,20 @@ template <class Stage, class Uniforms, int N>
 class BandQueue {
  public:
   static constexpr int kBandRows = 32;
-  static constexpr std::size_t kChunk = 4096;
+  static constexpr std::size_t kChunk = 16384;  // ~3 MB of records: few enough hand-overs to the threads
 
-  BandQueue(ThreadPool* pool, const PipelineState& state, const Uniforms& uniforms, Framebuffer& framebuffer,
-            const Viewport& viewport, const PixelRect& region, bool inverseZ)
+  BandQueue(ThreadPool* pool, DrawScratch& scratch, const PipelineState& state, const Uniforms& uniforms,
+            Framebuffer& framebuffer, const Viewport& viewport, const PixelRect& region, bool inverseZ)
       : pool_(pool != nullptr && pool->threads() > 1 ? pool : nullptr),
         state_(state),
         uniforms_(uniforms),
         framebuffer_(framebuffer),
         viewport_(viewport),
         region_(region),
-        inverseZ_(inverseZ) {
+        inverseZ_(inverseZ),
+        records_(scratch.vector<Record>(ScratchSlot::BandRecords)),
+        bins_(scratch.vector<std::vector<std::uint32_t>>(ScratchSlot::BandBins)) {
+    records_.clear();
     if (pool_ == nullptr) direct_.emplace(state, uniforms, framebuffer, viewport, region, inverseZ);
   }
 
@@ -74,7 +83,7 @@ class BandQueue {
 
   // Draws what is still recorded; call once at the end of the draw.
   void finish() {
-    if (!records_.empty()) flush();
+    if (!direct_ && (!records_.empty() || framebuffer_.clearPending())) flush();
   }
 
  private:
@@ -96,8 +105,27 @@ class BandQueue {
       const int first = (box.y0 - region_.y0) / kBandRows, last = (box.y1 - region_.y0) / kBandRows;
       for (int b = first; b <= last; ++b) bins_[static_cast<std::size_t>(b)].push_back(static_cast<std::uint32_t>(i));
     }
-    pool_->run(static_cast<std::size_t>(bands), [this](std::size_t band) { drawBand(band); });
+    const std::optional<Framebuffer::PendingClear> clear = framebuffer_.takePendingClear();
+    if (clear) {  // the rows no band covers
+      if (region_.y0 > 0) framebuffer_.clearRows(*clear, 0, static_cast<std::uint32_t>(region_.y0 - 1));
+      framebuffer_.clearRows(*clear, static_cast<std::uint32_t>(region_.y1 + 1), framebuffer_.height() - 1);
+    }
+    pool_->run(static_cast<std::size_t>(bands), [this, &clear](std::size_t band) {
+      if (clear) {
+        const PixelRect rows = bandRows(band);
+        framebuffer_.clearRows(*clear, static_cast<std::uint32_t>(rows.y0), static_cast<std::uint32_t>(rows.y1));
+      }
+      drawBand(band);
+    });
     records_.clear();
+  }
+
+  // The draw region's rows of one band.
+  PixelRect bandRows(std::size_t band) const {
+    PixelRect rows = region_;
+    rows.y0 = region_.y0 + static_cast<int>(band) * kBandRows;
+    rows.y1 = std::min(region_.y1, rows.y0 + kBandRows - 1);
+    return rows;
   }
 
   // One band's records, drawn by the calling thread. The band task is reached through
@@ -125,10 +153,7 @@ class BandQueue {
   void replay(std::size_t band) const {
     const std::vector<std::uint32_t>& bin = bins_[band];
     if (bin.empty()) return;
-    PixelRect rows = region_;
-    rows.y0 = region_.y0 + static_cast<int>(band) * kBandRows;
-    rows.y1 = std::min(region_.y1, rows.y0 + kBandRows - 1);
-    const Stage stage(state_, uniforms_, framebuffer_, viewport_, rows, inverseZ_);
+    const Stage stage(state_, uniforms_, framebuffer_, viewport_, bandRows(band), inverseZ_);
     for (const std::uint32_t i : bin) {
       const Record& r = records_[i];
       const EdgeFunction triangle[3] = {r.edges[0], r.edges[1], r.edges[2]};
@@ -148,8 +173,8 @@ class BandQueue {
   PixelRect region_;
   bool inverseZ_;
   std::optional<Stage> direct_;
-  std::vector<Record> records_;
-  std::vector<std::vector<std::uint32_t>> bins_;
+  std::vector<Record>& records_;                    // the Context's scratch, kept between draws
+  std::vector<std::vector<std::uint32_t>>& bins_;   // (bins keep their capacity too)
 };
 
 }  // namespace softraster::detail

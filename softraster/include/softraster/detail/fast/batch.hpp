@@ -117,10 +117,10 @@ struct BlockEdges {
 
 // clampDepth per lane: SSE max(min(z, 1), 0), then max(min(z, range.max), range.min).
 [[SOFTRASTER_FAST_TARGET]] inline Floats clampDepth(Floats z, DepthRange range) {
-  z = z < broadcast(1.0f) ? z : broadcast(1.0f);
-  z = z > broadcast(0.0f) ? z : broadcast(0.0f);
-  z = z < broadcast(range.max) ? z : broadcast(range.max);
-  return z > broadcast(range.min) ? z : broadcast(range.min);
+  // minps(a, b) is a < b ? a : b and maxps(a, b) a > b ? a : b, NaN included: one instruction each.
+  __m256 v = _mm256_max_ps(_mm256_min_ps(reinterpret_cast<__m256>(z), _mm256_set1_ps(1.0f)), _mm256_setzero_ps());
+  v = _mm256_max_ps(_mm256_min_ps(v, _mm256_set1_ps(range.max)), _mm256_set1_ps(range.min));
+  return reinterpret_cast<Floats>(v);
 }
 
 // depthToStorage<Format> per lane.
@@ -162,14 +162,36 @@ inline Mask depthTestPasses(CompareOp op, Words incoming, Words stored) {
   }
 }
 
+// The same with the compare op known at compile time (the block loop is instantiated per op).
+template <CompareOp Op, class V>
+inline Mask compareLanes(V incoming, V stored) {
+  if constexpr (Op == CompareOp::Never) return Mask{};
+  if constexpr (Op == CompareOp::Less) return reinterpret_cast<Mask>(incoming < stored);
+  if constexpr (Op == CompareOp::Equal) return reinterpret_cast<Mask>(incoming == stored);
+  if constexpr (Op == CompareOp::LessOrEqual) return reinterpret_cast<Mask>(incoming <= stored);
+  if constexpr (Op == CompareOp::Greater) return reinterpret_cast<Mask>(incoming > stored);
+  if constexpr (Op == CompareOp::NotEqual) return reinterpret_cast<Mask>(incoming != stored);
+  if constexpr (Op == CompareOp::GreaterOrEqual) return reinterpret_cast<Mask>(incoming >= stored);
+  if constexpr (Op == CompareOp::Always) return ~Mask{};
+}
+
+template <DepthFormat Format, CompareOp Op>
+inline Mask depthTestPasses(Words incoming, Words stored) {
+  if constexpr (Format == DepthFormat::D32Sfloat) {
+    return compareLanes<Op>(reinterpret_cast<Floats>(incoming), reinterpret_cast<Floats>(stored));
+  } else {
+    return compareLanes<Op>(incoming, stored);
+  }
+}
+
 // unorm8FromFloat per lane: clamp to [0, 1] (NaN to 0), times 255, round half to even.
+// SSE max(v, 0) then min(., 1) is the scalar clamp exactly (maxps returns its second operand for
+// a NaN, and +0 for -0); cvtps2dq rounds as the scalar path's add and subtract of 2^23 do, in the
+// current rounding mode (half to even by default), to an integer in [0, 255].
 [[SOFTRASTER_FAST_TARGET]] inline Words unorm8FromFloat(Floats v) {
-  const Floats one = broadcast(1.0f), zero = broadcast(0.0f);
-  const Floats clamped = v > zero ? (v < one ? v : one) : zero;
-  const Floats rounded = (clamped * broadcast(255.0f) + broadcast(8388608.0f)) - broadcast(8388608.0f);
-  // An exact integer in [0, 255]: the signed conversion (one cvttps2dq) gives it; AVX2 has no
-  // unsigned one, which would cost a compare, a subtraction and a blend per channel.
-  return reinterpret_cast<Words>(__builtin_convertvector(rounded, Mask));
+  const __m256 clamped = _mm256_min_ps(_mm256_max_ps(reinterpret_cast<__m256>(v), _mm256_setzero_ps()),
+                                       _mm256_set1_ps(1.0f));
+  return reinterpret_cast<Words>(_mm256_cvtps_epi32(_mm256_mul_ps(clamped, _mm256_set1_ps(255.0f))));
 }
 
 [[SOFTRASTER_FAST_TARGET]] inline Words packColour(const Vec4T<FloatBatch>& c) {
@@ -292,6 +314,36 @@ struct BlendInputs {
   __m128i row1 = _mm_setzero_si128();
   if (bits >> 4) row1 = _mm_maskload_epi32(reinterpret_cast<const int*>(first + stride), _mm256_extracti128_si256(mask, 1));
   return reinterpret_cast<Words>(_mm256_set_m128i(row1, row0));
+}
+
+// The same for a block wholly inside the image (all eight lanes): plain loads and stores.
+[[SOFTRASTER_FAST_TARGET]] inline Words loadFullBlock(const std::uint32_t* first, std::size_t stride) {
+  const __m128i row0 = _mm_loadu_si128(reinterpret_cast<const __m128i*>(first));
+  const __m128i row1 = _mm_loadu_si128(reinterpret_cast<const __m128i*>(first + stride));
+  return reinterpret_cast<Words>(_mm256_set_m128i(row1, row0));
+}
+
+[[SOFTRASTER_FAST_TARGET]] inline void storeFullBlock(std::uint32_t* first, std::size_t stride, Words values) {
+  const __m256i v = reinterpret_cast<__m256i>(values);
+  _mm_storeu_si128(reinterpret_cast<__m128i*>(first), _mm256_castsi256_si128(v));
+  _mm_storeu_si128(reinterpret_cast<__m128i*>(first + stride), _mm256_extracti128_si256(v, 1));
+}
+
+// Eight consecutive 32-bit values (the four samples of two adjacent pixels, with 4x MSAA); only
+// the lanes in `bits` are read or written (all eight: plain loads and stores).
+[[SOFTRASTER_FAST_TARGET]] inline Words loadWords(const std::uint32_t* first, unsigned bits = 0xffu) {
+  if (bits == 0xffu) return reinterpret_cast<Words>(_mm256_loadu_si256(reinterpret_cast<const __m256i*>(first)));
+  return reinterpret_cast<Words>(
+      _mm256_maskload_epi32(reinterpret_cast<const int*>(first), reinterpret_cast<__m256i>(laneMask(bits))));
+}
+
+[[SOFTRASTER_FAST_TARGET]] inline void storeWords(std::uint32_t* first, unsigned bits, Words values) {
+  if (bits == 0xffu) {
+    _mm256_storeu_si256(reinterpret_cast<__m256i*>(first), reinterpret_cast<__m256i>(values));
+  } else {
+    _mm256_maskstore_epi32(reinterpret_cast<int*>(first), reinterpret_cast<__m256i>(laneMask(bits)),
+                           reinterpret_cast<__m256i>(values));
+  }
 }
 
 [[SOFTRASTER_FAST_TARGET]] inline void storeBlock(std::uint32_t* first, std::size_t stride, unsigned bits, Words values) {

@@ -1,8 +1,13 @@
 // The fast path's fragment stage: the same contract as the scalar FragmentStage
 // (fragment/shade.hpp), with filled single-sample triangles walked and shaded in 4x2 blocks of
 // SIMD lanes (fast/batch.hpp) and the shader's fragment function run over FloatBatch:
-//   - the triangle's bounding box (clipped to the draw region) is walked block by block, each
-//     block's coverage from the 64-bit edge functions at its eight pixel centres;
+//   - the triangle's bounding box (clipped to the draw region) is walked block by block; where no
+//     edge value can wrap around 64 bits, each row of blocks is first cut exactly (integer
+//     division) into the blocks wholly outside an edge (skipped) and those wholly inside all
+//     three (every lane covered, no per-lane test); other blocks take their coverage from the
+//     64-bit edge functions at their eight pixel centres;
+//   - the depth state (test, compare op, write) picks the block loop's instantiation once per
+//     triangle; a block wholly inside the box reads and writes with plain loads and stores;
 //   - depth per lane at the integer pixel coordinates (no incremental stepping: the plane is
 //     evaluated per pixel exactly as the scalar path does), the depth test before shading;
 //   - varyings with the real 1/w division, the shader on the batch, UNORM8 conversion, blending
@@ -10,9 +15,12 @@
 //     masked stores of the lanes that are covered and pass the depth test.
 // Pixels of one triangle are independent, and triangles are drawn one after another, so the
 // result is the scalar path's, bit for bit (tests/softraster/fast_path_test.cpp checks it).
-// Lines, points and 4x MSAA go to the scalar stage it holds.
+// 4x MSAA triangles take the same blocks with coverage, depth and the writes per sample (each
+// pair of adjacent pixels' eight samples one vector, as they lie in memory) and the shader once
+// per pixel at its centre, as the scalar shadeSamples does. Lines and points go to the scalar
+// stage it holds.
 // Threads are the band queue's (fast/bands.hpp), which gives each thread a stage of its own.
-// Deliberately absent: a per-tile depth range, whole-block accept/reject, AVX-512.
+// Deliberately absent: a per-tile depth range, AVX-512.
 #pragma once
 
 #include <softraster/detail/fast/batch.hpp>
@@ -27,7 +35,9 @@
 #include <algorithm>
 #include <array>
 #include <cstddef>
+#include <cmath>
 #include <cstdint>
+#include <utility>
 
 #pragma GCC diagnostic push
 #pragma GCC diagnostic ignored "-Wpsabi"
@@ -61,7 +71,7 @@ class FastFragmentStage {
   }
 
   void shadeSamples(const EdgeFunction (&edges)[3], const PixelRect& bounds, const TriangleInterpolants<N>& t) const {
-    scalar_.shadeSamples(edges, bounds, t);
+    shadeSampledTriangle(edges, bounds, t);
   }
 
  private:
@@ -75,68 +85,367 @@ class FastFragmentStage {
     std::array<BatchPlane, (N == 0 ? 1 : N)> varyings;
   };
 
-  [[SOFTRASTER_FAST_TARGET]] void shadeTriangle(const EdgeFunction (&edges)[3], const PixelRect& bounds,
-                                                const TriangleInterpolants<N>& t) const {
-    const PixelRect box = intersect(bounds, target_.region);
-    if (box.empty()) return;
-    const BlockEdges blocks = blockEdges(edges);
+  static constexpr bool kAnyPerspective = [] {
+    for (const Interpolation i : kInterpolation) {
+      if (i == Interpolation::Perspective) return true;
+    }
+    return false;
+  }();
+
+  [[SOFTRASTER_FAST_TARGET]] static BlockPlanes blockPlanes(const TriangleInterpolants<N>& t) {
     BlockPlanes planes;
     planes.depth = batchPlane(t.depth);
     planes.depthOffset = broadcast(t.depthOffset);
     planes.oneOverW = batchPlane(t.oneOverW);
     for (int i = 0; i < N; ++i) planes.varyings[static_cast<std::size_t>(i)] = batchPlane(t.varyings[static_cast<std::size_t>(i)]);
-    std::int64_t rowStart[3];
-    for (int i = 0; i < 3; ++i) rowStart[i] = edges[i].c + edges[i].dcdy * box.y0 - edges[i].dcdx * box.x0;
+    return planes;
+  }
+
+  // Whether a block's corners may decide it: no edge value c + dcdy * y - dcdx * x over the box
+  // and one block past it can wrap around 64 bits (sample offsets stay inside that block).
+  static bool cornersDecide(const EdgeFunction (&edges)[3], const PixelRect& box) {
+    bool decide = true;
+    for (int i = 0; i < 3; ++i) {
+      const double reach = std::fabs(static_cast<double>(edges[i].c)) +
+                           std::fabs(static_cast<double>(edges[i].dcdy)) * (box.y1 + kBatchHeight) +
+                           std::fabs(static_cast<double>(edges[i].dcdx)) * (box.x1 + kBatchWidth);
+      decide &= reach < 0x1p61;
+    }
+    return decide;
+  }
+
+  [[SOFTRASTER_FAST_TARGET]] void shadeTriangle(const EdgeFunction (&edges)[3], const PixelRect& bounds,
+                                                const TriangleInterpolants<N>& t) const {
+    const PixelRect box = intersect(bounds, target_.region);
+    if (box.empty()) return;
+    const BlockPlanes planes = blockPlanes(t);
+    // The depth state picks the block loop's instantiation once per triangle, not per block.
+    if (!target_.depth.testEnable) return walk<CompareOp::Always, false, false>(edges, box, planes);
+    if (target_.depth.writeEnable) return walkTested<true>(edges, box, planes);
+    return walkTested<false>(edges, box, planes);
+  }
+
+  template <bool Write>
+  [[SOFTRASTER_FAST_TARGET]] void walkTested(const EdgeFunction (&edges)[3], const PixelRect& box,
+                                             const BlockPlanes& planes) const {
+    switch (target_.depth.compareOp) {
+      case CompareOp::Never: return;  // no fragment passes: nothing is written
+      case CompareOp::Less: return walk<CompareOp::Less, true, Write>(edges, box, planes);
+      case CompareOp::Equal: return walk<CompareOp::Equal, true, Write>(edges, box, planes);
+      case CompareOp::LessOrEqual: return walk<CompareOp::LessOrEqual, true, Write>(edges, box, planes);
+      case CompareOp::Greater: return walk<CompareOp::Greater, true, Write>(edges, box, planes);
+      case CompareOp::NotEqual: return walk<CompareOp::NotEqual, true, Write>(edges, box, planes);
+      case CompareOp::GreaterOrEqual: return walk<CompareOp::GreaterOrEqual, true, Write>(edges, box, planes);
+      case CompareOp::Always: return walk<CompareOp::Always, true, Write>(edges, box, planes);
+    }
+  }
+
+  static constexpr std::int64_t kCutBlocks = 4;  // rows of more blocks than this are cut by division
+
+  // The k with a - k * step > 0, intersected into [first, last] (integers: exact).
+  static void positiveRun(std::int64_t a, std::int64_t step, std::int64_t& first, std::int64_t& last) {
+    if (step == 0) {
+      if (a <= 0) last = -1;
+    } else if (step > 0) {
+      last = std::min(last, a > 0 ? (a - 1) / step : std::int64_t{-1});
+    } else {
+      first = std::max(first, a > 0 ? std::int64_t{0} : -a / -step + 1);
+    }
+  }
+
+  // The bounding box block by block, calling block(px, py, inBox, inside, value) for each block
+  // not wholly outside an edge: inBox its lanes inside the box, inside whether every lane (and
+  // sample) is inside all three edges, value the edge values at lane 0. lowest and highest: the
+  // least and greatest offset from lane 0 of any lane (or sample) of a block, per edge.
+  // Where no edge value can wrap around 64 bits (cornersDecide), each row of more than
+  // kCutBlocks blocks is cut exactly, by integer division, into the run of blocks not wholly
+  // outside any edge and, inside it, the run wholly inside all three; a narrower row decides
+  // each block at its corners; elsewhere every block is visited and its lanes tested.
+  template <class Block>
+  [[SOFTRASTER_FAST_TARGET]] static void walkBlocks(const EdgeFunction (&edges)[3], const PixelRect& box,
+                                                    const std::int64_t (&lowest)[3], const std::int64_t (&highest)[3],
+                                                    Block&& block) {
+    std::int64_t rowStart[3], stepX[3];
+    for (int i = 0; i < 3; ++i) {
+      rowStart[i] = edges[i].c + edges[i].dcdy * box.y0 - edges[i].dcdx * box.x0;
+      stepX[i] = kBatchWidth * edges[i].dcdx;
+    }
+    const bool corners = cornersDecide(edges, box);
+    const std::int64_t blocks = (box.x1 - box.x0) / kBatchWidth + 1;
+    // Six divisions per row pay off over a wide row; a narrow one tests each block's corners.
+    const bool cut = corners && blocks > kCutBlocks;
     for (int py = box.y0; py <= box.y1; py += kBatchHeight) {
       const unsigned rows = py + 1 <= box.y1 ? 0xffu : 0x0fu;
-      std::int64_t value[3] = {rowStart[0], rowStart[1], rowStart[2]};
-      for (int px = box.x0; px <= box.x1; px += kBatchWidth) {
+      std::int64_t first = 0, last = blocks - 1, innerFirst = 1, innerLast = 0;
+      if (cut) {
+        innerFirst = 0, innerLast = blocks - 1;
+        for (int i = 0; i < 3; ++i) {
+          positiveRun(rowStart[i] + highest[i], stepX[i], first, last);
+          positiveRun(rowStart[i] + lowest[i], stepX[i], innerFirst, innerLast);
+        }
+      }
+      std::int64_t value[3];
+      for (int i = 0; i < 3; ++i) value[i] = rowStart[i] - first * stepX[i];
+      for (std::int64_t k = first; k <= last; ++k, value[0] -= stepX[0], value[1] -= stepX[1], value[2] -= stepX[2]) {
+        const int px = box.x0 + static_cast<int>(k) * kBatchWidth;
         const int columns = std::min(kBatchWidth, box.x1 - px + 1);
         const unsigned inBox = rows & (((1u << columns) - 1u) * 0x11u);
-        const unsigned covered = insideBits(blocks, value) & inBox;
-        if (covered != 0) shadeBlock(px, py, covered, planes);
-        for (int i = 0; i < 3; ++i) value[i] -= kBatchWidth * edges[i].dcdx;
+        bool inside = k >= innerFirst && k <= innerLast;
+        if (corners && !cut) {
+          if (value[0] + highest[0] <= 0 || value[1] + highest[1] <= 0 || value[2] + highest[2] <= 0) continue;
+          inside = value[0] + lowest[0] > 0 && value[1] + lowest[1] > 0 && value[2] + lowest[2] > 0;
+        }
+        block(px, py, inBox, inside, value);
       }
       for (int i = 0; i < 3; ++i) rowStart[i] += kBatchHeight * edges[i].dcdy;
     }
   }
 
-  // Depth test, shading and writes of the lanes `covered` of the block whose lane 0 is (px, py).
-  [[SOFTRASTER_FAST_TARGET]] void shadeBlock(int px, int py, unsigned covered, const BlockPlanes& t) const {
+  template <CompareOp Op, bool Test, bool Write>
+  [[SOFTRASTER_FAST_TARGET, gnu::flatten, gnu::noinline]] void walk(const EdgeFunction (&edges)[3], const PixelRect& box,
+                                                                   const BlockPlanes& planes) const {
+    const BlockEdges lanes = blockEdges(edges);
+    std::int64_t lowest[3], highest[3];  // of a block's lane offsets, -dcdx * column + dcdy * row
+    for (int i = 0; i < 3; ++i) {
+      const std::int64_t dx = edges[i].dcdx, dy = edges[i].dcdy;
+      lowest[i] = std::min<std::int64_t>(0, -(kBatchWidth - 1) * dx) + std::min<std::int64_t>(0, dy);
+      highest[i] = std::max<std::int64_t>(0, -(kBatchWidth - 1) * dx) + std::max<std::int64_t>(0, dy);
+    }
+    walkBlocks(edges, box, lowest, highest,
+               [&](int px, int py, unsigned inBox, bool inside, const std::int64_t (&value)[3]) {
+                 const unsigned covered = inside ? inBox : insideBits(lanes, value) & inBox;
+                 if (covered != 0) shadeBlock<Op, Test, Write>(px, py, covered, inBox == 0xffu, planes);
+               });
+  }
+
+  // Varying I of a block, as interpolateVaryings<true> computes it per pixel.
+  template <std::size_t I>
+  [[SOFTRASTER_FAST_TARGET]] static FloatBatch varyingOf(const BlockPlanes& t, Floats fx, Floats fy, Floats w) {
+    const BatchPlane& p = t.varyings[I];
+    if constexpr (kInterpolation[I] == Interpolation::Perspective) {
+      return FloatBatch(evaluatePlane(p, fx, fy) * w);
+    } else if constexpr (kInterpolation[I] == Interpolation::NoPerspective) {
+      return FloatBatch(evaluatePlane(p, fx, fy));
+    } else {
+      return FloatBatch(p.a0);  // a0 of a flat plane: the value
+    }
+  }
+
+  template <std::size_t... I>
+  [[SOFTRASTER_FAST_TARGET]] static void interpolateBlock(std::index_sequence<I...>, const BlockPlanes& t, Floats fx,
+                                                          Floats fy, FloatBatch* out) {
+    Floats w{};
+    if constexpr (kAnyPerspective) w = broadcast(1.0f) / evaluatePlane(t.oneOverW, fx, fy);
+    ((out[I] = varyingOf<I>(t, fx, fy, w)), ...);
+  }
+
+  // Depth test, shading and writes of the lanes `covered` of the block whose lane 0 is (px, py);
+  // `whole`: all eight lanes are inside the box (so inside the image), read and written plainly.
+  template <CompareOp Op, bool Test, bool Write>
+  [[SOFTRASTER_FAST_TARGET]] void shadeBlock(int px, int py, unsigned covered, bool whole, const BlockPlanes& t) const {
     const Floats fx = broadcast(static_cast<float>(px)) + kLaneX;
     const Floats fy = broadcast(static_cast<float>(py)) + kLaneY;
     const std::size_t first = static_cast<std::size_t>(py) * target_.width + static_cast<std::size_t>(px);
-    Words stored{};
-    if (target_.depth.testEnable) {
-      const Words current = loadBlock(target_.depthStorage + first, target_.width, covered);
-      Mask passes;
+    Words stored{}, current{};
+    Mask passes = ~Mask{};
+    if constexpr (Test) {
+      if constexpr (Op != CompareOp::Always || Write) {
+        current = whole ? loadFullBlock(target_.depthStorage + first, target_.width)
+                        : loadBlock(target_.depthStorage + first, target_.width, covered);
+      }
       if (target_.inverseZ) {  // the course's 1/z buffer: larger is nearer, so compare the other way round
         stored = reinterpret_cast<Words>(evaluatePlane(t.oneOverW, fx, fy));
-        passes = depthTestPasses<Format>(target_.depth.compareOp, current, stored);
+        passes = depthTestPasses<Format, Op>(current, stored);
       } else {
         const Floats z = evaluatePlane(t.depth, fx, fy) + t.depthOffset;
         stored = depthToStorage<Format>(clampDepth(z, target_.depthRange));
-        passes = depthTestPasses<Format>(target_.depth.compareOp, stored, current);
+        passes = depthTestPasses<Format, Op>(stored, current);
       }
-      covered &= maskBits(passes);
-      if (covered == 0) return;
+      if constexpr (Op != CompareOp::Always) {
+        covered &= maskBits(passes);
+        if (covered == 0) return;
+      }
     }
     std::array<FloatBatch, (N == 0 ? 1 : N)> varyings{};
-    if constexpr (N > 0) {
-      const Floats w = broadcast(1.0f) / evaluatePlane(t.oneOverW, fx, fy);
-      for (int i = 0; i < N; ++i) {
-        const BatchPlane& p = t.varyings[static_cast<std::size_t>(i)];
-        switch (kInterpolation[static_cast<std::size_t>(i)]) {
-          case Interpolation::Perspective: varyings[i] = FloatBatch(evaluatePlane(p, fx, fy) * w); break;
-          case Interpolation::NoPerspective: varyings[i] = FloatBatch(evaluatePlane(p, fx, fy)); break;
-          case Interpolation::Flat: varyings[i] = FloatBatch(p.a0); break;  // a0 of a flat plane: the value
+    if constexpr (N > 0) interpolateBlock(std::make_index_sequence<N>{}, t, fx, fy, varyings.data());
+    Words colour = packColour(Shader::template fragment<FloatBatch>(uniforms_, varyings.data()));
+    if (target_.blend.readsDestination) colour = blendColour(colour, loadBlock(colour_ + first, target_.width, covered), target_.blend);
+    if (covered == 0xffu) {
+      storeFullBlock(colour_ + first, target_.width, colour);
+    } else {
+      storeBlock(colour_ + first, target_.width, covered, colour);
+    }
+    if constexpr (Write) {
+      if (whole) {  // lanes that fail keep the value just read: one plain store
+        const Words written = reinterpret_cast<Words>(laneMask(covered));
+        storeFullBlock(target_.depthStorage + first, target_.width, (stored & written) | (current & ~written));
+      } else {
+        storeBlock(target_.depthStorage + first, target_.width, covered, stored);
+      }
+    }
+  }
+
+  // 4x MSAA. A block is the same 4x2 pixels, seen two ways: the shader's lanes (one per pixel,
+  // shaded once at the pixel centre) and four "pairs" of samples as they lie in memory (two
+  // adjacent pixels of a row, four samples each: 8 consecutive words), pair = 2 * row + k for
+  // pixels 2k and 2k+1. Coverage, depth and the writes work on pairs; each plane is evaluated
+  // per sample at (px + sx, py + sy) as the scalar path does.
+  struct SampleEdges {
+    __m256i offset[3][4][2];  // edge, pair, half (pixel 2k or 2k+1): -dcdx * column + dcdy * row + sample offset
+    std::int64_t lowest[3], highest[3];  // of all 32 offsets of an edge
+  };
+
+  [[SOFTRASTER_FAST_TARGET]] static SampleEdges sampleEdges(const EdgeFunction (&edges)[3]) {
+    SampleEdges e;
+    for (int i = 0; i < 3; ++i) {
+      std::int64_t sampleOffset[4];
+      for (int s = 0; s < 4; ++s) {
+        sampleOffset[s] = (kFixedSamplePositions4x[s][1] * edges[i].dcdy - kFixedSamplePositions4x[s][0] * edges[i].dcdx) >>
+                          kSubpixelBits;
+      }
+      e.lowest[i] = INT64_MAX;
+      e.highest[i] = INT64_MIN;
+      for (int pair = 0; pair < 4; ++pair) {
+        for (int half = 0; half < 2; ++half) {
+          const int column = 2 * (pair & 1) + half, row = pair >> 1;
+          std::int64_t lane[4];
+          for (int s = 0; s < 4; ++s) {
+            lane[s] = -edges[i].dcdx * column + edges[i].dcdy * row + sampleOffset[s];
+            e.lowest[i] = std::min(e.lowest[i], lane[s]);
+            e.highest[i] = std::max(e.highest[i], lane[s]);
+          }
+          e.offset[i][pair][half] = _mm256_set_epi64x(lane[3], lane[2], lane[1], lane[0]);
         }
       }
     }
-    Words colour = packColour(Shader::template fragment<FloatBatch>(uniforms_, varyings.data()));
-    if (target_.blend.readsDestination) colour = blendColour(colour, loadBlock(colour_ + first, target_.width, covered), target_.blend);
-    storeBlock(colour_ + first, target_.width, covered, colour);
-    if (target_.depth.testEnable && target_.depth.writeEnable) storeBlock(target_.depthStorage + first, target_.width, covered, stored);
+    return e;
+  }
+
+  // Bit 8 * pair + 4 * half + s: sample s of the pair's pixel `half` strictly inside all three edges.
+  [[SOFTRASTER_FAST_TARGET]] static std::uint32_t sampleInsideBits(const SampleEdges& e, const std::int64_t (&first)[3]) {
+    const __m256i zero = _mm256_setzero_si256();
+    std::uint32_t bits = 0;
+    for (int pair = 0; pair < 4; ++pair) {
+      for (int half = 0; half < 2; ++half) {
+        __m256i inside = _mm256_set1_epi64x(-1);
+        for (int i = 0; i < 3; ++i) {
+          const __m256i value = _mm256_add_epi64(_mm256_set1_epi64x(first[i]), e.offset[i][pair][half]);
+          inside = _mm256_and_si256(inside, _mm256_cmpgt_epi64(value, zero));
+        }
+        bits |= static_cast<std::uint32_t>(_mm256_movemask_pd(_mm256_castsi256_pd(inside))) << (8 * pair + 4 * half);
+      }
+    }
+    return bits;
+  }
+
+  // Nibble l of the result: all four samples of lane l where bit l of `pixels` is set.
+  static constexpr std::array<std::uint32_t, 256> kSpreadToSamples = [] {
+    std::array<std::uint32_t, 256> table{};
+    for (unsigned b = 0; b < 256; ++b) {
+      for (unsigned l = 0; l < 8; ++l) table[b] |= ((b >> l) & 1u) * (0xfu << (4 * l));
+    }
+    return table;
+  }();
+
+  [[SOFTRASTER_FAST_TARGET]] void shadeSampledTriangle(const EdgeFunction (&edges)[3], const PixelRect& bounds,
+                                                       const TriangleInterpolants<N>& t) const {
+    const PixelRect box = intersect(bounds, target_.region);
+    if (box.empty()) return;
+    const BlockPlanes planes = blockPlanes(t);
+    if (!target_.depth.testEnable) return walkSamples<CompareOp::Always, false, false>(edges, box, planes);
+    if (target_.depth.writeEnable) return walkSamplesTested<true>(edges, box, planes);
+    return walkSamplesTested<false>(edges, box, planes);
+  }
+
+  template <bool Write>
+  [[SOFTRASTER_FAST_TARGET]] void walkSamplesTested(const EdgeFunction (&edges)[3], const PixelRect& box,
+                                                    const BlockPlanes& planes) const {
+    switch (target_.depth.compareOp) {
+      case CompareOp::Never: return;  // no sample passes: nothing is written
+      case CompareOp::Less: return walkSamples<CompareOp::Less, true, Write>(edges, box, planes);
+      case CompareOp::Equal: return walkSamples<CompareOp::Equal, true, Write>(edges, box, planes);
+      case CompareOp::LessOrEqual: return walkSamples<CompareOp::LessOrEqual, true, Write>(edges, box, planes);
+      case CompareOp::Greater: return walkSamples<CompareOp::Greater, true, Write>(edges, box, planes);
+      case CompareOp::NotEqual: return walkSamples<CompareOp::NotEqual, true, Write>(edges, box, planes);
+      case CompareOp::GreaterOrEqual: return walkSamples<CompareOp::GreaterOrEqual, true, Write>(edges, box, planes);
+      case CompareOp::Always: return walkSamples<CompareOp::Always, true, Write>(edges, box, planes);
+    }
+  }
+
+  // The bounding box block by block, as walk() does, with the coverage of every sample.
+  template <CompareOp Op, bool Test, bool Write>
+  [[SOFTRASTER_FAST_TARGET, gnu::flatten, gnu::noinline]] void walkSamples(const EdgeFunction (&edges)[3],
+                                                                          const PixelRect& box,
+                                                                          const BlockPlanes& planes) const {
+    const SampleEdges samples = sampleEdges(edges);
+    walkBlocks(edges, box, samples.lowest, samples.highest,
+               [&](int px, int py, unsigned inBox, bool inside, const std::int64_t (&value)[3]) {
+                 const std::uint32_t inBoxSamples = kSpreadToSamples[inBox];
+                 const std::uint32_t covered = inside ? inBoxSamples : sampleInsideBits(samples, value) & inBoxSamples;
+                 if (covered != 0) shadeSampleBlock<Op, Test, Write>(px, py, covered, inBox == 0xffu, planes);
+               });
+  }
+
+  // Depth test per sample, shading once per pixel and the writes of the samples `covered` (bit
+  // 4 * lane + s) of the block whose lane 0 is (px, py), as the scalar shadeSamples does them.
+  template <CompareOp Op, bool Test, bool Write>
+  [[SOFTRASTER_FAST_TARGET]] void shadeSampleBlock(int px, int py, std::uint32_t covered, bool whole,
+                                                   const BlockPlanes& t) const {
+    static constexpr Floats kSampleX = {kSamplePositions4x[0][0], kSamplePositions4x[1][0], kSamplePositions4x[2][0],
+                                        kSamplePositions4x[3][0], kSamplePositions4x[0][0], kSamplePositions4x[1][0],
+                                        kSamplePositions4x[2][0], kSamplePositions4x[3][0]};
+    static constexpr Floats kSampleY = {kSamplePositions4x[0][1], kSamplePositions4x[1][1], kSamplePositions4x[2][1],
+                                        kSamplePositions4x[3][1], kSamplePositions4x[0][1], kSamplePositions4x[1][1],
+                                        kSamplePositions4x[2][1], kSamplePositions4x[3][1]};
+    static constexpr Floats kHalfX = {0, 0, 0, 0, 1, 1, 1, 1};  // the pair's pixel of each lane
+    const std::size_t width = target_.width;
+    const std::size_t firstPixel = static_cast<std::size_t>(py) * width + static_cast<std::size_t>(px);
+    const Floats x0 = broadcast(static_cast<float>(px)), y0 = broadcast(static_cast<float>(py));
+    std::uint32_t passed = covered;
+    Words stored[4]{}, current[4]{};
+    if constexpr (Test) {
+      passed = 0;
+      for (int pair = 0; pair < 4; ++pair) {
+        const unsigned bits = (covered >> (8 * pair)) & 0xffu;
+        if (bits == 0) continue;
+        const int row = pair >> 1, column = 2 * (pair & 1);
+        const std::uint32_t* depth = target_.depthStorage + 4 * (firstPixel + static_cast<std::size_t>(row) * width + column);
+        if constexpr (Op != CompareOp::Always || Write) current[pair] = whole ? loadWords(depth) : loadWords(depth, bits);
+        // The sample's position as the scalar path forms it: float(pixel) + sample offset.
+        const Floats fx = (x0 + broadcast(static_cast<float>(column)) + kHalfX) + kSampleX;
+        const Floats fy = (y0 + broadcast(static_cast<float>(row))) + kSampleY;
+        const Floats z = evaluatePlane(t.depth, fx, fy) + t.depthOffset;
+        stored[pair] = depthToStorage<Format>(clampDepth(z, target_.depthRange));
+        passed |= (bits & maskBits(depthTestPasses<Format, Op>(stored[pair], current[pair]))) << (8 * pair);
+      }
+      if (passed == 0) return;
+    }
+    // Shaded once per pixel, at its centre.
+    const Floats fx = (x0 + kLaneX) + broadcast(0.5f);
+    const Floats fy = (y0 + kLaneY) + broadcast(0.5f);
+    std::array<FloatBatch, (N == 0 ? 1 : N)> varyings{};
+    if constexpr (N > 0) interpolateBlock(std::make_index_sequence<N>{}, t, fx, fy, varyings.data());
+    const __m256i colour =
+        reinterpret_cast<__m256i>(packColour(Shader::template fragment<FloatBatch>(uniforms_, varyings.data())));
+    for (int pair = 0; pair < 4; ++pair) {
+      const unsigned bits = (passed >> (8 * pair)) & 0xffu;
+      if (bits == 0) continue;
+      const int row = pair >> 1, column = 2 * (pair & 1);
+      const std::size_t first = 4 * (firstPixel + static_cast<std::size_t>(row) * width + column);
+      const int lane = 4 * row + column;  // the shader's lane of the pair's first pixel
+      Words c = reinterpret_cast<Words>(
+          _mm256_permutevar8x32_epi32(colour, _mm256_setr_epi32(lane, lane, lane, lane, lane + 1, lane + 1, lane + 1, lane + 1)));
+      if (target_.blend.readsDestination) c = blendColour(c, loadWords(colour_ + first, bits), target_.blend);
+      storeWords(colour_ + first, bits, c);
+      if constexpr (Write) {
+        if (whole) {  // samples that fail keep the value just read: one plain store
+          const Words written = reinterpret_cast<Words>(laneMask(bits));
+          storeWords(target_.depthStorage + first, 0xffu, (stored[pair] & written) | (current[pair] & ~written));
+        } else {
+          storeWords(target_.depthStorage + first, bits, stored[pair]);
+        }
+      }
+    }
   }
 
   FragmentStage<Shader, true, Format> scalar_;

@@ -31,23 +31,32 @@ inline bool isLineTopology(Topology t) { return t == Topology::LineList || t == 
 
 using LineIndices = std::array<std::uint32_t, 2>;
 
-inline std::vector<LineIndices> assembleLines(Topology topology, std::span<const std::uint32_t> indices) {
-  std::vector<LineIndices> lines;
+// The lines of a draw into `lines` (emptied first; its capacity is reused).
+inline void assembleLines(Topology topology, std::span<const std::uint32_t> indices, std::vector<LineIndices>& lines) {
+  lines.clear();
   if (topology == Topology::LineList) {
     for (std::size_t k = 0; k + 1 < indices.size(); k += 2) lines.push_back({indices[k], indices[k + 1]});
   } else if (topology == Topology::LineStrip) {
     for (std::size_t k = 0; k + 1 < indices.size(); ++k) lines.push_back({indices[k], indices[k + 1]});
   }
+}
+
+inline std::vector<LineIndices> assembleLines(Topology topology, std::span<const std::uint32_t> indices) {
+  std::vector<LineIndices> lines;
+  assembleLines(topology, indices, lines);
   return lines;
 }
 
 inline std::size_t trianglesPerBatch(Topology t) { return t == Topology::TriangleList ? 341 : 1022; }
 
-// The triangles of a draw, as vertex numbers: `indices` (indexed draw) or 0..count-1.
-inline std::vector<TriangleIndices> assembleTriangles(Topology topology, std::span<const std::uint32_t> indices) {
-  std::vector<TriangleIndices> triangles;
+// The triangles of a draw, as vertex numbers (`indices`: an indexed draw's, or 0..count-1), into
+// `triangles` (emptied first; its capacity is reused).
+inline void assembleTriangles(Topology topology, std::span<const std::uint32_t> indices,
+                              std::vector<TriangleIndices>& triangles) {
+  triangles.clear();
   const std::size_t n = indices.size();
-  if (n < 3) return triangles;
+  if (n < 3) return;
+  triangles.reserve(topology == Topology::TriangleList ? n / 3 : n - 2);
   switch (topology) {
     case Topology::TriangleList:
       for (std::size_t k = 0; k + 2 < n; k += 3) triangles.push_back({indices[k], indices[k + 1], indices[k + 2]});
@@ -67,6 +76,11 @@ inline std::vector<TriangleIndices> assembleTriangles(Topology topology, std::sp
     default:
       break;
   }
+}
+
+inline std::vector<TriangleIndices> assembleTriangles(Topology topology, std::span<const std::uint32_t> indices) {
+  std::vector<TriangleIndices> triangles;
+  assembleTriangles(topology, indices, triangles);
   return triangles;
 }
 
