@@ -9,7 +9,6 @@
 //   reflect(i, n)     i - n * (dot(i, n) * 2)
 //   maxConstant(x, c) max(x, c) with c a constant: SSE maxps(x, c) (a NaN x gives c)
 //   pow(x, y)         exp2(log2_safe(x) * y), 0 where x == 0 or x is NaN; gallivm's polynomials
-// Every one runs on a whole batch with the batch's own instructions (no lane loop).
 // The polynomials use fmuladd as gallivm does on a CPU with FMA (every x86-64 CPU this project
 // targets has it); a lavapipe on a CPU without FMA rounds them differently.
 // Deliberately absent: denormal flushing (lavapipe's shaders run with DAZ/FTZ; the lit scenes
@@ -55,66 +54,31 @@ Vec3T<F> operator/(const Vec3T<F>& a, const F& s) {
   return {a.x / s, a.y / s, a.z / s};
 }
 
-// ---- The batch primitives a SIMD twin needs beyond + - * / and compares ----
-// sqrt, fused multiply-add and floor of a FloatBatch, one instruction each: AVX's vsqrtps,
-// FMA's vfmadd and SSE4.1/AVX's vroundps, the same IEEE operations as sqrtss, vfmadd..ss and
-// roundss (so each lane rounds as the float version does). Written as inline assembly because
-// generic vector code has no such operations and an intrinsic would bind the instruction set at
-// this header, not at the fast path that inlines it; a FloatBatch is only ever evaluated on that
-// path, which runs only on CPUs with AVX2 and FMA. Elsewhere (not x86-64) a lane loop.
+// ---- Lane-wise application of a float function to a batch ----
 
 namespace detail {
-
-using Native = softraster::FloatBatch::Native;
-using Words = std::uint32_t __attribute__((vector_size(32)));
-using Ints = softraster::FloatBatch::NativeMask;
-
 template <class Function>
-softraster::FloatBatch lanewise(softraster::FloatBatch a, softraster::FloatBatch b, softraster::FloatBatch c,
-                                Function f) {
-  alignas(32) float x[softraster::kBatchLanes], y[softraster::kBatchLanes], z[softraster::kBatchLanes];
+softraster::FloatBatch lanewise(softraster::FloatBatch a, Function f) {
+  alignas(32) float lanes[softraster::kBatchLanes];
+  a.store(lanes);
+  for (float& lane : lanes) lane = f(lane);
+  return softraster::FloatBatch::load(lanes);
+}
+template <class Function>
+softraster::FloatBatch lanewise(softraster::FloatBatch a, softraster::FloatBatch b, Function f) {
+  alignas(32) float x[softraster::kBatchLanes], y[softraster::kBatchLanes];
   a.store(x);
   b.store(y);
-  c.store(z);
-  for (int i = 0; i < softraster::kBatchLanes; ++i) x[i] = f(x[i], y[i], z[i]);
+  for (int i = 0; i < softraster::kBatchLanes; ++i) x[i] = f(x[i], y[i]);
   return softraster::FloatBatch::load(x);
 }
-
 }  // namespace detail
+
+// ---- sqrt: IEEE (llvm.sqrt) ----
 
 inline float sqrt(float x) { return std::sqrt(x); }
 inline softraster::FloatBatch sqrt(softraster::FloatBatch x) {
-#if defined(__x86_64__) && defined(__GNUC__)
-  detail::Native r;
-  asm("vsqrtps %1, %0" : "=x"(r) : "x"(x.native()));
-  return softraster::FloatBatch(r);
-#else
-  return detail::lanewise(x, x, x, [](float v, float, float) { return std::sqrt(v); });
-#endif
-}
-
-// a * b + c, rounded once (lp_build_mad on an FMA CPU).
-inline float fusedMultiplyAdd(float a, float b, float c) { return std::fma(a, b, c); }
-inline softraster::FloatBatch fusedMultiplyAdd(softraster::FloatBatch a, softraster::FloatBatch b,
-                                               softraster::FloatBatch c) {
-#if defined(__x86_64__) && defined(__GNUC__)
-  detail::Native r = a.native();
-  asm("vfmadd213ps %2, %1, %0" : "+x"(r) : "x"(b.native()), "x"(c.native()));  // r = b * r + c
-  return softraster::FloatBatch(r);
-#else
-  return detail::lanewise(a, b, c, [](float x, float y, float z) { return std::fma(x, y, z); });
-#endif
-}
-
-inline float floor(float x) { return std::floor(x); }
-inline softraster::FloatBatch floor(softraster::FloatBatch x) {
-#if defined(__x86_64__) && defined(__GNUC__)
-  detail::Native r;
-  asm("vroundps $9, %1, %0" : "=x"(r) : "x"(x.native()));  // round down, no precision exception
-  return softraster::FloatBatch(r);
-#else
-  return detail::lanewise(x, x, x, [](float v, float, float) { return std::floor(v); });
-#endif
+  return detail::lanewise(x, [](float v) { return std::sqrt(v); });
 }
 
 // ---- Geometric functions ----
@@ -148,30 +112,28 @@ F maxConstant(const F& x, float c) {
 }
 
 // ---- exp2, log2_safe and pow (lp_build_exp2, lp_build_log2_approx, lp_build_pow) ----
-// One source for both float types; where a step needs the float's bits, a pair of overloads
-// (asBits / fromBits and the integer steps) does it for float and for a batch.
 
 namespace detail {
 
 // lp_build_polynomial: x2 = x*x; even and odd coefficients each walked from the highest index
 // down, the first taken as it is, each later one fmuladd(x2, value, coeff); then
 // fmuladd(odd, x, even). Coefficients are rounded to float.
-template <class F, std::size_t N>
-F polynomial(const F& x, const double (&coefficients)[N]) {
-  const F x2 = x * x;
-  F even{}, odd{};
+template <std::size_t N>
+float polynomial(float x, const double (&coefficients)[N]) {
+  const float x2 = x * x;
+  float even = 0, odd = 0;
   bool haveEven = false, haveOdd = false;
   for (std::size_t i = N; i-- > 0;) {
-    const F c(static_cast<float>(coefficients[i]));
+    const auto c = static_cast<float>(coefficients[i]);
     if (i % 2 == 0) {
-      even = haveEven ? fusedMultiplyAdd(x2, even, c) : c;
+      even = haveEven ? std::fma(x2, even, c) : c;
       haveEven = true;
     } else {
-      odd = haveOdd ? fusedMultiplyAdd(x2, odd, c) : c;
+      odd = haveOdd ? std::fma(x2, odd, c) : c;
       haveOdd = true;
     }
   }
-  return haveOdd ? fusedMultiplyAdd(odd, x, even) : even;
+  return haveOdd ? std::fma(odd, x, even) : even;
 }
 
 // lp_build_exp2_polynomial, EXP_POLY_DEGREE 5: 2^x on [0, 1).
@@ -183,89 +145,45 @@ inline constexpr double kLog2Polynomial[] = {2.88539009343309178325, 0.961791550
                                              0.577440339438736392009, 0.403343858251329912514,
                                              0.406718052498846252698};
 
-// 2^whole as a float's bits: cvttps2dq (0x80000000 for NaN), + 127, << 23, wrapping as the JIT's
-// integer arithmetic does.
-inline float scaleOf(float whole) {
-  const std::int32_t i = (whole > -2147483904.0f && whole < 2147483648.0f) ? static_cast<std::int32_t>(whole)
-                                                                           : std::numeric_limits<std::int32_t>::min();
-  return std::bit_cast<float>((static_cast<std::uint32_t>(i) + 127u) << 23);
-}
-inline softraster::FloatBatch scaleOf(softraster::FloatBatch whole) {
-  Ints i;  // vcvttps2dq: the batch is clamped to [-127, 128] here, or NaN (0x80000000 either way)
-#if defined(__x86_64__) && defined(__GNUC__)
-  asm("vcvttps2dq %1, %0" : "=x"(i) : "x"(whole.native()));
-#else
-  for (int k = 0; k < softraster::kBatchLanes; ++k) {
-    const float w = whole[k];
-    i[k] = (w > -2147483904.0f && w < 2147483648.0f) ? static_cast<std::int32_t>(w)
-                                                     : std::numeric_limits<std::int32_t>::min();
-  }
-#endif
-  const Words bits = (reinterpret_cast<Words>(i) + 127u) << 23;
-  return softraster::FloatBatch(reinterpret_cast<Native>(bits));
+// cvttps2dq: truncation, 0x80000000 for NaN and out-of-range values.
+inline std::int32_t truncateToInt(float x) {
+  if (!(x > -2147483904.0f && x < 2147483648.0f)) return std::numeric_limits<std::int32_t>::min();
+  return static_cast<std::int32_t>(x);
 }
 
-// log2_safe's exponent and mantissa: float(((bits >> 23) & 255) - 127) and the float with bits
-// (bits & 0x7fffff) | 0x3f800000.
-inline void splitFloat(float x, float& exponent, float& mantissa) {
+}  // namespace detail
+
+inline float exp2(float x) {
+  x = softraster::sseMin(128.0f, x);         // lp_build_min_ext(128, x): a NaN x passes
+  x = softraster::sseMax(-126.99999f, x);    // lp_build_max_ext(-126.99999, x)
+  const float whole = std::floor(x);         // lp_build_ifloor_fract: floor, fraction, integer
+  const float fraction = x - whole;
+  const std::uint32_t exponent =
+      (static_cast<std::uint32_t>(detail::truncateToInt(whole)) + 127u) << 23;  // integer wrap as in the JIT
+  return std::bit_cast<float>(exponent) * detail::polynomial(fraction, detail::kExp2Polynomial);
+}
+
+inline float log2Safe(float x) {
   const auto bits = std::bit_cast<std::uint32_t>(x);
-  exponent = static_cast<float>(static_cast<std::int32_t>((bits & 0x7f800000u) >> 23) - 127);
-  mantissa = std::bit_cast<float>((bits & 0x007fffffu) | 0x3f800000u);
-}
-inline void splitFloat(softraster::FloatBatch x, softraster::FloatBatch& exponent, softraster::FloatBatch& mantissa) {
-  const Words bits = reinterpret_cast<Words>(x.native());
-  const Ints e = reinterpret_cast<Ints>((bits & 0x7f800000u) >> 23) - 127;
-  exponent = softraster::FloatBatch(__builtin_convertvector(e, Native));
-  mantissa = softraster::FloatBatch(reinterpret_cast<Native>((bits & 0x007fffffu) | 0x3f800000u));
-}
-
-// The selects at the end of log2_safe and pow.
-inline float log2Edges(float x, float result) {
+  const auto exponent = static_cast<float>(static_cast<std::int32_t>((bits & 0x7f800000u) >> 23) - 127);
+  const float mantissa = std::bit_cast<float>((bits & 0x007fffffu) | 0x3f800000u);
+  const float y = (mantissa - 1.0f) / (mantissa + 1.0f);
+  const float z = y * y;
+  float result = std::fma(y, detail::polynomial(z, detail::kLog2Polynomial), exponent);
   if (x >= std::numeric_limits<float>::infinity()) result = std::numeric_limits<float>::infinity();
   if (x == 0.0f) result = -std::numeric_limits<float>::infinity();
   if (x < 0.0f) result = std::bit_cast<float>(0x7fc00000u);
   return result;
 }
-inline softraster::FloatBatch log2Edges(softraster::FloatBatch x, softraster::FloatBatch result) {
-  const Native v = x.native();
-  Native r = result.native();
-  r = v >= std::numeric_limits<float>::infinity() ? Native{} + std::numeric_limits<float>::infinity() : r;
-  r = v == 0.0f ? Native{} - std::numeric_limits<float>::infinity() : r;
-  r = v < 0.0f ? Native{} + std::bit_cast<float>(0x7fc00000u) : r;
-  return softraster::FloatBatch(r);
-}
-// lp_build_cmp(EQUAL) is an unordered compare: a NaN x counts as 0 too.
-inline float zeroWhereXIsZero(float x, float result) { return (x == 0.0f || std::isnan(x)) ? 0.0f : result; }
-inline softraster::FloatBatch zeroWhereXIsZero(softraster::FloatBatch x, softraster::FloatBatch result) {
-  const Native v = x.native();
-  return softraster::FloatBatch((v == 0.0f) | (v != v) ? Native{} : result.native());
+
+inline float pow(float x, float y) {
+  const float result = exp2(log2Safe(x) * y);
+  // lp_build_cmp(EQUAL) is an unordered compare: a NaN x counts as 0 too.
+  return (x == 0.0f || std::isnan(x)) ? 0.0f : result;
 }
 
-}  // namespace detail
-
-template <class F>
-F exp2(F x) {
-  using softraster::sseMax;
-  using softraster::sseMin;
-  x = sseMin(F(128.0f), x);        // lp_build_min_ext(128, x): a NaN x passes
-  x = sseMax(F(-126.99999f), x);   // lp_build_max_ext(-126.99999, x)
-  const F whole = floor(x);        // lp_build_ifloor_fract: floor, fraction, integer
-  const F fraction = x - whole;
-  return detail::scaleOf(whole) * detail::polynomial(fraction, detail::kExp2Polynomial);
-}
-
-template <class F>
-F log2Safe(const F& x) {
-  F exponent, mantissa;
-  detail::splitFloat(x, exponent, mantissa);
-  const F y = (mantissa - F(1.0f)) / (mantissa + F(1.0f));
-  const F z = y * y;
-  return detail::log2Edges(x, fusedMultiplyAdd(y, detail::polynomial(z, detail::kLog2Polynomial), exponent));
-}
-
-template <class F>
-F pow(const F& x, const F& y) {
-  return detail::zeroWhereXIsZero(x, exp2(log2Safe(x) * y));
+inline softraster::FloatBatch pow(softraster::FloatBatch x, softraster::FloatBatch y) {
+  return detail::lanewise(x, y, [](float a, float b) { return pow(a, b); });
 }
 
 }  // namespace shaders::glsl

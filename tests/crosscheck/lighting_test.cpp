@@ -114,8 +114,7 @@ TEST(LavapipeBuiltins, PowIsCloseToLibmWithLavapipesEdgeCases) {
   EXPECT_EQ(shaders::glsl::log2Safe(0.0f), -INFINITY);
 }
 
-// The batch built-ins (one instruction per step, on the fast path) give each lane the float
-// version's bits: over random bit patterns (NaN, infinities, negatives, denormals) and over
+// The batch built-ins (on the fast path) give each lane the float version's bits: over random bit patterns (NaN, infinities, negatives, denormals) and over
 // the range the lit models use. A batch is only evaluated on an AVX2 + FMA CPU.
 [[gnu::target("avx2,fma")]] int batchMismatches() {
   using softraster::FloatBatch;
@@ -132,11 +131,10 @@ TEST(LavapipeBuiltins, PowIsCloseToLibmWithLavapipesEdgeCases) {
     }
     x[3] = 0.0f;
     const FloatBatch bx = FloatBatch::load(x), by = FloatBatch::load(y);
-    const FloatBatch p = shaders::glsl::pow(bx, by), s = shaders::glsl::sqrt(bx), e = shaders::glsl::exp2(by - 100.0f);
+    const FloatBatch p = shaders::glsl::pow(bx, by), s = shaders::glsl::sqrt(bx);
     for (int k = 0; k < softraster::kBatchLanes; ++k) {
       mismatches += differ(p[k], shaders::glsl::pow(x[k], y[k]));
       mismatches += differ(s[k], shaders::glsl::sqrt(x[k]));
-      mismatches += differ(e[k], shaders::glsl::exp2(y[k] - 100.0f));
     }
   }
   return mismatches;
