@@ -18,8 +18,6 @@ double millisecondsSince(Clock::time_point start) {
   return std::chrono::duration<double, std::milli>(Clock::now() - start).count();
 }
 
-shaders::DrawParameters parametersOf(const Scene& scene, const Draw& draw) { return drawParameters(scene, draw); }
-
 // A shading model's compiled SPIR-V pair and the vertex layout of its C++ twin, for vkref.
 vkref::ShaderProgram programOf(const shaders::ShadingModel& model) {
   vkref::ShaderProgram p;
@@ -39,7 +37,7 @@ SoftrasterScene::SoftrasterScene(const Scene& scene, const softraster::ContextOp
       context_(options),
       framebuffer_(scene.width, scene.height, scene.depthFormat, scene.samples) {
   draws_.reserve(scene.draws.size());  // each draw's vertices and uniforms in its model's types
-  for (const Draw& draw : scene.draws) draws_.push_back(draw.shading->prepareSoftraster(draw.mesh, parametersOf(scene, draw)));
+  for (const Draw& draw : scene.draws) draws_.push_back(draw.shading->prepareSoftraster(draw.mesh, drawParameters(scene, draw)));
 }
 
 softraster::Status SoftrasterScene::render() {
@@ -118,7 +116,7 @@ softraster::Result<vkref::PreparedFrame> prepareVulkan(const Scene& scene, vkref
     call.indexed = draw.indexed;
     call.indices = draw.indices;
     (draw.shading->uniformBuffer ? call.uniformData : call.pushConstants) =
-        draw.shading->uniformBytes(parametersOf(scene, draw));
+        draw.shading->uniformBytes(drawParameters(scene, draw));
     request.draws.push_back(std::move(call));
   }
   auto prepared = renderer.prepare(request);
