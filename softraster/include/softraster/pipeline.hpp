@@ -20,12 +20,14 @@
 #include <softraster/detail/exact/scratch.hpp>
 #include <softraster/detail/fast/fragments.hpp>
 #include <softraster/framebuffer.hpp>
+#include <softraster/limits.hpp>
 #include <softraster/options.hpp>
 #include <softraster/shader.hpp>
 #include <softraster/state.hpp>
 #include <softraster/status.hpp>
 
 #include <algorithm>
+#include <cmath>
 #include <cstdint>
 #include <memory>
 #include <span>
@@ -88,7 +90,15 @@ class Context {
                                        rs.polygonMode != PolygonMode::Fill || options_.depthMode != DepthMode::Vulkan)) {
       return Status::error("softraster draws only filled triangles with 4x MSAA so far");
     }
-    if (!(rs.lineWidth >= 1.0f)) return Status::error("line width must be at least 1");
+    if (!(rs.lineWidth >= DeviceLimits::kMinLineWidth && rs.lineWidth <= DeviceLimits::kMaxLineWidth)) {
+      return Status::error("line width " + std::to_string(rs.lineWidth) + " is outside lineWidthRange [1, 255]");
+    }
+    if (Status viewport = validateViewport(state.viewport); !viewport) return viewport;
+    const Scissor& sc = state.scissor;
+    if (sc.x < 0 || sc.y < 0) return Status::error("scissor x and y must not be negative");
+    if (std::int64_t{sc.x} + sc.width > INT32_MAX || std::int64_t{sc.y} + sc.height > INT32_MAX) {
+      return Status::error("scissor x + width and y + height must fit in a 32-bit signed integer");
+    }
     const BlendState& b = state.blend;
     for (BlendFactor f : {b.srcColorBlendFactor, b.dstColorBlendFactor, b.srcAlphaBlendFactor, b.dstAlphaBlendFactor}) {
       if (f > BlendFactor::SrcAlphaSaturate) return Status::error("unknown blend factor (dual-source factors are not supported)");
@@ -97,6 +107,27 @@ class Context {
     if (b.colorWriteMask > kColourRGBA) return Status::error("colour write mask has bits other than R, G, B and A");
     if (rs.polygonMode != PolygonMode::Fill && rs.depthBias.enable) {
       return Status::error("depth bias with polygon mode line or point is not supported by softraster yet");
+    }
+    return {};
+  }
+
+  // Vulkan's VkViewport rules with lavapipe's limits (limits.hpp); width and height 0 mean the
+  // whole framebuffer (state.hpp), so only the given sizes are checked.
+  static Status validateViewport(const Viewport& vp) {
+    for (float v : {vp.x, vp.y, vp.width, vp.height, vp.minDepth, vp.maxDepth}) {
+      if (!std::isfinite(v)) return Status::error("viewport values must be finite");
+    }
+    if (vp.width == 0 && vp.height == 0) return {};
+    if (!(vp.width > 0 && vp.height > 0)) return Status::error("viewport width and height must be positive");
+    if (vp.width > DeviceLimits::kMaxViewportDimension || vp.height > DeviceLimits::kMaxViewportDimension) {
+      return Status::error("viewport width and height must be at most maxViewportDimensions (16384)");
+    }
+    if (vp.x < DeviceLimits::kViewportBoundsMin || vp.y < DeviceLimits::kViewportBoundsMin ||
+        vp.x + vp.width > DeviceLimits::kViewportBoundsMax || vp.y + vp.height > DeviceLimits::kViewportBoundsMax) {
+      return Status::error("viewport must lie within viewportBoundsRange [-32768, 32768]");
+    }
+    if (!(vp.minDepth >= 0 && vp.minDepth <= 1 && vp.maxDepth >= 0 && vp.maxDepth <= 1)) {
+      return Status::error("viewport minDepth and maxDepth must be in [0, 1]");
     }
     return {};
   }

@@ -36,9 +36,12 @@ inline Viewport resolveViewport(const Viewport& vp, std::uint32_t width, std::ui
 // scissors every primitive to the viewport).
 inline PixelRect drawRegion(const Scissor& scissor, const Viewport& vp, std::uint32_t width, std::uint32_t height) {
   PixelRect region{0, 0, static_cast<int>(width) - 1, static_cast<int>(height) - 1};
-  if (scissor.width != 0 && scissor.height != 0) {
-    region = intersect(region, {scissor.x, scissor.y, scissor.x + static_cast<int>(scissor.width) - 1,
-                                scissor.y + static_cast<int>(scissor.height) - 1});
+  if (scissor.width != 0 && scissor.height != 0) {  // in 64 bits: x + width may not fit in an int
+    const auto lastOf = [](std::int32_t start, std::uint32_t size, int last) {
+      return static_cast<int>(std::min<std::int64_t>(std::int64_t{start} + size - 1, last));
+    };
+    region = intersect(region, {scissor.x, scissor.y, lastOf(scissor.x, scissor.width, region.x1),
+                                lastOf(scissor.y, scissor.height, region.y1)});
   }
   const float top = std::fmin(vp.y, vp.y + vp.height), bottom = std::fmax(vp.y, vp.y + vp.height);
   return intersect(region, {static_cast<int>(vp.x + 0.499f), static_cast<int>(top + 0.499f),
