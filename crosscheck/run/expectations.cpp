@@ -1,6 +1,8 @@
 // Expectations file parsing (see expectations.hpp).
 #include "run/expectations.hpp"
 
+#include "scene/input_file.hpp"
+
 #include <cerrno>
 #include <cstring>
 #include <fstream>
@@ -58,8 +60,7 @@ softraster::Result<Expectations> parseExpectations(std::string_view text, const 
 
 softraster::Result<Expectations> loadExpectations(const std::filesystem::path& file) {
   const std::string context = file.string() + ": cannot read expectations file: ";
-  std::error_code ec;
-  if (std::filesystem::is_directory(file, ec)) return Status::error(context + "it is a directory");
+  if (const Status readable = checkInputFile(file); !readable) return Status::error(context + readable.message());
   errno = 0;
   std::ifstream in(file, std::ios::binary);
   if (!in) return Status::error(context + (errno ? std::strerror(errno) : "cannot open"));

@@ -4,6 +4,9 @@
 #include "scene/camera.hpp"
 #include "scene/normals.hpp"
 #include "scene/obj_mesh.hpp"
+#include "scene/input_file.hpp"
+
+#include <softraster/limits.hpp>
 
 #include <glm/gtc/matrix_inverse.hpp>
 #include <glm/gtc/matrix_transform.hpp>
@@ -26,6 +29,13 @@ namespace crosscheck {
 namespace {
 
 using nlohmann::json;
+using Limits = softraster::DeviceLimits;  // lavapipe's, which the scene format follows
+
+// Limits of the scene format (scenes/README.md, "Limits"): generous, but no input exceeds them
+// unchecked. 8192 x 8192 with 4 samples is the largest frame (about 2 GiB in both renderers).
+constexpr std::uint64_t kMaxFramebufferSize = 8192;
+constexpr std::size_t kMaxDraws = 100'000;
+constexpr std::size_t kMaxSceneVertices = 16'000'000;  // over all draws: positions, or indices when indexed
 
 // A failure at a place in the scene file; turned into "FILE: PLACE: message".
 struct SceneError : std::runtime_error {
@@ -53,6 +63,36 @@ softraster::Mat4 normalMatrix(const glm::dmat4& m) {
   glm::dmat4 out(0.0);
   for (int c = 0; c < 3; ++c) out[c] = glm::dvec4(n[c], 0.0);
   return roundedToFloat(out);
+}
+
+// Vulkan's VkViewport rules with lavapipe's limits, quoted in the error (a width or height of 0
+// is invalid in Vulkan, though softraster's library API reads it as "the whole framebuffer").
+void checkViewport(const softraster::Viewport& v, const std::string& place) {
+  if (!(v.width > 0 && v.height > 0)) {
+    throw SceneError(place, "width and height must be positive (Vulkan: \"width must be greater than 0.0\"; a "
+                            "negative height is not supported yet)");
+  }
+  if (v.width > Limits::kMaxViewportDimension || v.height > Limits::kMaxViewportDimension) {
+    throw SceneError(place, "width and height must be at most 16384, the device's maxViewportDimensions");
+  }
+  if (v.x < Limits::kViewportBoundsMin || v.y < Limits::kViewportBoundsMin ||
+      v.x + v.width > Limits::kViewportBoundsMax || v.y + v.height > Limits::kViewportBoundsMax) {
+    throw SceneError(place, "must lie within the device's viewportBoundsRange [-32768, 32768] (Vulkan: \"x must "
+                            "be greater than or equal to viewportBoundsRange[0]\", \"(x + width) must be less than "
+                            "or equal to viewportBoundsRange[1]\", likewise y)");
+  }
+  if (!(v.minDepth >= 0 && v.minDepth <= 1 && v.maxDepth >= 0 && v.maxDepth <= 1)) {
+    throw SceneError(place, "min_depth and max_depth must be in [0, 1]");
+  }
+}
+
+bool isFinite(const softraster::Mat4& m) {
+  for (int r = 0; r < 4; ++r) {
+    for (int c = 0; c < 4; ++c) {
+      if (!std::isfinite(m.at(r, c))) return false;
+    }
+  }
+  return true;
 }
 
 // Rejects keys the format does not know, so a typo is an error instead of a silent default.
@@ -90,13 +130,27 @@ double readNumber(const json& object, const char* key, const std::string& place,
   return object.contains(key) ? readNumber(object[key], placeOf(place, key)) : fallback;
 }
 
-std::uint64_t readCount(const json& object, const char* key, const std::string& place, std::uint64_t fallback) {
+// A whole number in [0, max]; checked before any narrowing, so 4294967297 is an error, not 1.
+std::uint64_t readCount(const json& object, const char* key, const std::string& place, std::uint64_t fallback,
+                        std::uint64_t max = std::numeric_limits<std::uint64_t>::max()) {
   if (!object.contains(key)) return fallback;
   const json& v = object[key];
-  if (!v.is_number_integer() || v.get<std::int64_t>() < 0) {
-    throw SceneError(placeOf(place, key), "expected a non-negative integer");
+  const std::string at = placeOf(place, key);
+  if (!v.is_number_integer() || (!v.is_number_unsigned() && v.get<std::int64_t>() < 0)) {
+    throw SceneError(at, "expected a non-negative integer");
   }
-  return v.get<std::uint64_t>();
+  const std::uint64_t n = v.get<std::uint64_t>();
+  if (n > max) throw SceneError(at, std::to_string(n) + " is more than " + std::to_string(max));
+  return n;
+}
+
+// A number that is finite as a float (every float in the scene format is rounded to float once).
+float readFloat(const json& object, const char* key, const std::string& place, float fallback) {
+  if (!object.contains(key)) return fallback;
+  const double v = readNumber(object[key], placeOf(place, key));
+  const auto f = static_cast<float>(v);
+  if (!std::isfinite(f)) throw SceneError(placeOf(place, key), "must be a finite number within float range");
+  return f;
 }
 
 bool readBool(const json& object, const char* key, const std::string& place, bool fallback) {
@@ -131,6 +185,9 @@ std::array<double, 3> readVec3(const json& object, const char* key, const std::s
 // A colour is [r, g, b] or [r, g, b, a], floats in [0, 1]; alpha defaults to 1.
 softraster::Vec4 readColour(const json& value, const std::string& place) {
   const auto v = readNumbers(value, place, 3, 4);
+  for (std::size_t i = 0; i < v.size(); ++i) {
+    if (!(v[i] >= 0 && v[i] <= 1)) throw SceneError(placeOf(place, std::to_string(i)), "must be in [0, 1]");
+  }
   return {static_cast<float>(v[0]), static_cast<float>(v[1]), static_cast<float>(v[2]),
           v.size() == 4 ? static_cast<float>(v[3]) : 1.0f};
 }
@@ -187,6 +244,11 @@ CameraMatrices readCamera(const json& camera, const std::string& place, int widt
     if (!(c.fovYDegrees > 0 && c.fovYDegrees < 180)) throw SceneError(placeOf(place, "fov_y"), "must be in (0, 180)");
     if (!(c.nearPlane > 0 && c.farPlane > c.nearPlane)) throw SceneError(place, "needs 0 < near < far");
     if (c.eye == c.target) throw SceneError(place, "eye and target are the same point");
+    const glm::dvec3 forward(c.target[0] - c.eye[0], c.target[1] - c.eye[1], c.target[2] - c.eye[2]);
+    const glm::dvec3 up(c.up[0], c.up[1], c.up[2]);
+    if (!(glm::length(glm::cross(forward, up)) > 1e-9 * glm::length(forward) * glm::length(up))) {
+      throw SceneError(placeOf(place, "up"), "is zero or parallel to the view direction (target - eye)");
+    }
     return cameraMatrices(c, width, height);
   }
   if (type == "clip_space") {  // positions are clip coordinates (w = 1): exact control of window positions
@@ -281,33 +343,40 @@ void readDrawState(const json& d, const std::string& place, softraster::Pipeline
     const json& v = d["viewport"];
     checkKeys(v, vp, {"x", "y", "width", "height", "min_depth", "max_depth"});
     auto& viewport = state.viewport;
-    viewport.x = static_cast<float>(readNumber(v, "x", vp, 0));
-    viewport.y = static_cast<float>(readNumber(v, "y", vp, 0));
-    viewport.width = static_cast<float>(readNumber(v, "width", vp, 0));
-    viewport.height = static_cast<float>(readNumber(v, "height", vp, 0));
-    viewport.minDepth = static_cast<float>(readNumber(v, "min_depth", vp, 0));
-    viewport.maxDepth = static_cast<float>(readNumber(v, "max_depth", vp, 1));
-    if (viewport.width < 0 || viewport.height < 0) throw SceneError(vp, "width and height must not be negative");
-    if (!(viewport.minDepth >= 0 && viewport.minDepth <= 1 && viewport.maxDepth >= 0 && viewport.maxDepth <= 1)) {
-      throw SceneError(vp, "min_depth and max_depth must be in [0, 1]");
-    }
+    viewport.x = readFloat(v, "x", vp, 0);
+    viewport.y = readFloat(v, "y", vp, 0);
+    viewport.width = readFloat(v, "width", vp, 0);
+    viewport.height = readFloat(v, "height", vp, 0);
+    viewport.minDepth = readFloat(v, "min_depth", vp, 0);
+    viewport.maxDepth = readFloat(v, "max_depth", vp, 1);
+    checkViewport(viewport, vp);
   }
   if (d.contains("scissor")) {
     const std::string sp = placeOf(place, "scissor");
     const json& sc = d["scissor"];
     checkKeys(sc, sp, {"x", "y", "width", "height"});
-    state.scissor.x = static_cast<std::int32_t>(readCount(sc, "x", sp, 0));
-    state.scissor.y = static_cast<std::int32_t>(readCount(sc, "y", sp, 0));
-    state.scissor.width = static_cast<std::uint32_t>(readCount(sc, "width", sp, 0));
-    state.scissor.height = static_cast<std::uint32_t>(readCount(sc, "height", sp, 0));
+    constexpr std::uint64_t kIntMax = std::numeric_limits<std::int32_t>::max();
+    const std::uint64_t x = readCount(sc, "x", sp, 0, kIntMax), y = readCount(sc, "y", sp, 0, kIntMax);
+    const std::uint64_t width = readCount(sc, "width", sp, 0, std::numeric_limits<std::uint32_t>::max());
+    const std::uint64_t height = readCount(sc, "height", sp, 0, std::numeric_limits<std::uint32_t>::max());
+    if (x + width > kIntMax || y + height > kIntMax) {
+      throw SceneError(sp, "x + width and y + height must fit in a 32-bit signed integer (Vulkan: "
+                           "\"evaluation of (offset.x + extent.width) must not cause a signed integer addition "
+                           "overflow\")");
+    }
+    state.scissor = {static_cast<std::int32_t>(x), static_cast<std::int32_t>(y), static_cast<std::uint32_t>(width),
+                     static_cast<std::uint32_t>(height)};
   }
   auto& rs = state.rasterization;
   rs.depthClampEnable = readBool(d, "depth_clamp", place, rs.depthClampEnable);
   rs.polygonMode = readEnum(d, "polygon_mode", place, rs.polygonMode,
                             {{"fill", softraster::PolygonMode::Fill}, {"line", softraster::PolygonMode::Line},
                              {"point", softraster::PolygonMode::Point}});
-  rs.lineWidth = static_cast<float>(readNumber(d, "line_width", place, rs.lineWidth));
-  if (!(rs.lineWidth >= 1.0f)) throw SceneError(placeOf(place, "line_width"), "must be at least 1");
+  rs.lineWidth = readFloat(d, "line_width", place, rs.lineWidth);
+  if (!(rs.lineWidth >= Limits::kMinLineWidth && rs.lineWidth <= Limits::kMaxLineWidth)) {
+    throw SceneError(placeOf(place, "line_width"), "must be in [1, 255], the device's lineWidthRange (Vulkan: "
+                                                   "\"lineWidth must be within the range lineWidthRange\")");
+  }
   rs.lineRasterization = readEnum(d, "line_rasterization", place, rs.lineRasterization,
                                   {{"rectangular", softraster::LineRasterization::Rectangular},
                                    {"bresenham", softraster::LineRasterization::Bresenham}});
@@ -316,9 +385,9 @@ void readDrawState(const json& d, const std::string& place, softraster::Pipeline
     const json& b = d["depth_bias"];
     checkKeys(b, bp, {"constant", "slope", "clamp"});
     rs.depthBias.enable = true;
-    rs.depthBias.constantFactor = static_cast<float>(readNumber(b, "constant", bp, 0));
-    rs.depthBias.slopeFactor = static_cast<float>(readNumber(b, "slope", bp, 0));
-    rs.depthBias.clamp = static_cast<float>(readNumber(b, "clamp", bp, 0));
+    rs.depthBias.constantFactor = readFloat(b, "constant", bp, 0);
+    rs.depthBias.slopeFactor = readFloat(b, "slope", bp, 0);
+    rs.depthBias.clamp = readFloat(b, "clamp", bp, 0);
   }
   rs.cullMode = readEnum(d, "cull", place, rs.cullMode,
                          {{"none", CullMode::None}, {"front", CullMode::Front}, {"back", CullMode::Back},
@@ -530,8 +599,11 @@ Draw readDrawMesh(const json& d, const std::string& place, const std::filesystem
   draw.name = readString(d, "name", place, place);
   draw.shading = readShadingModel(d, place);
   readDrawState(d, place, draw.state);
-  draw.pointSize = static_cast<float>(readNumber(d, "point_size", place, draw.pointSize));
-  if (!(draw.pointSize > 0)) throw SceneError(placeOf(place, "point_size"), "must be positive");
+  draw.pointSize = readFloat(d, "point_size", place, draw.pointSize);
+  if (!(draw.pointSize > Limits::kMinPointSize && draw.pointSize <= Limits::kMaxPointSize)) {
+    throw SceneError(placeOf(place, "point_size"), "must be in (0, 255], the device's pointSizeRange (Vulkan clamps "
+                                                   "gl_PointSize to it, so a larger size would not draw what it says)");
+  }
   const softraster::Vec4 colour = d.contains("colour") ? readColour(d["colour"], placeOf(place, "colour"))
                                                        : softraster::Vec4{1, 1, 1, 1};
 
@@ -644,25 +716,26 @@ Scene readScene(json& document, const std::filesystem::path& path, const std::ve
   if (document.contains("framebuffer")) {
     const json& fb = document["framebuffer"];
     checkKeys(fb, "/framebuffer", {"width", "height", "clear_colour", "clear_depth", "depth_format", "samples"});
-    scene.samples = static_cast<std::uint32_t>(readCount(fb, "samples", "/framebuffer", 1));
+    scene.samples = static_cast<std::uint32_t>(readCount(fb, "samples", "/framebuffer", 1, 64));
     if (scene.samples != 1 && scene.samples != 4) throw SceneError("/framebuffer/samples", "must be 1 or 4");
     scene.depthFormat = readEnum(fb, "depth_format", "/framebuffer", scene.depthFormat,
                                  {{"d16_unorm", softraster::DepthFormat::D16Unorm},
                                   {"x8_d24_unorm", softraster::DepthFormat::X8D24UnormPack32},
                                   {"d32_sfloat", softraster::DepthFormat::D32Sfloat}});
-    scene.width = static_cast<std::uint32_t>(readCount(fb, "width", "/framebuffer", scene.width));
-    scene.height = static_cast<std::uint32_t>(readCount(fb, "height", "/framebuffer", scene.height));
-    if (scene.width == 0 || scene.height == 0 || scene.width > 8192 || scene.height > 8192) {
-      throw SceneError("/framebuffer", "width and height must be in 1..8192");
-    }
+    scene.width = static_cast<std::uint32_t>(readCount(fb, "width", "/framebuffer", scene.width, kMaxFramebufferSize));
+    scene.height = static_cast<std::uint32_t>(readCount(fb, "height", "/framebuffer", scene.height, kMaxFramebufferSize));
+    if (scene.width == 0 || scene.height == 0) throw SceneError("/framebuffer", "width and height must be in 1..8192");
     if (fb.contains("clear_colour")) scene.clearColour = readColour(fb["clear_colour"], "/framebuffer/clear_colour");
-    scene.clearDepth = static_cast<float>(readNumber(fb, "clear_depth", "/framebuffer", scene.clearDepth));
+    scene.clearDepth = readFloat(fb, "clear_depth", "/framebuffer", scene.clearDepth);
     if (!(scene.clearDepth >= 0 && scene.clearDepth <= 1)) throw SceneError("/framebuffer/clear_depth", "must be in [0, 1]");
   }
 
   scene.camera = readCamera(document.contains("camera") ? document["camera"] : json::object(), "/camera",
                             static_cast<int>(scene.width), static_cast<int>(scene.height));
   scene.viewProjection = roundedToFloat(scene.camera.projection * scene.camera.view);
+  if (!isFinite(scene.viewProjection)) {
+    throw SceneError("/camera", "its matrices are not finite in float (a value too large for the camera's maths)");
+  }
   scene.time = readNumber(document, "time", "", 0);
   if (!std::isfinite(scene.time)) throw SceneError("/time", "must be finite");
   if (document.contains("light")) {
@@ -682,17 +755,32 @@ Scene readScene(json& document, const std::filesystem::path& path, const std::ve
     throw SceneError("/draws", "expected a non-empty array of draws");
   }
   const json& draws = document["draws"];
+  if (draws.size() > kMaxDraws) {
+    throw SceneError("/draws", std::to_string(draws.size()) + " draws, more than " + std::to_string(kMaxDraws));
+  }
+  std::size_t vertices = 0;
   for (std::size_t i = 0; i < draws.size(); ++i) {
-    scene.draws.push_back(readDraw(draws[i], "/draws/" + std::to_string(i), path.parent_path(), scene.time));
+    const std::string place = "/draws/" + std::to_string(i);
+    scene.draws.push_back(readDraw(draws[i], place, path.parent_path(), scene.time));
+    const Draw& draw = scene.draws.back();
+    vertices += draw.indexed ? draw.indices.size() : draw.mesh.vertexCount();
+    if (vertices > kMaxSceneVertices) {
+      throw SceneError(place, "the scene's draws have " + std::to_string(vertices) + " vertices so far, more than " +
+                                  std::to_string(kMaxSceneVertices));
+    }
+    if (!isFinite(drawParameters(scene, draw).modelViewProjection)) {
+      throw SceneError(placeOf(place, "transform"), "the model-view-projection matrix is not finite in float");
+    }
   }
 
   if (document.contains("tolerance")) {
     const json& t = document["tolerance"];
     checkKeys(t, "/tolerance", {"colour", "depth", "coverage_mismatches", "colour_pixels_over", "depth_pixels_over"});
     Tolerance& tol = scene.tolerance;
-    tol.colourThreshold = static_cast<int>(readCount(t, "colour", "/tolerance", static_cast<std::uint64_t>(tol.colourThreshold)));
+    tol.colourThreshold =
+        static_cast<int>(readCount(t, "colour", "/tolerance", static_cast<std::uint64_t>(tol.colourThreshold), 255));
     tol.depthThreshold = readNumber(t, "depth", "/tolerance", tol.depthThreshold);
-    if (!(tol.depthThreshold >= 0)) throw SceneError("/tolerance/depth", "must be non-negative");
+    if (!(tol.depthThreshold >= 0 && tol.depthThreshold <= 1)) throw SceneError("/tolerance/depth", "must be in [0, 1]");
     tol.maxCoverageMismatches = readCount(t, "coverage_mismatches", "/tolerance", tol.maxCoverageMismatches);
     tol.maxColourPixelsOver = readCount(t, "colour_pixels_over", "/tolerance", tol.maxColourPixelsOver);
     tol.maxDepthPixelsOver = readCount(t, "depth_pixels_over", "/tolerance", tol.maxDepthPixelsOver);
@@ -723,22 +811,32 @@ shaders::DrawParameters drawParameters(const Scene& scene, const Draw& draw) {
 
 softraster::Result<Scene> loadScene(const std::filesystem::path& path, const std::vector<std::string>& overrides) {
   using softraster::Status;
+  if (const Status readable = checkInputFile(path); !readable) {
+    return Status::error(path.string() + ": cannot open scene file: " + readable.message());
+  }
   std::ifstream file(path);
   if (!file) return Status::error(path.string() + ": cannot open scene file");
+  // nlohmann's messages start "[json.exception.parse_error.101] "; the rest is the one line.
+  const auto withoutId = [](const json::exception& e) {
+    const std::string message = e.what();
+    const auto end = message.find("] ");
+    return message.rfind("[json.exception.", 0) == 0 && end != std::string::npos ? message.substr(end + 2) : message;
+  };
   json document;
   try {
-    document = json::parse(file);
-  } catch (const json::parse_error& e) {
-    // nlohmann's message: "[json.exception.parse_error.101] parse error at line 3, column 5: ..."
-    std::string message = e.what();
-    const auto at = message.find("parse error");
-    return Status::error(path.string() + ": " + (at == std::string::npos ? message : message.substr(at)));
+    document = json::parse(file);  // parse_error: "parse error at line 3, column 5: ..."; out_of_range: 1e400
+  } catch (const json::exception& e) {
+    return Status::error(path.string() + ": " + withoutId(e));
   }
   try {
     return readScene(document, path, overrides);
   } catch (const SceneError& e) {
     return Status::error(path.string() + ": " + (e.place.empty() ? "/" : e.place) + ": " + e.what());
   } catch (const json::exception& e) {
+    return Status::error(path.string() + ": " + withoutId(e));
+  } catch (const std::bad_alloc&) {
+    return Status::error(path.string() + ": out of memory while loading the scene");
+  } catch (const std::exception& e) {
     return Status::error(path.string() + ": " + e.what());
   }
 }

@@ -49,7 +49,7 @@ case $case_name in
     check_usage '^crosscheck: --frames -3: expected a whole number' bench --frames=-3 "$tiny"
     check_usage '^crosscheck: --warmup x: expected a whole number from 0 to 100000$' bench --warmup x "$tiny"
     check_usage '^crosscheck: --threads 2.5: expected a whole number from 0 to 1024$' bench --threads 2.5 "$tiny"
-    check_usage '^crosscheck: tests/data/bench/no_such_scene.json: cannot open scene file$' \
+    check_usage '^crosscheck: tests/data/bench/no_such_scene.json: cannot open scene file: file not found$' \
       bench tests/data/bench/no_such_scene.json
     check_usage '^crosscheck: scenez/: no such file or directory$' bench scenez/
     check_usage '^crosscheck: tests/data/malformed_syntax.json: parse error at line 3' bench tests/data/malformed_syntax.json

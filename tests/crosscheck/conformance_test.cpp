@@ -153,10 +153,10 @@ TEST(Expectations, MalformedLinesNameFileAndLine) {
 TEST(Expectations, UnreadableFileIsOneLine) {
   const auto missing = loadExpectations(kData / "no_such_file.txt");
   EXPECT_FALSE(missing);
-  EXPECT_EQ(missing.error(), (kData / "no_such_file.txt").string() + ": cannot read expectations file: No such file or directory");
+  EXPECT_EQ(missing.error(), (kData / "no_such_file.txt").string() + ": cannot read expectations file: file not found");
   const auto directory = loadExpectations(kData);
   EXPECT_FALSE(directory);
-  EXPECT_EQ(directory.error(), kData.string() + ": cannot read expectations file: it is a directory");
+  EXPECT_EQ(directory.error(), kData.string() + ": cannot read expectations file: is a directory, not a file");
 }
 
 TEST(Expectations, AppliedToActualResults) {
