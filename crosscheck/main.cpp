@@ -6,8 +6,10 @@
 //   crosscheck report [SCENE|DIR ...] -o DIR [--expectations FILE] [--jobs N] [--shard I/N] [--junit FILE]
 //   crosscheck bench [SCENE|DIR ...] [--frames N] [--warmup N] [--threads N] [--json FILE]
 // render and compare also take --method exact|exact-scalar and --threads N (softraster's).
-// Exit status: 0 success / within tolerance / nothing unexpected, 1 outside tolerance, a failed
-// render or an unexpected conformance result, 2 bad usage.
+// Exit status (README, "Exit status"): 0 success / within tolerance / nothing unexpected; 1
+// outside tolerance or an unexpected conformance result; 2 anything that kept the comparison from
+// happening: bad usage, a scene or file that cannot be loaded, a renderer's error, an unwritable
+// output.
 // This file only sets up CLI11 and hands the parsed options to one subcommand in cli/
 // (cli/commands.hpp); a parse error is exit status 2 with the usage below, a bad value of a
 // number or method option one error line naming the option, exit status 2.
@@ -16,6 +18,7 @@
 #include <CLI/CLI.hpp>
 
 #include <charconv>
+#include <cmath>
 #include <cstdio>
 #include <optional>
 #include <string>
@@ -170,6 +173,17 @@ int main(int argc, char** argv) {
   benchCommand->add_option("--json", bench.jsonFile, "Write the results as JSON to this file");
   addDevice(benchCommand);
 
+  // CLI11 would call an unknown subcommand "A subcommand is required" or an extra argument.
+  if (argc > 1 && argv[1][0] != '-') {
+    const std::string name = argv[1];
+    bool known = false;
+    for (const CLI::App* sub : app.get_subcommands({})) known = known || sub->get_name() == name;
+    if (!known) {
+      std::fprintf(stderr, "crosscheck: unknown subcommand '%s' (expected render, compare, conformance, report or bench)\n%s\n",
+                   name.c_str(), kUsage);
+      return 2;
+    }
+  }
   try {
     app.parse(argc, argv);
   } catch (const CLI::CallForHelp& e) {
@@ -195,6 +209,10 @@ int main(int argc, char** argv) {
     return crosscheck::cli::benchCommand(bench);
   }
   if (render->parsed()) {
+    if (depthRange.size() == 2 && !(std::isfinite(depthRange[0]) && std::isfinite(depthRange[1]) && depthRange[0] < depthRange[1])) {
+      std::fprintf(stderr, "crosscheck: --depth-range %g %g: expected two finite numbers LO < HI\n", depthRange[0], depthRange[1]);
+      return 2;
+    }
     return crosscheck::cli::renderCommand({common.sceneOptions(scenePath), renderer, output, depthOutput, depthRange});
   }
   if (compare->parsed()) return crosscheck::cli::compareCommand({common.sceneOptions(scenePath), outDir, json});

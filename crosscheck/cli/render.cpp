@@ -12,16 +12,15 @@
 namespace crosscheck::cli {
 namespace {
 
-softraster::Result<Frame> renderWith(const RenderCommand& command, const Scene& scene) {
-  if (command.renderer == "soft") return renderSoftraster(scene, command.options.softraster);
-  const auto vulkan = openVulkan(command.options.device);
-  if (!vulkan) return vulkan.status();
-  return renderVulkan(scene, **vulkan);
-}
-
+// Anything that kept the command from finishing is one error line and exit status 2.
 int fail(const softraster::Status& status) {
   std::fprintf(stderr, "crosscheck: %s\n", status.message().c_str());
-  return 1;
+  return 2;
+}
+
+// A renderer's error about the scene ("vulkan: draw 0: ..."), with the scene file named first.
+int failIn(const std::filesystem::path& scene, const softraster::Status& status) {
+  return fail(softraster::Status::error(scene.string() + ": " + status.message()));
 }
 
 }  // namespace
@@ -29,8 +28,14 @@ int fail(const softraster::Status& status) {
 int renderCommand(const RenderCommand& command) {
   const auto scene = loadScene(command.options.scene, command.options.overrides);
   if (!scene) return fail(scene.status());
-  const auto frame = renderWith(command, *scene);
-  if (!frame) return fail(frame.status());
+  softraster::Result<std::unique_ptr<vkref::Renderer>> vulkan = std::unique_ptr<vkref::Renderer>();
+  if (command.renderer == "vulkan") {
+    vulkan = openVulkan(command.options.device);
+    if (!vulkan) return fail(vulkan.status());  // no driver: not about the scene
+  }
+  const auto frame = command.renderer == "vulkan" ? renderVulkan(*scene, **vulkan)
+                                                  : renderSoftraster(*scene, command.options.softraster);
+  if (!frame) return failIn(scene->path, frame.status());
   if (const auto written = writePng(command.output, frame->width, frame->height, frame->rgba); !written) {
     return fail(written);
   }
