@@ -58,6 +58,7 @@ struct RunResults {
   std::vector<SceneResult> scenes;          // in suite order
   std::string suiteName = "crosscheck.conformance";  // JUnit's name for the run (a shard adds ".shardIofN")
   std::string commandLine;                  // how the run was started, for the report
+  std::filesystem::path junitFile;          // the JUnit file the run wrote (empty: none)
   double seconds = 0;                       // wall time of the whole run
   unsigned jobs = 1;
   std::time_t finished = 0;                 // when the run ended (UTC); 0: unknown, not written

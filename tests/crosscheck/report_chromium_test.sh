@@ -1,9 +1,11 @@
 #!/usr/bin/env bash
 # Opens a generated report in headless Chromium (Debian's chromium, from file://, no network) and
-# checks that the page rendered (its script ran without errors), that every image loaded, that
-# every scene's pixel data for the value readout loaded and decoded, that the readout shows values
-# under the pointer, that the summary table has a row per scene and sorts on a header click, and
-# that the flicker toggle swaps the render. Keeps screenshots:
+# checks that the page rendered (its script ran without errors), that every image and thumbnail
+# loaded, that the pixel data for the value readout (written for the failing scene only) loaded
+# and decoded, that the readout shows values under the pointer, that the summary table has a row
+# per scene, sorts on a header click and filters by "only unexpected" and by name, that the
+# expectations lines for the unexpected results are there to copy, and that the flicker toggle
+# swaps the render. Keeps screenshots:
 #   ARTIFACTS/report/report.png        the page as it opens (1400x1000)
 #   ARTIFACTS/report/report-check.png  every scene opened (?check, 1400x3000)
 # Usage: report_chromium_test.sh CROSSCHECK SOURCE_DIR ARTIFACTS_DIR
@@ -62,10 +64,19 @@ grep -q 'data-js-errors=' "$artifacts/dom.html" && fail "script errors: $(grep -
 [ "$(attr data-check)" = done ] || fail "the self-check did not finish: '$(attr data-check)'"
 loaded=$(attr data-images-loaded)
 [ "$(attr data-images-failed)" = 0 ] || fail "images failed to load: $(attr data-images-failed-list)"
-# Seven images (soft, vulkan, diff, two depth views, depth diff, flicker) per scene that rendered.
+# Per scene that rendered: nine views (soft, vulkan, diff, two depth views, depth diff, flicker,
+# the onion/wipe pair) and a thumbnail in the table; three thumbnails more for the one that
+# failed, at the top. Pixel data only for the scene outside its tolerance (depth_slope).
 rendered=2
-[ "$loaded" = "$((7 * rendered))/$((7 * rendered))" ] || fail "images loaded: $loaded, expected $((7 * rendered)) of $((7 * rendered))"
-[ "$(attr data-pixels-loaded)" = "$rendered/$rendered" ] || fail "pixel data loaded: $(attr data-pixels-loaded) $(attr data-pixels-errors)"
+images=$((10 * rendered + 3))
+[ "$loaded" = "$images/$images" ] || fail "images loaded: $loaded, expected $images of $images"
+[ "$(attr data-thumbnails)" = 5 ] || fail "thumbnails: $(attr data-thumbnails), expected 5"
+[ "$(attr data-pixels-loaded)" = "1/1" ] || fail "pixel data loaded: $(attr data-pixels-loaded) $(attr data-pixels-errors)"
+[ ! -e "$artifacts/site/flat_triangle/pixels.js" ] || fail "pixel data written for a scene that passed"
+# Filters: every row, only unexpected (depth_slope, broken_obj), then the name "depth".
+[ "$(attr data-filter-probe)" = "4,2,1" ] || fail "filter probe: '$(attr data-filter-probe)', expected 4,2,1"
+attr data-expectations-lines | grep -qE '^broken_obj,Crash # .*broken_obj.* \| depth_slope,Fail # .*depth_pixels_over [0-9]+ &gt; 0 .* \| $' ||
+  fail "expectations lines: '$(attr data-expectations-lines)'"
 [ "$(attr data-summary-rows)" = "$scenes" ] || fail "summary table has $(attr data-summary-rows) rows, expected $scenes"
 grep -q '<table id="summary"' "$artifacts/dom.html" || fail "no summary table"
 [ "$(attr data-sort-probe)" = "malformed,flat_triangle,depth_slope,broken_obj" ] ||

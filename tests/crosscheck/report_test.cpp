@@ -89,8 +89,12 @@ TEST(Report, PageHasSummaryTableLazyImagesAndNoNetwork) {
   EXPECT_EQ(count(html, "<table id=\"summary\""), 1u);
   EXPECT_EQ(count(html, "<tr class=\"st-"), 4u);                // one row per scene
   EXPECT_EQ(count(html, "<details class=\"scene"), 4u);         // one section per scene
-  EXPECT_EQ(count(html, "<img loading=\"lazy\""), 2u * 7u);     // two scenes rendered, seven images each
-  EXPECT_EQ(count(html, "<img "), count(html, "<img loading=\"lazy\""));
+  // Two scenes rendered: seven views and the onion-skin/wipe stack's two images each, and a
+  // thumbnail in the table; every image lazy.
+  EXPECT_EQ(count(html, "<img loading=\"lazy\""), 2u * 8u);
+  EXPECT_EQ(count(html, "<img class=\"stack-top\" loading=\"lazy\""), 2u);
+  EXPECT_EQ(count(html, "<img class=\"thumb\" loading=\"lazy\""), 2u);
+  EXPECT_EQ(count(html, "<img "), 2u * 10u);
   EXPECT_EQ(count(html, "data-pixels=\""), 2u);
   EXPECT_NE(html.find("image-rendering: pixelated"), std::string::npos);
   EXPECT_NE(html.find("<p class=\"counts\">2 passed, 2 failed</p>"), std::string::npos);
@@ -105,6 +109,17 @@ TEST(Report, PageHasSummaryTableLazyImagesAndNoNetwork) {
   EXPECT_LT(at("broken_obj"), at("malformed"));
   EXPECT_LT(at("malformed"), at("depth_slope"));
   EXPECT_LT(at("depth_slope"), at("flat_triangle"));
+  // Triage: both crashes listed at the top and as expectations lines, their error in the table,
+  // the counts that decide a result as columns, a stable anchor and the command per scene.
+  EXPECT_NE(html.find("<h2>Unexpected results (2)</h2>"), std::string::npos);
+  EXPECT_EQ(count(html, "<div class=\"row-error\">"), 2u);
+  EXPECT_NE(html.find(">broken_obj,Crash # "), std::string::npos) << "expectations line, worst first";
+  EXPECT_NE(html.find("\nmalformed,Crash # "), std::string::npos) << "expectations line";
+  EXPECT_NE(html.find(">colour pixels over</th>"), std::string::npos);
+  EXPECT_NE(html.find(">depth pixels over</th>"), std::string::npos);
+  EXPECT_NE(html.find("href=\"#scene=depth_slope\""), std::string::npos);
+  EXPECT_NE(html.find("<code class=\"reproduce\">crosscheck compare "), std::string::npos);
+  EXPECT_NE(html.find("id=\"filter-unexpected\""), std::string::npos);
   for (const SceneResult& r : results) {
     for (const SceneImage& image : r.images) {
       EXPECT_TRUE(fs::is_regular_file(dir / image.file)) << image.file;

@@ -13,7 +13,9 @@
 #include <cmath>
 #include <cstdio>
 #include <limits>
+#include <iterator>
 #include <numeric>
+#include <sstream>
 #include <tuple>
 
 namespace crosscheck {
@@ -105,10 +107,31 @@ std::string meanText(const std::array<double, 4>& v) {
 
 std::string psnrText(double psnr) { return std::isfinite(psnr) ? fixed("%.2f", psnr) : "\xE2\x88\x9E"; }
 
-std::string summaryRow(const SceneResult& r, std::size_t position, std::size_t rank) {
-  std::string row = "<tr class=\"st-" + std::string(outcomeName(r.outcome)) + "\" data-rank=\"" + std::to_string(rank) + "\">";
+// The scene's stable anchor (documented in the README): #scene=NAME.
+std::string anchorOf(const SceneResult& r) { return "#scene=" + e(encodeUrlPath(r.entry.name)); }
+
+// A small render of the scene (its PNG, scaled by the browser), or nothing when none was written.
+std::string thumbnail(const SceneResult& r, std::string_view kind, const std::string& title) {
+  const SceneImage* image = imageOf(r, kind);
+  if (!image) return "";
+  return "<img class=\"thumb\" loading=\"lazy\" decoding=\"async\" src=\"" + url(image->file) + "\" alt=\"" +
+         e(title + " of " + r.entry.name) + "\" title=\"" + e(title) + "\">";
+}
+
+// The attributes the page's filters read: the status and the name.
+std::string filterAttributes(const SceneResult& r) {
+  return " data-status=\"" + std::string(outcomeName(r.outcome)) + "\" data-unexpected=\"" +
+         (isUnexpected(r.outcome) ? "1" : "0") + "\" data-name=\"" + e(r.entry.name) + "\"";
+}
+
+std::string summaryRow(const SceneResult& r, std::size_t rank) {
+  std::string row = "<tr class=\"st-" + std::string(outcomeName(r.outcome)) + "\" data-rank=\"" + std::to_string(rank) + "\"" +
+                    filterAttributes(r) + ">";
   row += "<td data-v=\"" + std::to_string(outcomeRank(r.outcome)) + "\">" + badge(r.outcome) + "</td>";
-  row += "<td data-v=\"" + e(r.entry.name) + "\"><a href=\"#s-" + std::to_string(position) + "\">" + e(r.entry.name) + "</a></td>";
+  row += "<td class=\"thumbs\">" + thumbnail(r, "soft", "softraster") + "</td>";
+  row += "<td data-v=\"" + e(r.entry.name) + "\"><a href=\"" + anchorOf(r) + "\">" + e(r.entry.name) + "</a>";
+  if (!r.error.empty()) row += "<div class=\"row-error\">" + e(r.error) + "</div>";
+  row += "</td>";
   if (r.comparison) {
     const Comparison& c = *r.comparison;
     const Tolerance& t = r.tolerance;
@@ -116,18 +139,60 @@ std::string summaryRow(const SceneResult& r, std::size_t position, std::size_t r
     const double colourMean = *std::max_element(c.colourMeanDelta.begin(), c.colourMeanDelta.end());
     row += numberCell(double(c.coverageMismatches), std::to_string(c.coverageMismatches),
                       c.coverageMismatches > t.maxCoverageMismatches, "allowed: " + std::to_string(t.maxCoverageMismatches));
+    row += numberCell(double(c.colourPixelsOver), std::to_string(c.colourPixelsOver), c.colourPixelsOver > t.maxColourPixelsOver,
+                      "pixels with a channel |\xCE\x94| over " + std::to_string(t.colourThreshold) +
+                          "; allowed: " + std::to_string(t.maxColourPixelsOver));
     row += numberCell(colourMax, std::to_string(colourMax), colourMax > t.colourThreshold,
                       "RGBA " + rgbaText(c.colourMaxDelta) + "; threshold " + std::to_string(t.colourThreshold));
     row += numberCell(colourMean, fixed("%.4f", colourMean), false, "RGBA " + meanText(c.colourMeanDelta));
     row += numberCell(c.psnr, psnrText(c.psnr), false);
+    row += numberCell(double(c.depthPixelsOver), std::to_string(c.depthPixelsOver), c.depthPixelsOver > t.maxDepthPixelsOver,
+                      fixed("pixels with depth |\xCE\x94| over %.9g", t.depthThreshold) +
+                          "; allowed: " + std::to_string(t.maxDepthPixelsOver));
     row += numberCell(c.depthMaxDelta, fixed("%.3g", c.depthMaxDelta), c.depthMaxDelta > t.depthThreshold,
                       fixed("threshold %.9g", t.depthThreshold));
     row += numberCell(r.softMilliseconds, fixed("%.2f", r.softMilliseconds), false);
     row += numberCell(r.vulkanMilliseconds, fixed("%.2f", r.vulkanMilliseconds), false);
   } else {
-    for (int i = 0; i < 7; ++i) row += emptyCell();
+    for (int i = 0; i < 9; ++i) row += emptyCell();
   }
   return row + "</tr>\n";
+}
+
+// The lines an expectations file would need for this run's unexpected results to be expected
+// (run/expectations.hpp's format); an UnexpectedPass is a comment: its line is to be removed.
+std::string expectationsLines(const RunResults& run) {
+  std::string lines;
+  for (const std::size_t i : worstFirst(run.scenes)) {
+    const SceneResult& r = run.scenes[i];
+    if (!isUnexpected(r.outcome)) continue;
+    if (r.outcome == Outcome::UnexpectedPass) {
+      lines += "# " + r.entry.name + " passes now: remove its line" +
+               (r.expectation ? " (expectations line " + std::to_string(r.expectation->line) + ")" : std::string()) + "\n";
+      continue;
+    }
+    std::string reason = resultDetail(r);
+    std::replace(reason.begin(), reason.end(), '\n', ' ');
+    lines += r.entry.name + "," + std::string(outcomeName(r.actual)) + (reason.empty() ? "" : " # " + reason) + "\n";
+  }
+  return lines;
+}
+
+// The command that reproduces one scene: compare with the run's options that change a render.
+std::string reproduceCommand(const RunResults& run, const SceneResult& r) {
+  std::string command = "crosscheck compare " + r.entry.path.generic_string();
+  std::istringstream words(run.commandLine);
+  std::vector<std::string> tokens{std::istream_iterator<std::string>(words), std::istream_iterator<std::string>()};
+  for (std::size_t i = 0; i < tokens.size(); ++i) {
+    const std::string& t = tokens[i];
+    if (t == "--validation") command += " " + t;
+    const bool takesValue = t == "--softraster-fma" || t == "--device" || t == "--set";
+    if (takesValue && i + 1 < tokens.size()) command += " " + t + " " + tokens[++i];
+    for (const char* option : {"--softraster-fma=", "--device=", "--set="}) {
+      if (t.rfind(option, 0) == 0) command += " " + t;
+    }
+  }
+  return command + " --out out/" + r.entry.name;
 }
 
 std::string metricRow(const std::string& metric, const std::string& measured, const std::string& allowed, bool over) {
@@ -201,9 +266,10 @@ std::string depthLegend(double threshold) {
          "<span><i class=\"swatch sw-coverage\"></i>NaN in one only</span></div>";
 }
 
-std::string sceneSection(const SceneResult& r, std::size_t position, bool open) {
+std::string sceneSection(const RunResults& run, const SceneResult& r, std::size_t position, bool open,
+                         const std::filesystem::path& reportDir) {
   std::string s = "<details class=\"scene st-" + std::string(outcomeName(r.outcome)) + "\" id=\"s-" + std::to_string(position) +
-                  "\" data-name=\"" + e(r.entry.name) + "\" data-w=\"" + std::to_string(r.width) + "\" data-h=\"" +
+                  "\"" + filterAttributes(r) + " data-w=\"" + std::to_string(r.width) + "\" data-h=\"" +
                   std::to_string(r.height) + "\"";
   if (!r.pixelData.empty()) s += " data-pixels=\"" + url(r.pixelData) + "\"";
   s += open ? " open>" : ">";
@@ -213,6 +279,14 @@ std::string sceneSection(const SceneResult& r, std::size_t position, bool open) 
   if (!detail.empty() && r.actual != Outcome::Crash) s += "<span class=\"brief\">" + e(detail) + "</span>";
   s += "</summary>\n<div class=\"scene-body\">\n";
   if (!r.description.empty()) s += "<p class=\"desc\">" + e(r.description) + "</p>\n";
+  // The scene file, linked relative to the report (so the link survives moving both together).
+  std::error_code ec;
+  const std::filesystem::path scenePath = std::filesystem::absolute(r.entry.path, ec);
+  const std::filesystem::path relative =
+      reportDir.empty() || ec ? scenePath : std::filesystem::relative(scenePath, std::filesystem::absolute(reportDir, ec), ec);
+  s += "<p class=\"run\">scene file <a href=\"" + url(relative.empty() ? scenePath : relative) + "\">" +
+       e(r.entry.path.generic_string()) + "</a> \xC2\xB7 <a href=\"" + anchorOf(r) + "\">link to this scene</a>"
+       " \xC2\xB7 reproduce: <code class=\"reproduce\">" + e(reproduceCommand(run, r)) + "</code></p>\n";
   if (r.expectation) {
     s += "<p class=\"expect\">expected " + std::string(outcomeName(r.expectation->outcome)) + " (expectations line " +
          std::to_string(r.expectation->line) + ")" + (r.expectation->reason.empty() ? "" : ": " + e(r.expectation->reason)) +
@@ -249,6 +323,16 @@ std::string sceneSection(const SceneResult& r, std::size_t position, bool open) 
                              "<button type=\"button\" class=\"flick\">flicker</button>",
                   " class=\"flicker\" data-showing=\"a\" data-a=\"" + url(soft->file) + "\" data-b=\"" + url(vulkan->file) + "\"") +
            "</div>\n";
+      // Onion skin (Vulkan over softraster, its opacity on the slider) and wipe (Vulkan right of the slider).
+      const std::uint32_t zoom = defaultZoom(r);
+      const std::string size = "width=\"" + std::to_string(r.width) + "\" height=\"" + std::to_string(r.height) + "\"" +
+                               (zoom ? " style=\"width:" + std::to_string(zoom * r.width) + "px\"" : std::string());
+      s += "<div class=\"views\"><figure><figcaption>compare: <select class=\"blend-mode\"><option value=\"onion\">onion skin"
+           "</option><option value=\"wipe\">wipe</option></select> softraster <input type=\"range\" class=\"blend-amount\" "
+           "min=\"0\" max=\"100\" value=\"50\" aria-label=\"how much of Vulkan shows\"> Vulkan</figcaption><div class=\"view"
+           + std::string(zoom ? " zoomed" : "") + "\"><div class=\"stack\"><img loading=\"lazy\" src=\"" + url(soft->file) + "\" " +
+           size + " alt=\"softraster\"><img class=\"stack-top\" loading=\"lazy\" src=\"" + url(vulkan->file) + "\" " + size +
+           " alt=\"Vulkan over softraster\" style=\"opacity:0.5\"></div><div class=\"marker\"></div></div></figure></div>\n";
     }
     s += "</template>\n";
   }
@@ -291,7 +375,7 @@ std::vector<std::size_t> worstFirst(const std::vector<SceneResult>& results) {
   return order;
 }
 
-std::string reportHtml(const RunResults& run) {
+std::string reportHtml(const RunResults& run, const std::filesystem::path& reportDir) {
   const std::vector<SceneResult>& results = run.scenes;
   const Counts counts = countResults(results);
   const std::vector<std::size_t> order = worstFirst(results);
@@ -314,20 +398,61 @@ std::string reportHtml(const RunResults& run) {
   html += " \xC2\xB7 " + e(fixed("%.2f s", run.seconds)) + " with " + std::to_string(run.jobs) + (run.jobs == 1 ? " job" : " jobs");
   if (run.finished != 0) html += " \xC2\xB7 " + e(utcTime(run.finished, "%Y-%m-%d %H:%M:%S UTC"));
   if (!run.commandLine.empty()) html += "<br><code>" + e(run.commandLine) + "</code>";
+  if (!run.junitFile.empty()) {
+    std::error_code ec;
+    const std::filesystem::path junit = std::filesystem::absolute(run.junitFile, ec);
+    const std::filesystem::path relative =
+        reportDir.empty() || ec ? junit : std::filesystem::relative(junit, std::filesystem::absolute(reportDir, ec), ec);
+    html += "<br>JUnit: <a href=\"" + url(relative.empty() ? junit : relative) + "\">" + e(run.junitFile.generic_string()) + "</a>";
+  }
   html += "</p>\n";
 
-  html += "<h2>Summary</h2>\n<table id=\"summary\" class=\"summary\">\n<thead><tr>"
+  // Everything unexpected, at the top, with its renders and what went wrong.
+  std::string attention;
+  std::size_t unexpected = 0;
+  for (const std::size_t i : order) {
+    const SceneResult& r = results[i];
+    if (!isUnexpected(r.outcome)) continue;
+    ++unexpected;
+    const std::string detail = resultDetail(r);
+    attention += "<li" + filterAttributes(r) + ">" + badge(r.outcome) + " <a href=\"" + anchorOf(r) + "\">" + e(r.entry.name) +
+                 "</a> <span class=\"thumbs\">" + thumbnail(r, "soft", "softraster") + thumbnail(r, "vulkan", "Vulkan") +
+                 thumbnail(r, "diff", "difference") + "</span><div class=\"brief\">" + e(detail) + "</div></li>\n";
+  }
+  if (unexpected) {
+    html += "<h2>Unexpected results (" + std::to_string(unexpected) + ")</h2>\n<ul id=\"attention\" class=\"attention\">\n" +
+            attention + "</ul>\n";
+    html += "<details class=\"expectations\"><summary>Expectations lines for these results</summary><p class=\"run\">"
+            "To accept them as known, add these lines to the expectations file (format: SCENE,STATUS # reason)."
+            " <button type=\"button\" id=\"copy-expectations\">copy</button> <span id=\"copy-status\"></span></p>"
+            "<textarea id=\"expectations-lines\" readonly rows=\"" + std::to_string(std::min<std::size_t>(unexpected, 12) + 1) +
+            "\" spellcheck=\"false\">" + e(expectationsLines(run)) + "</textarea></details>\n";
+  }
+
+  html += "<h2>Summary</h2>\n<div class=\"filters\" id=\"filters\"><label>find <input type=\"search\" id=\"filter-name\" "
+          "placeholder=\"scene name\"></label><label><input type=\"checkbox\" id=\"filter-unexpected\"> only unexpected</label>"
+          "<span class=\"status-filters\">";
+  for (Outcome s : kAllOutcomes) {
+    if (!counts.of(s)) continue;
+    html += "<label><input type=\"checkbox\" class=\"filter-status\" value=\"" + std::string(outcomeName(s)) + "\" checked> " +
+            std::string(outcomeName(s)) + " (" + std::to_string(counts.of(s)) + ")</label>";
+  }
+  html += "</span><span id=\"filter-count\" class=\"run\"></span></div>\n";
+  html += "<table id=\"summary\" class=\"summary\">\n<thead><tr>"
           "<th data-type=\"number\" data-first=\"ascending\" aria-sort=\"ascending\" title=\"worst first\">status</th>"
+          "<th data-type=\"none\">render</th>"
           "<th data-type=\"text\" data-first=\"ascending\">scene</th>"
           "<th data-type=\"number\" title=\"pixels covered by one renderer only\">coverage mismatches</th>"
+          "<th data-type=\"number\" title=\"pixels with a channel over the colour threshold\">colour pixels over</th>"
           "<th data-type=\"number\" title=\"largest over R, G, B, A (8-bit steps)\">colour max |\xCE\x94|</th>"
           "<th data-type=\"number\" title=\"largest channel mean (8-bit steps)\">colour mean |\xCE\x94|</th>"
           "<th data-type=\"number\" data-first=\"ascending\" title=\"RGB, dB; lowest first\">PSNR</th>"
+          "<th data-type=\"number\" title=\"pixels with depth over the depth threshold\">depth pixels over</th>"
           "<th data-type=\"number\">depth max |\xCE\x94|</th>"
           "<th data-type=\"number\">softraster ms</th>"
           "<th data-type=\"number\">Vulkan ms</th>"
           "</tr></thead>\n<tbody>\n";
-  for (std::size_t rank = 0; rank < order.size(); ++rank) html += summaryRow(results[order[rank]], order[rank], rank);
+  for (std::size_t rank = 0; rank < order.size(); ++rank) html += summaryRow(results[order[rank]], rank);
   html += "</tbody>\n</table>\n";
   html += "<h2>Difference heatmaps</h2>\n" + colourLegend("T") +
           "<p class=\"run\">T is the scene's colour threshold (8-bit steps); each scene's section shows its own. "
@@ -339,14 +464,14 @@ std::string reportHtml(const RunResults& run) {
     const SceneResult& r = results[position];
     const bool open = isUnexpected(r.outcome) && !r.images.empty() && opened < 3;
     opened += open;
-    html += sceneSection(r, position, open);
+    html += sceneSection(run, r, position, open, reportDir);
   }
   html += "<script>\n" + std::string(report_assets::kScript) + "</script>\n</body>\n</html>\n";
   return html;
 }
 
 softraster::Status writeReport(const std::filesystem::path& dir, const RunResults& run) {
-  return writeDocument(dir / "index.html", reportHtml(run), "report");
+  return writeDocument(dir / "index.html", reportHtml(run, dir), "report");
 }
 
 }  // namespace crosscheck

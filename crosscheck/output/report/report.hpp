@@ -1,16 +1,20 @@
 // The HTML comparison report: DIR/index.html, one self-contained page (inline CSS and script, no
 // network) over the scenes' PNGs in DIR/<scene>/ (written by artifacts.hpp). A summary table of
-// every scene, sortable, worst first; per scene a collapsed section with softraster, Vulkan and
-// the diff heatmap side by side with a legend, both depth views and their difference, a flicker
-// toggle, nearest-neighbour zoom and the values of both images under the pointer, the description
-// and the tolerance. A section's images are in a <template> until it is first opened, and then
+// every scene, sortable, worst first, with a thumbnail, the error line of a Crash and the counts
+// that decide a result, filtered by status, by name and to "only unexpected"; every unexpected
+// result listed at the top with thumbnails, and its expectations lines to copy; per scene a
+// collapsed section (anchor #scene=NAME) with its scene file, the command that reproduces it,
+// softraster, Vulkan and the diff heatmap side by side with a legend, both depth views and their
+// difference, flicker, onion skin and wipe, nearest-neighbour zoom and the values of both images
+// under the pointer, the description and the tolerance. A section's images are in a <template> until it is first opened, and then
 // load lazily, so 100 scenes stay fast; the page's script is needed to see them.
 // The value readout reads DIR/<scene>/pixels.js (writePixelData): raw RGBA8 and float depth of
 // both frames, zlib-compressed and base64-encoded, loaded with a <script> element because a canvas
 // cannot read PNGs back on a page opened from file://.
 // The page reads a run's results (results.hpp) only; the pixel data is written from the frames
 // while they exist, during the run.
-// Deliberately no charts, no history across runs and no server.
+// Deliberately no charts, no history across runs (a baseline comparison needs results.json) and
+// no server.
 #pragma once
 
 #include "render/render.hpp"
@@ -38,8 +42,11 @@ softraster::Status writePixelData(const std::filesystem::path& root, const std::
 // (lowest first) and name.
 std::vector<std::size_t> worstFirst(const std::vector<SceneResult>& results);
 
-// The header shows the counts, the run's time and jobs, when it finished (UTC) and its command line.
-std::string reportHtml(const RunResults& run);
+// The header shows the counts, the run's time and jobs, when it finished (UTC), its command line
+// and the JUnit file; then every unexpected result with thumbnails and the expectations lines
+// that would accept them, the filters, and the summary table. Links to scene files and the JUnit
+// file are relative to `reportDir` (the folder index.html is written to; empty: absolute).
+std::string reportHtml(const RunResults& run, const std::filesystem::path& reportDir = {});
 
 // Writes dir/index.html; the error is "FILE: cannot write report: reason".
 softraster::Status writeReport(const std::filesystem::path& dir, const RunResults& run);

@@ -1,5 +1,6 @@
-/* crosscheck report: sorts the summary table, opens scene sections, zoom, flicker and the pixel
-   value readout, and the self-check that index.html?check runs (used by the Chromium test).
+/* crosscheck report: sorts and filters the summary table (status, name, only unexpected), opens
+   scene sections, zoom, flicker, onion skin and wipe, the pixel value readout, copying the
+   expectations lines, and the self-check that index.html?check runs (used by the Chromium test).
    Embedded inline into index.html by report.cpp. No network and no libraries: the readout's pixel
    data comes from each scene's pixels.js, loaded with a <script> element (which works from
    file://, where reading a PNG back through a canvas does not), as zlib data inflated by the
@@ -30,6 +31,7 @@
   }
   if (table) {
     forEach(table.tHead.rows[0].cells, function (th, column) {
+      if (th.getAttribute('data-type') === 'none') return;  // the thumbnails
       th.tabIndex = 0;
       var sort = function () {
         var first = th.getAttribute('data-first') || 'descending';
@@ -40,6 +42,49 @@
       th.addEventListener('keydown', function (e) {
         if (e.key === 'Enter' || e.key === ' ') { e.preventDefault(); sort(); }
       });
+    });
+  }
+
+  // ---- filters: status checkboxes, a name search and "only unexpected", over the table rows,
+  //      the list of unexpected results and the scene sections alike ----
+  var nameFilter = document.getElementById('filter-name');
+  var unexpectedFilter = document.getElementById('filter-unexpected');
+  function applyFilters() {
+    var statuses = {};
+    forEach(document.querySelectorAll('input.filter-status'), function (box) { statuses[box.value] = box.checked; });
+    var needle = nameFilter ? nameFilter.value.trim().toLowerCase() : '';
+    var onlyUnexpected = unexpectedFilter && unexpectedFilter.checked;
+    var shown = 0, total = 0;
+    forEach(document.querySelectorAll('[data-status][data-name]'), function (el) {
+      var visible = statuses[el.getAttribute('data-status')] !== false &&
+                    (!onlyUnexpected || el.getAttribute('data-unexpected') === '1') &&
+                    el.getAttribute('data-name').toLowerCase().indexOf(needle) !== -1;
+      el.hidden = !visible;
+      if (el.tagName === 'TR') { ++total; if (visible) ++shown; }
+    });
+    var count = document.getElementById('filter-count');
+    if (count) count.textContent = shown === total ? '' : shown + ' of ' + total + ' scenes shown';
+  }
+  forEach(document.querySelectorAll('#filters input'), function (input) {
+    input.addEventListener('input', applyFilters);
+    input.addEventListener('change', applyFilters);
+  });
+
+  // ---- copying the expectations lines (the textarea stays selectable where the clipboard is refused) ----
+  var copyButton = document.getElementById('copy-expectations');
+  if (copyButton) {
+    copyButton.addEventListener('click', function () {
+      var text = document.getElementById('expectations-lines');
+      var status = document.getElementById('copy-status');
+      var done = function () { status.textContent = 'copied'; };
+      var fallback = function () {
+        text.focus();
+        text.select();
+        try { status.textContent = document.execCommand('copy') ? 'copied' : 'selected: press Ctrl+C'; }
+        catch (err) { status.textContent = 'selected: press Ctrl+C'; }
+      };
+      if (navigator.clipboard && window.isSecureContext) navigator.clipboard.writeText(text.value).then(done, fallback);
+      else fallback();
     });
   }
 
@@ -74,7 +119,9 @@
   };
   function loadPixels(section) {
     var name = section.getAttribute('data-name');
-    if (!section.hasAttribute('data-pixels')) return Promise.reject(new Error('no pixel data for ' + name));
+    if (!section.hasAttribute('data-pixels')) {
+      return Promise.reject(new Error('no pixel values kept for ' + name + ' (they are written for scenes outside the tolerance)'));
+    }
     if (!pixelPromises[name]) {
       pixelPromises[name] = new Promise(function (resolve, reject) {
         pending[name] = { resolve: resolve, reject: reject };
@@ -130,9 +177,9 @@
   function applyZoom(section, value) {
     var w = +section.getAttribute('data-w');
     forEach(section.querySelectorAll('.view'), function (view) {
-      var img = view.querySelector('img');
-      if (value === 'fit') { view.classList.remove('zoomed'); img.style.width = ''; }
-      else { view.classList.add('zoomed'); img.style.width = (w * +value) + 'px'; }
+      if (value === 'fit') view.classList.remove('zoomed');
+      else view.classList.add('zoomed');
+      forEach(view.querySelectorAll('img'), function (img) { img.style.width = value === 'fit' ? '' : (w * +value) + 'px'; });
     });
     placeMarkers(section, -1, -1, 0);
   }
@@ -146,6 +193,17 @@
     if (zoom) {
       zoom.addEventListener('change', function () { applyZoom(section, zoom.value); });
       if (zoom.value !== 'fit') applyZoom(section, zoom.value);
+    }
+    var blendMode = section.querySelector('select.blend-mode'), blendAmount = section.querySelector('input.blend-amount');
+    if (blendMode && blendAmount) {
+      var top = section.querySelector('img.stack-top');
+      var blend = function () {
+        var amount = +blendAmount.value;
+        if (blendMode.value === 'onion') { top.style.opacity = amount / 100; top.style.clipPath = ''; }
+        else { top.style.opacity = 1; top.style.clipPath = 'inset(0 0 0 ' + (100 - amount) + '%)'; }
+      };
+      blendAmount.addEventListener('input', blend);
+      blendMode.addEventListener('change', blend);
     }
     var views = section.querySelectorAll('.view');
     forEach(views, function (view) {
@@ -234,10 +292,11 @@
   // restores the default order; and swaps the first flicker view, returning the image it shows.
   function sortProbe() {
     if (!table) return '';
-    var headers = table.tHead.rows[0].cells;
-    headers[1].click();
-    headers[1].click();
-    var names = Array.prototype.map.call(table.tBodies[0].rows, function (row) { return row.cells[1].getAttribute('data-v'); });
+    var headers = table.tHead.rows[0].cells, scene = 0;
+    forEach(headers, function (th, column) { if (th.textContent === 'scene') scene = column; });
+    headers[scene].click();
+    headers[scene].click();
+    var names = Array.prototype.map.call(table.tBodies[0].rows, function (row) { return row.cells[scene].getAttribute('data-v'); });
     headers[0].click();
     if (headers[0].getAttribute('aria-sort') !== 'ascending') headers[0].click();
     return names.join(',');
@@ -249,6 +308,18 @@
     var shown = img.getAttribute('src');
     img.closest('details.scene').querySelector('button.swap').click();
     return shown;
+  }
+  // Filters: "only unexpected", then the name "depth", then back; returns the visible row counts.
+  function filterProbe() {
+    if (!table || !unexpectedFilter || !nameFilter) return '';
+    var visible = function () {
+      return Array.prototype.filter.call(table.tBodies[0].rows, function (row) { return !row.hidden; }).length;
+    };
+    var counts = [visible()];
+    unexpectedFilter.checked = true; applyFilters(); counts.push(visible());
+    unexpectedFilter.checked = false; nameFilter.value = 'depth'; applyFilters(); counts.push(visible());
+    nameFilter.value = ''; applyFilters();
+    return counts.join(',');
   }
   function selfCheck() {
     body.setAttribute('data-check', 'running');
@@ -274,6 +345,10 @@
       body.setAttribute('data-summary-rows', table ? String(table.tBodies[0].rows.length) : '0');
       body.setAttribute('data-sort-probe', sortProbe());
       body.setAttribute('data-flicker-probe', flickerProbe());
+      body.setAttribute('data-filter-probe', filterProbe());
+      var lines = document.getElementById('expectations-lines');
+      body.setAttribute('data-expectations-lines', lines ? lines.value.replace(/\n/g, ' | ') : '');
+      body.setAttribute('data-thumbnails', String(document.querySelectorAll('img.thumb').length));
       return readoutProbe();
     }).then(function (readout) {
       body.setAttribute('data-readout', readout);
