@@ -143,7 +143,8 @@ int runSuite(const SuiteCommand& command, const SuiteOutputs& outputs) {
   if (!outputs.imageDir.empty()) {
     options.onFrames = [&](SceneResult& result, const Scene& scene, const Frame& soft, const Frame& vulkan) {
       const std::filesystem::path folder = result.entry.name;
-      const Status images = writeSceneImages(outputs.imageDir, folder, &result, scene, soft, vulkan);
+      const Status images = writeSceneImages(outputs.imageDir, folder, &result, scene, soft, vulkan,
+                                             outputs.pixelData ? SceneImageSet::Compact : SceneImageSet::All);
       // The report's value readout data is most of its size: kept only where the renders differ
       // beyond the tolerance, where a person will look.
       if (!images || !outputs.pixelData || result.comparison->passed()) return images;

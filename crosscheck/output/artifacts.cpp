@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstring>
 
 namespace crosscheck {
 
@@ -21,8 +22,33 @@ std::pair<float, float> sharedDepthRange(const Frame& soft, const Frame& vulkan,
   return {0.0f, 1.0f};
 }
 
+// Bit-identical colour and depth (depth compared as bits, so NaN equals NaN and -0 differs from 0).
+bool identicalFrames(const Frame& a, const Frame& b) {
+  return a.width == b.width && a.height == b.height && a.rgba == b.rgba && a.depth.size() == b.depth.size() &&
+         std::memcmp(a.depth.data(), b.depth.data(), a.depth.size() * sizeof(float)) == 0;
+}
+
+// RGBA averaged over factor x factor blocks (partial blocks at the right and bottom edges), rounded.
+std::vector<std::uint8_t> boxDownscale(const Frame& frame, std::uint32_t factor) {
+  const std::uint32_t w = (frame.width + factor - 1) / factor, h = (frame.height + factor - 1) / factor;
+  std::vector<std::uint8_t> out(std::size_t{w} * h * 4);
+  for (std::uint32_t y = 0; y < h; ++y) {
+    for (std::uint32_t x = 0; x < w; ++x) {
+      std::uint32_t sum[4] = {0, 0, 0, 0}, n = 0;
+      for (std::uint32_t sy = y * factor; sy < std::min(frame.height, (y + 1) * factor); ++sy) {
+        for (std::uint32_t sx = x * factor; sx < std::min(frame.width, (x + 1) * factor); ++sx, ++n) {
+          for (int c = 0; c < 4; ++c) sum[c] += frame.rgba[(std::size_t{sy} * frame.width + sx) * 4 + c];
+        }
+      }
+      for (int c = 0; c < 4; ++c) out[(std::size_t{y} * w + x) * 4 + c] = static_cast<std::uint8_t>((sum[c] + n / 2) / n);
+    }
+  }
+  return out;
+}
+
 softraster::Status writeSceneImages(const std::filesystem::path& root, const std::filesystem::path& folder,
-                                    SceneResult* result, const Scene& scene, const Frame& soft, const Frame& vulkan) {
+                                    SceneResult* result, const Scene& scene, const Frame& soft, const Frame& vulkan,
+                                    SceneImageSet set) {
   const auto [lo, hi] = sharedDepthRange(soft, vulkan, scene.clearDepth);
   result->depthViewRange = {lo, hi};
   result->imageRoot = root;
@@ -34,6 +60,14 @@ softraster::Status writeSceneImages(const std::filesystem::path& root, const std
     if (status) result->images.push_back({kind, relative});
     return status.ok();
   };
+  if (set == SceneImageSet::Compact && identicalFrames(soft, vulkan)) {
+    const std::uint32_t factor = std::max<std::uint32_t>(1, (std::max(soft.width, soft.height) + kPreviewSize - 1) / kPreviewSize);
+    const std::filesystem::path relative = folder / "preview.png";
+    status = writePng(root / relative, (soft.width + factor - 1) / factor, (soft.height + factor - 1) / factor,
+                      boxDownscale(soft, factor));
+    if (status) result->images.push_back({"preview", relative});
+    return status;
+  }
   // Stops at the first image that cannot be written (the later ones are not even computed).
   static_cast<void>(write("soft", "soft.png", soft, soft.rgba) && write("vulkan", "vulkan.png", vulkan, vulkan.rgba) &&
                     write("diff", "diff.png", soft, diffHeatmap(soft, vulkan, scene)) &&

@@ -12,6 +12,7 @@
 
 #include <softraster/status.hpp>
 
+#include <cstdint>
 #include <filesystem>
 #include <utility>
 
@@ -22,10 +23,18 @@ namespace crosscheck {
 // clear depth (so the drawing stands out); (0, 1) when nothing was drawn.
 std::pair<float, float> sharedDepthRange(const Frame& soft, const Frame& vulkan, float clearDepth);
 
-// Writes the six images into root / folder and records them (and the depth range) in *result.
+// Which images a scene gets: all six, or (Compact, for the report) when both frames are
+// bit-identical in colour and depth only "preview": preview.png, the colour box-filtered down to
+// at most kPreviewSize pixels on its longer side (nothing differs, so there is nothing to look at
+// closely, and a suite that passes makes a small report); all six otherwise.
+enum class SceneImageSet { All, Compact };
+inline constexpr std::uint32_t kPreviewSize = 160;
+
+// Writes the images into root / folder and records them (and the depth range) in *result.
 // The error is "FILE: cannot write PNG".
 softraster::Status writeSceneImages(const std::filesystem::path& root, const std::filesystem::path& folder,
-                                    SceneResult* result, const Scene& scene, const Frame& soft, const Frame& vulkan);
+                                    SceneResult* result, const Scene& scene, const Frame& soft, const Frame& vulkan,
+                                    SceneImageSet set = SceneImageSet::All);
 
 // The compare command's --out DIR: soft.png, vulkan.png, diff.png, and soft.depth.png and
 // vulkan.depth.png each over its own range (depthToGrey's default); no depth difference.

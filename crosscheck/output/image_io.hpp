@@ -10,7 +10,8 @@
 
 namespace crosscheck {
 
-// Writes RGBA8 pixels (creating the folder); the error is "FILE: cannot write PNG".
+// Writes RGBA8 pixels (creating the folder), as RGB when every alpha is 255, compressed with zlib
+// at its best level; the error is "FILE: cannot write PNG".
 softraster::Status writePng(const std::filesystem::path& path, std::uint32_t width, std::uint32_t height,
                             const std::vector<std::uint8_t>& rgba);
 

@@ -64,15 +64,15 @@ grep -q 'data-js-errors=' "$artifacts/dom.html" && fail "script errors: $(grep -
 [ "$(attr data-check)" = done ] || fail "the self-check did not finish: '$(attr data-check)'"
 loaded=$(attr data-images-loaded)
 [ "$(attr data-images-failed)" = 0 ] || fail "images failed to load: $(attr data-images-failed-list)"
-# Per scene that rendered: nine views (soft, vulkan, diff, two depth views, depth diff, flicker,
-# the onion/wipe pair) and a thumbnail in the table; three thumbnails more for the one that
-# failed, at the top. Pixel data only for the scene outside its tolerance (depth_slope).
-rendered=2
-images=$((10 * rendered + 3))
+# depth_slope (failed): nine views (soft, vulkan, diff, two depth views, depth diff, flicker, the
+# onion/wipe pair), a thumbnail in the table and three at the top; flat_triangle (passed,
+# bit-identical): its preview and the preview as its thumbnail. Pixel data only for the scene outside its tolerance.
+images=$((9 + 1 + 3 + 2))
 [ "$loaded" = "$images/$images" ] || fail "images loaded: $loaded, expected $images of $images"
 [ "$(attr data-thumbnails)" = 5 ] || fail "thumbnails: $(attr data-thumbnails), expected 5"
 [ "$(attr data-pixels-loaded)" = "1/1" ] || fail "pixel data loaded: $(attr data-pixels-loaded) $(attr data-pixels-errors)"
 [ ! -e "$artifacts/site/flat_triangle/pixels.js" ] || fail "pixel data written for a scene that passed"
+[ "$(ls "$artifacts/site/flat_triangle")" = preview.png ] || fail "a bit-identical scene has more than preview.png: $(ls "$artifacts/site/flat_triangle")"
 # Filters: every row, only unexpected (depth_slope, broken_obj), then the name "depth".
 [ "$(attr data-filter-probe)" = "4,2,1" ] || fail "filter probe: '$(attr data-filter-probe)', expected 4,2,1"
 attr data-expectations-lines | grep -qE '^broken_obj,Crash # .*broken_obj.* \| depth_slope,Fail # .*depth_pixels_over [0-9]+ &gt; 0 .* \| $' ||

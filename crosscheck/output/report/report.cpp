@@ -1,6 +1,7 @@
 // The HTML report and its pixel data (see report.hpp).
 #include "output/report/report.hpp"
 
+#include "output/artifacts.hpp"  // kPreviewSize
 #include "output/markup.hpp"
 #include "output/summary.hpp"
 #include "report_assets.hpp"  // generated from report.css and report.js
@@ -113,6 +114,7 @@ std::string anchorOf(const SceneResult& r) { return "#scene=" + e(encodeUrlPath(
 // A small render of the scene (its PNG, scaled by the browser), or nothing when none was written.
 std::string thumbnail(const SceneResult& r, std::string_view kind, const std::string& title) {
   const SceneImage* image = imageOf(r, kind);
+  if (!image && kind == "soft") image = imageOf(r, "preview");  // a bit-identical scene's one image
   if (!image) return "";
   return "<img class=\"thumb\" loading=\"lazy\" decoding=\"async\" src=\"" + url(image->file) + "\" alt=\"" +
          e(title + " of " + r.entry.name) + "\" title=\"" + e(title) + "\">";
@@ -294,7 +296,15 @@ std::string sceneSection(const RunResults& run, const SceneResult& r, std::size_
   }
   if (!r.error.empty()) s += "<p class=\"error\">" + e(r.error) + "</p>\n";
   s += metricsTable(r);
-  if (!r.images.empty()) {
+  if (const SceneImage* preview = imageOf(r, "preview")) {
+    // Compact (artifacts.hpp): both frames bit-identical, so a preview and nothing to compare.
+    s += "<template class=\"scene-views\"><figure><figcaption>softraster = Vulkan (lavapipe): colour and depth "
+         "bit-identical; a preview (at most " + std::to_string(kPreviewSize) + " pixels wide or tall) of the " +
+         std::to_string(r.width) + "\xC3\x97" + std::to_string(r.height) + " frame</figcaption><img class=\"preview\" "
+         "loading=\"lazy\" src=\"" + url(preview->file) + "\" alt=\"" + e("preview of " + r.entry.name) + "\"></figure>"
+         "<p class=\"run\">Nothing differs, so no other views or pixel values were kept; the command above writes "
+         "them all.</p></template>\n";
+  } else if (!r.images.empty()) {
     // The images live in a <template> until the section is first opened: 100 scenes of closed
     // sections then cost the page no image elements, requests or layout.
     s += "<noscript><p class=\"run\">Images: the files in " + e(r.entry.name) +
