@@ -1,10 +1,10 @@
 // crosscheck: the command line. Renders scenes with softraster and with Vulkan (lavapipe),
 // compares them within each scene's tolerance and writes the images:
 //   crosscheck render SCENE --renderer soft|vulkan -o OUT.png [--depth-out OUT.png]
-//   crosscheck compare SCENE [--out DIR] [--json]
-//   crosscheck conformance [SCENE|DIR ...] [--expectations FILE] [--jobs N] [--shard I/N] [--junit FILE] [--out DIR]
+//   crosscheck compare SCENE [-o DIR] [--json]
+//   crosscheck conformance [SCENE|DIR ...] [--expectations FILE] [--jobs N] [--shard I/N] [--junit FILE] [-o DIR]
 //   crosscheck report [SCENE|DIR ...] -o DIR [--expectations FILE] [--jobs N] [--shard I/N] [--junit FILE]
-//   crosscheck bench [SCENE|DIR ...] [--frames N] [--warmup N] [--threads N] [--json FILE]
+//   crosscheck bench [SCENE|DIR ...] [--frames N] [--warmup N] [--threads N] [-o FILE.json]
 // render and compare also take --method exact|exact-scalar and --threads N (softraster's).
 // Exit status (README, "Exit status"): 0 success / within tolerance / nothing unexpected; 1
 // outside tolerance or an unexpected conformance result; 2 anything that kept the comparison from
@@ -42,11 +42,11 @@ constexpr unsigned kMaxThreads = 1024;
 
 constexpr const char* kUsage =
     "usage: crosscheck render SCENE --renderer soft|vulkan -o OUT.png [--depth-out OUT.png]\n"
-    "       crosscheck compare SCENE [--out DIR] [--json]\n"
+    "       crosscheck compare SCENE [-o DIR] [--json]\n"
     "       crosscheck conformance [SCENE|DIR ...] [--expectations FILE] [--jobs N] [--shard I/N] [--junit FILE] "
-    "[--out DIR]\n"
+    "[-o DIR]\n"
     "       crosscheck report [SCENE|DIR ...] -o DIR [--expectations FILE] [--jobs N] [--shard I/N] [--junit FILE]\n"
-    "       crosscheck bench [SCENE|DIR ...] [--frames N] [--warmup N] [--threads N] [--json FILE]\n"
+    "       crosscheck bench [SCENE|DIR ...] [--frames N] [--warmup N] [--threads N] [-o FILE.json]\n"
     "       (crosscheck SUBCOMMAND --help for every option)";
 
 // Flags several subcommands share, as typed.
@@ -119,7 +119,9 @@ int main(int argc, char** argv) {
 
   CLI::App* render = app.add_subcommand("render", "Render one scene with one renderer");
   render->add_option("SCENE", scenePath, "Scene file")->required();
-  render->add_option("--renderer", renderer, "soft or vulkan")->check(CLI::IsMember({"soft", "vulkan"}));
+  render->add_option("--renderer", renderer, "soft (softraster) or vulkan (lavapipe)")
+      ->check(CLI::IsMember({"soft", "vulkan"}))
+      ->capture_default_str();
   render->add_option("-o,--output", output, "Colour PNG to write")->required();
   render->add_option("--depth-out", depthOutput, "Depth view PNG to write");
   render->add_option("--softraster-depth", common.softrasterDepth,
@@ -132,7 +134,8 @@ int main(int argc, char** argv) {
 
   CLI::App* compare = app.add_subcommand("compare", "Render one scene with both renderers and compare");
   compare->add_option("SCENE", scenePath, "Scene file")->required();
-  compare->add_option("--out", outDir, "Directory for soft.png, vulkan.png, diff.png and depth views");
+  // -o/--output on every subcommand that writes files; --out, the old name, still works.
+  compare->add_option("-o,--output,--out", outDir, "Directory for soft.png, vulkan.png, diff.png and depth views");
   compare->add_flag("--json", json, "Print one JSON object instead of text");
   addCommon(compare);
 
@@ -153,7 +156,7 @@ int main(int argc, char** argv) {
   CLI::App* conformance =
       app.add_subcommand("conformance", "Cross-check every scene of a suite; exit 0 when nothing unexpected happened");
   addSuite(conformance);
-  conformance->add_option("--out", outDir, "Write soft/vulkan/diff/depth PNGs to DIR/<scene>/");
+  conformance->add_option("-o,--output,--out", outDir, "Write soft/vulkan/diff/depth PNGs to DIR/<scene>/");
   CLI::App* reportCommand =
       app.add_subcommand("report", "Run the suite like conformance and write an HTML report to DIR/index.html");
   addSuite(reportCommand);
@@ -170,7 +173,7 @@ int main(int argc, char** argv) {
   benchCommand->add_option("--warmup", warmupText, "Untimed frames per renderer before them (default 3)");
   benchCommand->add_option("--threads", benchThreadsText,
                            "softraster's threads and lavapipe's LP_NUM_THREADS; 0 (default) = every core");
-  benchCommand->add_option("--json", bench.jsonFile, "Write the results as JSON to this file");
+  benchCommand->add_option("-o,--output,--json", bench.jsonFile, "Write the results as JSON to this file");
   addDevice(benchCommand);
 
   // CLI11 would call an unknown subcommand "A subcommand is required" or an extra argument.

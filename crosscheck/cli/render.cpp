@@ -1,5 +1,5 @@
 // crosscheck render: one scene with one renderer, written as a colour PNG and optionally a depth
-// view (see commands.hpp).
+// view (see commands.hpp); says on stdout which renderer drew it and what it wrote.
 #include "cli/commands.hpp"
 
 #include "output/artifacts.hpp"
@@ -46,6 +46,18 @@ int renderCommand(const RenderCommand& command) {
       return fail(written);
     }
   }
+  // What was used and what was written, one line on stdout.
+  std::string used = "softraster";
+  if (command.renderer == "vulkan") {
+    used = "Vulkan (" + (*vulkan)->deviceName() + ")";
+  } else {
+    const softraster::ContextOptions& o = command.options.softraster;
+    used += std::string(" (") + (o.method == softraster::Method::ExactScalar ? "exact-scalar" : "exact") + ", " +
+            (o.threads == 0 ? std::string("every core") : std::to_string(o.threads) + (o.threads == 1 ? " thread" : " threads")) +
+            (o.depthMode == softraster::DepthMode::InverseZ ? ", 1/z depth" : "") + ")";
+  }
+  std::printf("rendered %s with %s: wrote %s%s\n", command.options.scene.c_str(), used.c_str(), command.output.c_str(),
+              command.depthOutput.empty() ? "" : (" and " + command.depthOutput).c_str());
   return 0;
 }
 

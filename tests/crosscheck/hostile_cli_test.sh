@@ -99,6 +99,29 @@ case $case_name in
     expect_status 2
     expect_error '^crosscheck: scenes/lines.json: .*4x MSAA'
     ;;
+  vocabulary)
+    # -o/--output on every subcommand that writes (--out and bench's --json still work); render
+    # says which renderer drew the scene and what it wrote.
+    run render "$room" --renderer soft --threads 1 -o "$artifacts/r.png" --depth-out "$artifacts/r.depth.png"
+    expect_status 0
+    grep -qxF "rendered $room with softraster (exact, 1 thread): wrote $artifacts/r.png and $artifacts/r.depth.png" \
+      "$artifacts/out.txt" || fail "render did not say what it used and wrote"
+    run render "$room" --renderer vulkan -o "$artifacts/v.png"
+    expect_status 0
+    grep -qE "^rendered $room with Vulkan \(.*llvmpipe.*\): wrote $artifacts/v.png$" "$artifacts/out.txt" || fail "render (vulkan)"
+    run render --help
+    grep -qE -- '--renderer .*=soft' "$artifacts/out.txt" || fail "render's usage does not show the default renderer"
+    for option in -o --output --out; do
+      rm -rf "$artifacts/c"
+      run compare tests/data/conformance/flat_triangle.json "$option" "$artifacts/c"
+      expect_status 0
+      [ -s "$artifacts/c/soft.png" ] || fail "compare $option wrote no images"
+      rm -rf "$artifacts/k"
+      run conformance tests/data/conformance/flat_triangle.json "$option" "$artifacts/k"
+      expect_status 0
+      [ -s "$artifacts/k/flat_triangle/soft.png" ] || fail "conformance $option wrote no images"
+    done
+    ;;
   *)
     fail "unknown case $case_name"
     ;;
