@@ -3,7 +3,9 @@
 //   crosscheck render SCENE --renderer soft|vulkan -o OUT.png [--depth-out OUT.png]
 //   crosscheck compare SCENE [-o DIR] [--json]
 //   crosscheck conformance [SCENE|DIR ...] [--expectations FILE] [--jobs N] [--shard I/N] [--junit FILE] [-o DIR]
+//                          [--timeout SECONDS] [--memory-limit MB]
 //   crosscheck report [SCENE|DIR ...] -o DIR [--expectations FILE] [--jobs N] [--shard I/N] [--junit FILE]
+//                     [--timeout SECONDS] [--memory-limit MB]
 //   crosscheck bench [SCENE|DIR ...] [--frames N] [--warmup N] [--threads N] [-o FILE.json]
 // render and compare also take --method exact|exact-scalar and --threads N (softraster's).
 // Exit status (README, "Exit status"): 0 success / within tolerance / nothing unexpected; 1
@@ -38,14 +40,29 @@ std::optional<unsigned> wholeNumber(const char* option, const std::string& text,
   return value;
 }
 
+// A number of seconds in (0, max], or 0; nullopt after printing one error line naming the option.
+std::optional<double> seconds(const char* option, const std::string& text, double max) {
+  double value = 0;
+  const char* end = text.data() + text.size();
+  const auto [ptr, ec] = std::from_chars(text.data(), end, value);
+  if (text.empty() || ec != std::errc() || ptr != end || !(value >= 0 && value <= max)) {
+    std::fprintf(stderr, "crosscheck: %s %s: expected a number of seconds from 0 (none) to %g\n", option, text.c_str(), max);
+    return std::nullopt;
+  }
+  return value;
+}
+
 constexpr unsigned kMaxThreads = 1024;
+constexpr double kMaxTimeoutSeconds = 7 * 24 * 3600;
+constexpr unsigned kMaxMemoryLimitMegabytes = 1u << 26;  // 64 TB
 
 constexpr const char* kUsage =
     "usage: crosscheck render SCENE --renderer soft|vulkan -o OUT.png [--depth-out OUT.png]\n"
     "       crosscheck compare SCENE [-o DIR] [--json]\n"
     "       crosscheck conformance [SCENE|DIR ...] [--expectations FILE] [--jobs N] [--shard I/N] [--junit FILE] "
-    "[-o DIR]\n"
-    "       crosscheck report [SCENE|DIR ...] -o DIR [--expectations FILE] [--jobs N] [--shard I/N] [--junit FILE]\n"
+    "[-o DIR] [--timeout SECONDS] [--memory-limit MB]\n"
+    "       crosscheck report [SCENE|DIR ...] -o DIR [--expectations FILE] [--jobs N] [--shard I/N] [--junit FILE] "
+    "[--timeout SECONDS] [--memory-limit MB]\n"
     "       crosscheck bench [SCENE|DIR ...] [--frames N] [--warmup N] [--threads N] [-o FILE.json]\n"
     "       (crosscheck SUBCOMMAND --help for every option)";
 
@@ -142,13 +159,19 @@ int main(int argc, char** argv) {
   crosscheck::cli::SuiteCommand suite;
   std::string reportDir;
   int jobs = 1;
+  std::string timeoutText = "0", memoryLimitText = std::to_string(crosscheck::kDefaultMemoryLimitMegabytes);
   const auto addSuite = [&](CLI::App* cmd) {
     cmd->add_option("SCENES", suite.inputs,
                     "Scene files and directories (their *.json files); default: scenes/ of the current directory");
     cmd->add_option("--expectations", suite.expectationsFile,
-                    "Known results, lines 'SCENE,STATUS # reason' (SCENE: file stem; STATUS: Pass, Fail, Crash, Skip)");
-    cmd->add_option("-j,--jobs", jobs, "Scenes rendered in parallel (threads, one Vulkan renderer each)")
+                    "Known results, lines 'SCENE,STATUS # reason' (SCENE: file stem; STATUS: Pass, Fail, Crash, Timeout, Skip)");
+    cmd->add_option("-j,--jobs", jobs, "Scenes rendered in parallel (worker processes, one Vulkan renderer each)")
         ->check(CLI::Range(1, 1024));
+    cmd->add_option("--timeout", timeoutText,
+                    "Seconds a scene may take before its worker is killed and it is a Timeout; 0 (default) = none");
+    cmd->add_option("--memory-limit", memoryLimitText,
+                    "Address space of each worker process in MB, past which an allocation fails and the scene is a "
+                    "Crash (out of memory); 0 = none; default " + memoryLimitText);
     cmd->add_option("--shard", suite.shard, "Run slice I of N (1-based: 1/3, 2/3, 3/3); scene k goes to shard k mod N + 1");
     cmd->add_option("--junit", suite.junitFile, "Write JUnit XML to this file");
     addDevice(cmd);
@@ -219,7 +242,13 @@ int main(int argc, char** argv) {
     return crosscheck::cli::renderCommand({common.sceneOptions(scenePath), renderer, output, depthOutput, depthRange});
   }
   if (compare->parsed()) return crosscheck::cli::compareCommand({common.sceneOptions(scenePath), outDir, json});
+  const auto timeout = seconds("--timeout", timeoutText, kMaxTimeoutSeconds);
+  if (!timeout) return 2;
+  const auto memoryLimit = wholeNumber("--memory-limit", memoryLimitText, 0, kMaxMemoryLimitMegabytes);
+  if (!memoryLimit) return 2;
   suite.jobs = static_cast<unsigned>(jobs);
+  suite.timeoutSeconds = *timeout;
+  suite.memoryLimitMegabytes = *memoryLimit;
   suite.device = common.deviceOptions();
   suite.softraster = common.softraster();
   for (int i = 0; i < argc; ++i) suite.commandLine += (i ? " " : "") + std::string(argv[i]);

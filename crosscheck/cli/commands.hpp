@@ -16,11 +16,13 @@
 #pragma once
 
 #include "results/results.hpp"
+#include "run/conformance.hpp"  // kDefaultMemoryLimitMegabytes
 
 #include <softraster/pipeline.hpp>
 #include <softraster/status.hpp>
 #include <vkref/renderer.hpp>
 
+#include <cstddef>
 #include <functional>
 #include <string>
 #include <string_view>
@@ -56,7 +58,9 @@ int compareCommand(const CompareCommand& command);
 struct SuiteCommand {
   std::vector<std::string> inputs;      // scene files and directories; empty: scenes/
   std::string expectationsFile;
-  unsigned jobs = 1;
+  unsigned jobs = 1;                    // worker processes
+  double timeoutSeconds = 0;            // per scene; 0: none
+  std::size_t memoryLimitMegabytes = kDefaultMemoryLimitMegabytes;  // per worker; 0: none
   std::string shard;                    // "I/N", 1-based; empty: the whole suite
   std::string junitFile;
   vkref::DeviceOptions device;

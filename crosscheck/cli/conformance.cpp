@@ -1,7 +1,8 @@
 // crosscheck conformance, and the suite run it shares with crosscheck report (see commands.hpp):
 // check the arguments, run the suite, print one line per scene (in suite order), a progress line
 // when stderr is a terminal, the summary and, last, "N passed, N failed[, N skipped]"; write
-// JUnit and the scenes' images.
+// JUnit and the scenes' images. The scenes run in worker processes (run/conformance.hpp), which
+// write the images; a worker that fails after its last scene is one line on stderr and exit 1.
 #include "cli/commands.hpp"
 
 #include "output/artifacts.hpp"
@@ -76,6 +77,8 @@ class Printer {
     }
   }
 
+  bool onTerminal() const { return tty_; }
+
   void end() {
     if (!tty_) return;
     std::fputs("\r\033[K", stderr);
@@ -134,6 +137,13 @@ int runSuite(const SuiteCommand& command, const SuiteOutputs& outputs) {
   Printer printer(slice.size(), start);
   ConformanceOptions options;
   options.jobs = command.jobs;
+  options.timeoutSeconds = command.timeoutSeconds;
+  options.memoryLimitMegabytes = command.memoryLimitMegabytes;
+  bool workerFailed = false;
+  options.onWorkerError = [&](const std::string& error) {
+    std::fprintf(stderr, "%scrosscheck: %s\n", printer.onTerminal() ? "\r\033[K" : "", error.c_str());
+    workerFailed = true;
+  };
   options.expectations = expectations ? &*expectations : nullptr;
   options.device = command.device;
   options.softraster = command.softraster;
@@ -185,7 +195,8 @@ int runSuite(const SuiteCommand& command, const SuiteOutputs& outputs) {
               run.seconds, run.jobs, run.jobs == 1 ? "" : "s");
   std::printf("%s\n", countsLine(counts).c_str());
   std::fflush(stdout);
-  return counts.failed == 0 && written ? 0 : 1;
+  if (!written) return 2;  // an output that could not be written: not a usable run (README, exit status)
+  return counts.failed == 0 && !workerFailed ? 0 : 1;
 }
 
 int conformanceCommand(const SuiteCommand& command, const std::string& outDir) {

@@ -55,7 +55,7 @@ std::string junitXml(const RunResults& run) {
   const std::vector<SceneResult>& results = run.scenes;
   const Counts counts = countResults(results);
   const std::size_t failures = counts.of(Outcome::Fail) + counts.of(Outcome::UnexpectedPass);
-  const std::size_t errors = counts.of(Outcome::Crash);
+  const std::size_t errors = counts.of(Outcome::Crash) + counts.of(Outcome::Timeout);
   const std::size_t skipped = counts.of(Outcome::Skip) + counts.of(Outcome::ExpectedFail);
   const std::string totals = " tests=\"" + std::to_string(results.size()) + "\" failures=\"" + std::to_string(failures) +
                              "\" errors=\"" + std::to_string(errors) + "\" skipped=\"" + std::to_string(skipped) +
@@ -87,6 +87,9 @@ std::string junitXml(const RunResults& run) {
         break;
       case Outcome::Crash:
         xml += "      <error type=\"Crash\" message=\"" + message + "\"/>\n";
+        break;
+      case Outcome::Timeout:
+        xml += "      <error type=\"Timeout\" message=\"" + message + "\"/>\n";
         break;
     }
     xml += "      <system-out>" + escapeMarkup(systemOut(r)) + "</system-out>\n";

@@ -1,6 +1,7 @@
 // JUnit XML for CI systems: one <testsuite> with one <testcase> per scene. Skip and ExpectedFail
-// are <skipped message="...">, Fail and UnexpectedPass <failure>, Crash <error>; every testcase's
-// <system-out> holds its metrics, limits, timings and image paths. Times are in seconds.
+// are <skipped message="...">, Fail and UnexpectedPass <failure>, Crash and Timeout <error>;
+// every testcase's <system-out> holds its metrics, limits, timings and image paths. Times are in
+// seconds.
 // Reads a run's results (results.hpp) only: the suite name, time and timestamp are the run's.
 // Deliberately no XML library: the writer builds text and escapes every value (markup.hpp).
 #pragma once

@@ -48,7 +48,8 @@ std::string reasonSuffix(const SceneResult& r) {
 
 std::string resultDetail(const SceneResult& r) {
   switch (r.actual) {
-    case Outcome::Crash: return r.error;
+    case Outcome::Crash:
+    case Outcome::Timeout: return r.error;
     case Outcome::Skip: return "skipped by expectations";
     case Outcome::Pass:
       if (r.outcome == Outcome::UnexpectedPass) {

@@ -34,9 +34,9 @@ struct SceneImage {
 struct SceneResult {
   SceneEntry entry;
   Outcome outcome = Outcome::Crash;
-  Outcome actual = Outcome::Crash;          // before expectations: Pass, Fail, Crash (or Skip)
+  Outcome actual = Outcome::Crash;          // before expectations: Pass, Fail, Crash, Timeout (or Skip)
   std::optional<Expectation> expectation;   // from the expectations file, if listed
-  std::string error;                        // Crash: one line
+  std::string error;                        // Crash and Timeout: one line
 
   // Known once the scene loaded.
   bool loaded = false;
@@ -64,10 +64,11 @@ struct RunResults {
   std::time_t finished = 0;                 // when the run ended (UTC); 0: unknown, not written
 };
 
-// Pass and ExpectedFail count as passed; Fail, Crash and UnexpectedPass as failed; Skip as skipped.
+// Pass and ExpectedFail count as passed; Fail, Crash, Timeout and UnexpectedPass as failed; Skip
+// as skipped.
 struct Counts {
   std::size_t passed = 0, failed = 0, skipped = 0;
-  std::size_t byOutcome[6] = {};
+  std::size_t byOutcome[kAllOutcomes.size()] = {};
   std::size_t of(Outcome o) const { return byOutcome[static_cast<int>(o)]; }
 };
 

@@ -1,7 +1,13 @@
-// The conformance runner (see conformance.hpp).
+// The conformance runner (see conformance.hpp): one scene's run (runOne), and the two ways of
+// running a suite, in worker processes (run/worker_processes.hpp; each scene's SceneResult comes
+// back as CBOR of results/results_json.hpp's JSON) or on threads of this process.
 #include "run/conformance.hpp"
 
 #include "compare/compare.hpp"
+#include "results/results_json.hpp"
+#include "run/worker_processes.hpp"
+
+#include <nlohmann/json.hpp>
 
 #include <algorithm>
 #include <atomic>
@@ -9,6 +15,7 @@
 #include <exception>
 #include <memory>
 #include <mutex>
+#include <new>
 #include <thread>
 
 namespace crosscheck {
@@ -70,11 +77,37 @@ Outcome runScene(SceneResult& result, const ConformanceOptions& options, VulkanS
   return result.comparison->passed() ? Outcome::Pass : Outcome::Fail;
 }
 
-SceneResult runOne(const SceneEntry& entry, const ConformanceOptions& options, VulkanSlot& vulkan) {
+const Expectation* expectationOf(const SceneEntry& entry, const ConformanceOptions& options) {
+  return options.expectations ? options.expectations->find(entry.name) : nullptr;
+}
+
+bool isSkipped(const SceneEntry& entry, const ConformanceOptions& options) {
+  const Expectation* expected = expectationOf(entry, options);
+  return expected && expected->outcome == Outcome::Skip;
+}
+
+// A scene that did not produce a result of its own (Skip, or a worker that crashed or timed out).
+SceneResult resultWithout(const SceneEntry& entry, const ConformanceOptions& options, Outcome actual, std::string error,
+                          double milliseconds) {
+  SceneResult result;
+  result.entry = entry;
+  const Expectation* expected = expectationOf(entry, options);
+  if (expected) result.expectation = *expected;
+  result.actual = actual;
+  result.error = std::move(error);
+  std::replace(result.error.begin(), result.error.end(), '\n', ' ');
+  result.outcome = applyExpectation(actual, expected);
+  result.milliseconds = milliseconds;
+  return result;
+}
+
+// Runs one scene (or skips it). *outOfMemory is set when an allocation failed: the process's
+// state may be spoiled, so a worker ends after such a scene.
+SceneResult runOne(const SceneEntry& entry, const ConformanceOptions& options, VulkanSlot& vulkan, bool* outOfMemory) {
   const auto start = Clock::now();
   SceneResult result;
   result.entry = entry;
-  const Expectation* expected = options.expectations ? options.expectations->find(entry.name) : nullptr;
+  const Expectation* expected = expectationOf(entry, options);
   if (expected) result.expectation = *expected;
   if (expected && expected->outcome == Outcome::Skip) {
     result.actual = result.outcome = Outcome::Skip;
@@ -82,6 +115,13 @@ SceneResult runOne(const SceneEntry& entry, const ConformanceOptions& options, V
   }
   try {
     result.actual = runScene(result, options, vulkan);
+  } catch (const std::bad_alloc&) {
+    result.error = options.memoryLimitMegabytes && workerMemoryLimitWorks() && options.isolation == Isolation::Processes
+                       ? "out of memory: over the worker's memory limit of " +
+                             std::to_string(options.memoryLimitMegabytes) + " MB (--memory-limit)"
+                       : std::string("out of memory (std::bad_alloc)");
+    result.actual = Outcome::Crash;
+    *outOfMemory = true;
   } catch (const std::exception& e) {
     result.error = std::string("exception: ") + e.what();
     result.actual = Outcome::Crash;
@@ -96,26 +136,30 @@ SceneResult runOne(const SceneEntry& entry, const ConformanceOptions& options, V
   return result;
 }
 
-}  // namespace
-
-std::vector<SceneResult> runConformance(const std::vector<SceneEntry>& suite, const ConformanceOptions& options) {
-  std::vector<SceneResult> results(suite.size());
-  std::atomic<std::size_t> next{0};
-  std::mutex lock;
-  std::size_t done = 0;
-  const std::size_t jobs = std::clamp<std::size_t>(options.jobs, 1, std::max<std::size_t>(suite.size(), 1));
-  // The thread rule (docs/architecture.md): N jobs share the cores, so each job's softraster
-  // Context draws with cores / N threads (at least one) unless a count was asked for.
+// The thread rule (docs/architecture.md): N jobs share the cores, so each job's softraster
+// Context draws with cores / N threads (at least one) unless a count was asked for.
+ConformanceOptions perJobOptions(const ConformanceOptions& options, std::size_t jobs) {
   ConformanceOptions perJob = options;
   if (perJob.softraster.threads == 0) {
     const std::size_t cores = std::max(1u, std::thread::hardware_concurrency());
     perJob.softraster.threads = static_cast<unsigned>(std::max<std::size_t>(1, cores / jobs));
   }
+  return perJob;
+}
+
+std::vector<SceneResult> runOnThreads(const std::vector<SceneEntry>& suite, const ConformanceOptions& options) {
+  std::vector<SceneResult> results(suite.size());
+  std::atomic<std::size_t> next{0};
+  std::mutex lock;
+  std::size_t done = 0;
+  const std::size_t jobs = std::clamp<std::size_t>(options.jobs, 1, std::max<std::size_t>(suite.size(), 1));
+  const ConformanceOptions perJob = perJobOptions(options, jobs);
   const auto worker = [&] {
     VulkanSlot vulkan;
     vulkan.get(options.device);  // a failure is reported per scene
     for (std::size_t i = next++; i < suite.size(); i = next++) {
-      SceneResult result = runOne(suite[i], perJob, vulkan);
+      bool outOfMemory = false;
+      SceneResult result = runOne(suite[i], perJob, vulkan, &outOfMemory);
       const std::lock_guard guard(lock);
       results[i] = std::move(result);
       ++done;
@@ -128,6 +172,79 @@ std::vector<SceneResult> runConformance(const std::vector<SceneEntry>& suite, co
     worker();
   }  // joins the helpers
   return results;
+}
+
+std::vector<SceneResult> runInProcesses(const std::vector<SceneEntry>& suite, const ConformanceOptions& options) {
+  std::vector<SceneResult> results(suite.size());
+  std::size_t done = 0;
+  const auto finished = [&](std::size_t i, SceneResult result) {
+    results[i] = std::move(result);
+    ++done;
+    if (options.onFinished) options.onFinished(i, results[i], done);
+  };
+  // Skipped scenes never reach a worker.
+  std::vector<std::size_t> toRun;
+  for (std::size_t i = 0; i < suite.size(); ++i) {
+    if (isSkipped(suite[i], options)) {
+      finished(i, resultWithout(suite[i], options, Outcome::Skip, "", 0));
+    } else {
+      toRun.push_back(i);
+    }
+  }
+  const std::size_t jobs = std::clamp<std::size_t>(options.jobs, 1, std::max<std::size_t>(toRun.size(), 1));
+  const ConformanceOptions perJob = perJobOptions(options, jobs);
+
+  // In a worker: its own Vulkan renderer (and, in runScene, its own softraster Context).
+  std::unique_ptr<VulkanSlot> vulkan;
+  WorkerProgram program;
+  program.start = [&] {
+    vulkan = std::make_unique<VulkanSlot>();
+    vulkan->get(perJob.device);  // a failure is reported per scene
+  };
+  program.run = [&](std::size_t i, bool* endWorker) {
+    const SceneResult result = runOne(suite[i], perJob, *vulkan, endWorker);
+    const std::vector<std::uint8_t> bytes = nlohmann::json::to_cbor(sceneResultToJson(result));
+    return std::string(bytes.begin(), bytes.end());
+  };
+  program.finish = [&] { vulkan.reset(); };
+
+  WorkerLimits limits;
+  limits.timeoutSeconds = options.timeoutSeconds;
+  limits.memoryLimitMegabytes = options.memoryLimitMegabytes;
+  const auto onEnd = [&](std::size_t i, TaskEnd end) {
+    switch (end.kind) {
+      case TaskEnd::Kind::Replied: {
+        softraster::Result<SceneResult> result = softraster::Status::error("results JSON: not CBOR");
+        try {
+          result = sceneResultFromJson(nlohmann::json::from_cbor(end.reply));
+        } catch (const nlohmann::json::exception& e) {
+          result = softraster::Status::error(std::string("results JSON: ") + e.what());
+        }
+        if (result) {
+          result->entry = suite[i];  // the parent's own, byte for byte
+          finished(i, std::move(*result));
+        } else {
+          finished(i, resultWithout(suite[i], options, Outcome::Crash,
+                                    "worker sent a result that cannot be read: " + result.error(), end.milliseconds));
+        }
+        break;
+      }
+      case TaskEnd::Kind::Crashed:
+        finished(i, resultWithout(suite[i], options, Outcome::Crash, end.error, end.milliseconds));
+        break;
+      case TaskEnd::Kind::TimedOut:
+        finished(i, resultWithout(suite[i], options, Outcome::Timeout, end.error + " (--timeout)", end.milliseconds));
+        break;
+    }
+  };
+  runInWorkerProcesses(toRun, static_cast<unsigned>(jobs), limits, program, onEnd, options.onWorkerError);
+  return results;
+}
+
+}  // namespace
+
+std::vector<SceneResult> runConformance(const std::vector<SceneEntry>& suite, const ConformanceOptions& options) {
+  return options.isolation == Isolation::Processes ? runInProcesses(suite, options) : runOnThreads(suite, options);
 }
 
 }  // namespace crosscheck

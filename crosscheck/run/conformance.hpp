@@ -1,12 +1,16 @@
 // The conformance runner: renders every scene of a suite with softraster and with Vulkan
 // (lavapipe), compares them within the scene's tolerance and gives each scene an Outcome.
-// Scenes run on `jobs` threads, each with its own vkref::Renderer; results come back in suite
-// order whatever order they finished in. A scene that cannot be loaded, a renderer that returns
-// an error, a validation message (with validation on) or an exception becomes Crash with one
-// line of error, and the run goes on.
+// Scenes run in `jobs` worker processes (run/worker_processes.hpp), each with its own
+// vkref::Renderer and softraster Context; results come back in suite order whatever order they
+// finished in. A scene that cannot be loaded, a renderer that returns an error, a validation
+// message (with validation on) or an exception becomes Crash with one line of error; so does a
+// worker that dies under a scene (a signal, an abort, an allocation over the memory limit), and
+// a scene with no result within the timeout is Timeout (its worker is killed). The run goes on
+// with a new worker.
+// Isolation::Threads runs the same scenes on threads of the calling process instead, for tests
+// that watch a renderer from the caller: no timeout, no memory limit, and a crash ends it all.
 // Its scenes' records are RunResults::scenes (results/results.hpp).
-// Deliberately in-process: a renderer that crashes the process (a signal) ends the run; there is
-// no subprocess isolation, no retry and no timeout per scene.
+// Deliberately no retry: a scene that crashed once is a Crash, not a flake to run again.
 #pragma once
 
 #include "render/render.hpp"
@@ -21,30 +25,47 @@
 
 #include <cstddef>
 #include <functional>
+#include <string>
 #include <vector>
 
 namespace crosscheck {
 
-// What one scene's frames are handed to, on the worker thread, before they are dropped (to write
-// images or report data). An error makes the scene Crash with that line.
+// What one scene's frames are handed to, in the worker, before they are dropped (to write images
+// or report data; what it records in the SceneResult travels back with it). An error makes the
+// scene Crash with that line.
 using FrameSink = std::function<softraster::Status(SceneResult& result, const Scene& scene, const Frame& soft,
                                                    const Frame& vulkan)>;
 
+enum class Isolation { Processes, Threads };
+
+// Each worker's address space by default, in MB: far above what any scene needs (an 8192x8192
+// 4x MSAA frame needs about 7 GB, both renderers together), low enough that a runaway
+// allocation fails at once instead of swapping.
+inline constexpr std::size_t kDefaultMemoryLimitMegabytes = 16384;
+
 struct ConformanceOptions {
   unsigned jobs = 1;
+  Isolation isolation = Isolation::Processes;
+  double timeoutSeconds = 0;                   // per scene (Processes only); 0: none
+  std::size_t memoryLimitMegabytes = kDefaultMemoryLimitMegabytes;  // per worker (Processes only); 0: none
   const Expectations* expectations = nullptr;
   vkref::DeviceOptions device;
   softraster::ContextOptions softraster;
   FrameSink onFrames;
-  // Called once per finished scene, under the runner's lock, in the order scenes finish:
-  // (position in the suite, its result, scenes finished so far). The reference stays valid until
-  // runConformance returns.
+  // Called once per finished scene, in the calling process (under the runner's lock with
+  // Threads), in the order scenes finish: (position in the suite, its result, scenes finished so
+  // far). The reference stays valid until runConformance returns.
   std::function<void(std::size_t position, const SceneResult& result, std::size_t done)> onFinished;
-  // The softraster renderer; empty means renderSoftraster with `softraster`. Tests replace it.
+  // A worker's problem that is no scene's (it exited abnormally after its last scene: a
+  // sanitizer's leak report, say), one line; may be empty (then it is not reported).
+  std::function<void(const std::string& error)> onWorkerError;
+  // The softraster renderer, called in the worker; empty means renderSoftraster with
+  // `softraster`. Tests replace it.
   std::function<softraster::Result<Frame>(const Scene&)> renderSoft;
 };
 
-// One SceneResult per scene of `suite`, in suite order (RunResults::scenes).
+// One SceneResult per scene of `suite`, in suite order (RunResults::scenes). With Processes the
+// calling process must have no other threads and no Vulkan renderer open (workers are forked).
 std::vector<SceneResult> runConformance(const std::vector<SceneEntry>& suite, const ConformanceOptions& options);
 
 }  // namespace crosscheck

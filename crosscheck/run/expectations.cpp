@@ -49,8 +49,8 @@ softraster::Result<Expectations> parseExpectations(std::string_view text, const 
     if (name.empty()) return fail("missing scene name before ','");
     const auto outcome = parseOutcome(outcomeText);
     if (!outcome || !(*outcome == Outcome::Pass || *outcome == Outcome::Fail || *outcome == Outcome::Crash ||
-                      *outcome == Outcome::Skip)) {
-      return fail("'" + std::string(outcomeText) + "' is not one of Pass, Fail, Crash, Skip");
+                      *outcome == Outcome::Timeout || *outcome == Outcome::Skip)) {
+      return fail("'" + std::string(outcomeText) + "' is not one of Pass, Fail, Crash, Timeout, Skip");
     }
     const auto [it, inserted] = expectations.byScene.emplace(name, Expectation{*outcome, std::string(reason), lineNumber});
     if (!inserted) return fail("scene '" + name + "' is already listed on line " + std::to_string(it->second.line));

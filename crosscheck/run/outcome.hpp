@@ -1,5 +1,6 @@
-// Outcome: the six results one scene can have in a conformance run, and their names as written in
-// output, JUnit files and expectations files (README and the CLI call them statuses).
+// Outcome: the seven results one scene can have in a conformance run, and their names as written in
+// output, JUnit files and expectations files (README and the CLI call them statuses). Timeout is
+// a scene that gave no result within the run's --timeout (its worker process was killed).
 // Not an error type: errors are softraster::Status / Result (softraster/status.hpp); a scene that
 // cannot be run has the outcome Crash and its error line beside it.
 // Deliberately no "Flake" outcome: both renderers are deterministic, so a scene that changes its
@@ -12,10 +13,11 @@
 
 namespace crosscheck {
 
-enum class Outcome { Pass, Fail, ExpectedFail, UnexpectedPass, Skip, Crash };
+enum class Outcome { Pass, Fail, ExpectedFail, UnexpectedPass, Skip, Crash, Timeout };
 
-inline constexpr std::array<Outcome, 6> kAllOutcomes{Outcome::Pass,           Outcome::Fail, Outcome::ExpectedFail,
-                                                     Outcome::UnexpectedPass, Outcome::Skip, Outcome::Crash};
+inline constexpr std::array<Outcome, 7> kAllOutcomes{Outcome::Pass,           Outcome::Fail, Outcome::ExpectedFail,
+                                                     Outcome::UnexpectedPass, Outcome::Skip, Outcome::Crash,
+                                                     Outcome::Timeout};
 
 constexpr std::string_view outcomeName(Outcome outcome) {
   switch (outcome) {
@@ -25,6 +27,7 @@ constexpr std::string_view outcomeName(Outcome outcome) {
     case Outcome::UnexpectedPass: return "UnexpectedPass";
     case Outcome::Skip: return "Skip";
     case Outcome::Crash: return "Crash";
+    case Outcome::Timeout: return "Timeout";
   }
   return "?";
 }
@@ -37,9 +40,10 @@ inline std::optional<Outcome> parseOutcome(std::string_view name) {
   return std::nullopt;
 }
 
-// Fail, Crash and UnexpectedPass fail a run; everything else is as expected.
+// Fail, Crash, Timeout and UnexpectedPass fail a run; everything else is as expected.
 constexpr bool isUnexpected(Outcome outcome) {
-  return outcome == Outcome::Fail || outcome == Outcome::Crash || outcome == Outcome::UnexpectedPass;
+  return outcome == Outcome::Fail || outcome == Outcome::Crash || outcome == Outcome::Timeout ||
+         outcome == Outcome::UnexpectedPass;
 }
 
 }  // namespace crosscheck

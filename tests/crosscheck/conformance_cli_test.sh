@@ -111,7 +111,7 @@ case $case_name in
     check_usage "^crosscheck: $expectations/malformed_line.txt:4: expected 'SCENE,STATUS # reason', got 'depth_slope Fail'$" \
       conformance --expectations "$expectations/malformed_line.txt" "$fixtures"
     expect_one_error_line
-    check_usage "^crosscheck: $expectations/bad_status.txt:2: 'ExpectedFail' is not one of Pass, Fail, Crash, Skip$" \
+    check_usage "^crosscheck: $expectations/bad_status.txt:2: 'ExpectedFail' is not one of Pass, Fail, Crash, Timeout, Skip$" \
       conformance --expectations "$expectations/bad_status.txt" "$fixtures"
     mkdir -p "$artifacts/empty"
     check_usage "^crosscheck: $artifacts/empty: no \*.json scene files in this directory$" conformance "$artifacts/empty"
@@ -133,6 +133,45 @@ case $case_name in
     (cd "$artifacts" && "$crosscheck" conformance >out.txt 2>err.txt; echo $? >status.txt)
     [ "$(cat "$artifacts/status.txt")" -eq 2 ] || fail "default suite outside the repository: exit status not 2"
     expect_err '^crosscheck: scenes: no such directory \(run crosscheck from the repository root'
+    ;;
+  timeout)
+    # A scene past --timeout is Timeout (counted as failed, <error type="Timeout"> in JUnit); the
+    # worker is killed and the next scene still runs. 1 ms is less than opening a worker's
+    # renderers, which counts against its first scene.
+    need xmllint
+    run conformance "$fixtures/flat_triangle.json" "$fixtures/depth_slope.json" --timeout 0.001 --junit "$artifacts/run.xml"
+    expect_status 1
+    expect_out '^Timeout +depth_slope: no result within 0.001 s; worker killed \(--timeout\)$'
+    expect_out '^Timeout +flat_triangle: no result within 0.001 s; worker killed \(--timeout\)$'
+    expect_out '^Failures \(2\):$'
+    expect_last_line "0 passed, 2 failed"
+    [ "$(xpath_number "$artifacts/run.xml" 'count(//testcase/error[@type="Timeout"])')" = 2 ] || fail "not 2 <error type=Timeout>"
+    [ "$(xpath_number "$artifacts/run.xml" '/testsuites/testsuite/@errors')" = 2 ] || fail "errors != 2"
+    # Known: ExpectedFail, exit 0.
+    printf 'flat_triangle,Timeout # hangs\ndepth_slope,Timeout # hangs\n' >"$artifacts/known.txt"
+    run conformance "$fixtures/flat_triangle.json" "$fixtures/depth_slope.json" --timeout 0.001 --expectations "$artifacts/known.txt"
+    expect_status 0
+    expect_out '^ExpectedFail +flat_triangle: no result within 0.001 s; worker killed \(--timeout\) \[hangs\]$'
+    expect_last_line "2 passed, 0 failed"
+    # A generous timeout and no memory limit change nothing.
+    run conformance "$fixtures/flat_triangle.json" "$fixtures/depth_slope.json" --timeout 600 --memory-limit 0 --jobs 2
+    expect_status 0
+    expect_last_line "2 passed, 0 failed"
+    ;;
+  bad_limits)
+    # Bad --timeout and --memory-limit values: exit 2, one error line naming the option.
+    for value in -1 abc nan inf 1e9 ''; do
+      run conformance --timeout "$value" "$fixtures/flat_triangle.json"
+      expect_status 2
+      expect_err "^crosscheck: --timeout $value: expected a number of seconds from 0 \(none\) to 604800$"
+      expect_one_error_line
+    done
+    for value in -5 x 1.5 99999999999; do
+      run report -o "$artifacts/report" --memory-limit "$value" "$fixtures/flat_triangle.json"
+      expect_status 2
+      expect_err "^crosscheck: --memory-limit $value: expected a whole number from 0 to 67108864$"
+      expect_one_error_line
+    done
     ;;
   default_suite)
     # No argument: every scene in scenes/ of the current directory, all passing.

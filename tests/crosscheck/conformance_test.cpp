@@ -1,5 +1,6 @@
 // The conformance runner's parts: suite collection, sharding, expectations files, statuses (with
-// the softraster renderer replaced to produce a real failure, an error and an exception), counts,
+// the softraster renderer replaced to produce a real failure, an error and an exception), worker
+// isolation (a renderer that segfaults, aborts, allocates without bound or never returns), counts,
 // the text summary and the JUnit writer. The command line is tested in conformance_cli_test.sh.
 #include "output/junit.hpp"
 #include "output/markup.hpp"
@@ -10,12 +11,19 @@
 
 #include <gtest/gtest.h>
 
+#include "run/worker_processes.hpp"
+
 #include <algorithm>
 #include <atomic>
+#include <chrono>
+#include <csignal>
+#include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <memory>
 #include <set>
 #include <stdexcept>
+#include <thread>
 
 namespace {
 
@@ -138,9 +146,9 @@ TEST(Expectations, MalformedLinesNameFileAndLine) {
       {"ok,Pass\nno comma here\n", "exp.txt:2: expected 'SCENE,STATUS # reason', got 'no comma here'"},
       {"a,Fail,Skip\n", "exp.txt:1: expected 'SCENE,STATUS # reason', got 'a,Fail,Skip'"},
       {",Fail\n", "exp.txt:1: missing scene name before ','"},
-      {"\n\na,fail\n", "exp.txt:3: 'fail' is not one of Pass, Fail, Crash, Skip"},
-      {"a,ExpectedFail\n", "exp.txt:1: 'ExpectedFail' is not one of Pass, Fail, Crash, Skip"},
-      {"a,\n", "exp.txt:1: '' is not one of Pass, Fail, Crash, Skip"},
+      {"\n\na,fail\n", "exp.txt:3: 'fail' is not one of Pass, Fail, Crash, Timeout, Skip"},
+      {"a,ExpectedFail\n", "exp.txt:1: 'ExpectedFail' is not one of Pass, Fail, Crash, Timeout, Skip"},
+      {"a,\n", "exp.txt:1: '' is not one of Pass, Fail, Crash, Timeout, Skip"},
       {"a,Fail\nb,Skip\na,Skip\n", "exp.txt:3: scene 'a' is already listed on line 1"},
   };
   for (const auto& [text, message] : cases) {
@@ -229,6 +237,7 @@ TEST(Conformance, ExpectationsGiveExpectedFailUnexpectedPassAndSkip) {
   ASSERT_TRUE(expectations) << expectations.error();
   std::atomic<int> softCalls{0};
   ConformanceOptions options;
+  options.isolation = Isolation::Threads;  // softCalls is counted in this process
   options.expectations = &*expectations;
   options.renderSoft = [&](const Scene& scene) {
     ++softCalls;
@@ -281,6 +290,156 @@ TEST(Conformance, ParallelRunKeepsSuiteOrderAndReportsEveryScene) {
   for (std::size_t i = 0; i < suite.size(); ++i) {
     EXPECT_EQ(positions[i], i);
     EXPECT_EQ(dones[i], i + 1);
+  }
+}
+
+TEST(Conformance, ThreadsGiveTheSameResultsAsWorkerProcesses) {
+  const std::vector<SceneEntry> suite = {fixture("broken_obj"), fixture("depth_slope"), fixture("flat_triangle"),
+                                         fixture("malformed")};
+  ConformanceOptions options;
+  options.jobs = 2;
+  const auto processes = runConformance(suite, options);
+  options.isolation = Isolation::Threads;
+  const auto threads = runConformance(suite, options);
+  ASSERT_EQ(processes.size(), threads.size());
+  for (std::size_t i = 0; i < suite.size(); ++i) {
+    EXPECT_EQ(resultLine(processes[i]).substr(0, resultLine(processes[i]).find("  (soft")),
+              resultLine(threads[i]).substr(0, resultLine(threads[i]).find("  (soft")));
+  }
+}
+
+// ---- isolation: a scene that brings its worker down is that scene's Crash or Timeout ----
+
+// A suite of five scenes where only the middle one (flat_triangle, 32 pixels wide) misbehaves
+// in softraster; the others must keep their results.
+std::vector<SceneEntry> suiteAroundOneBadScene() {
+  return {{"before", kFixtures / "depth_slope.json"}, {"before_broken", kFixtures / "malformed.json"},
+          fixture("flat_triangle"), {"after", kFixtures / "depth_slope.json"},
+          {"after_broken", kFixtures / "broken_obj.json"}};
+}
+
+void expectOthersIntact(const std::vector<SceneResult>& results) {
+  ASSERT_EQ(results.size(), 5u);
+  EXPECT_EQ(results[0].outcome, Outcome::Pass) << results[0].error;
+  EXPECT_EQ(results[1].outcome, Outcome::Crash);
+  EXPECT_NE(results[1].error.find("parse error"), std::string::npos) << results[1].error;
+  EXPECT_EQ(results[3].outcome, Outcome::Pass) << results[3].error;
+  ASSERT_TRUE(results[3].comparison);
+  EXPECT_EQ(results[3].comparison->pixels, 64u * 48u);
+  EXPECT_EQ(results[4].outcome, Outcome::Crash);
+  EXPECT_NE(results[4].error.find("malformed.obj"), std::string::npos) << results[4].error;
+}
+
+ConformanceOptions misbehavingOn32Wide(const std::function<void()>& misbehave) {
+  ConformanceOptions options;
+  options.renderSoft = [misbehave](const Scene& scene) {
+    if (scene.width == 32) misbehave();
+    return renderSoftraster(scene);
+  };
+  return options;
+}
+
+// Under AddressSanitizer a segfault is ASan's report and exit status 1, not the signal.
+bool underAddressSanitizer() { return !workerMemoryLimitWorks(); }
+
+TEST(Isolation, SegfaultIsCrashAndTheRunGoesOn) {
+  for (unsigned jobs : {1u, 2u}) {
+    ConformanceOptions options = misbehavingOn32Wide([] { std::raise(SIGSEGV); });
+    options.jobs = jobs;
+    const auto results = runConformance(suiteAroundOneBadScene(), options);
+    expectOthersIntact(results);
+    EXPECT_EQ(results[2].outcome, Outcome::Crash);
+    if (underAddressSanitizer()) {
+      EXPECT_EQ(results[2].error.rfind("worker ", 0), 0u) << results[2].error;
+    } else {
+      EXPECT_EQ(results[2].error, "worker killed by signal 11 (SIGSEGV)");
+    }
+    EXPECT_FALSE(results[2].loaded);
+  }
+}
+
+TEST(Isolation, AbortIsCrashAndTheRunGoesOn) {
+  ConformanceOptions options = misbehavingOn32Wide([] { std::abort(); });
+  options.jobs = 2;
+  const auto results = runConformance(suiteAroundOneBadScene(), options);
+  expectOthersIntact(results);
+  EXPECT_EQ(results[2].outcome, Outcome::Crash);
+  EXPECT_EQ(results[2].error, "worker killed by signal 6 (SIGABRT)");
+}
+
+TEST(Isolation, UncaughtExceptionOnAnotherThreadIsCrashWithItsMessage) {
+  ConformanceOptions options = misbehavingOn32Wide([] {
+    std::thread([] { throw std::runtime_error("thrown on a helper thread"); }).join();
+  });
+  const auto results = runConformance(suiteAroundOneBadScene(), options);
+  expectOthersIntact(results);
+  EXPECT_EQ(results[2].outcome, Outcome::Crash);
+  EXPECT_EQ(results[2].error, "uncaught exception: thrown on a helper thread");
+}
+
+TEST(Isolation, RunawayAllocationIsCrashOutOfMemory) {
+  if (underAddressSanitizer()) GTEST_SKIP() << "AddressSanitizer reserves terabytes of address space: no limit under it";
+  ConformanceOptions options = misbehavingOn32Wide([] {
+    std::vector<std::unique_ptr<char[]>> hoard;
+    while (true) hoard.emplace_back(new char[64 << 20]);  // address space, never touched
+  });
+  options.jobs = 2;
+  options.memoryLimitMegabytes = 2048;
+  const auto results = runConformance(suiteAroundOneBadScene(), options);
+  expectOthersIntact(results);
+  EXPECT_EQ(results[2].outcome, Outcome::Crash);
+  EXPECT_EQ(results[2].error, "out of memory: over the worker's memory limit of 2048 MB (--memory-limit)");
+}
+
+TEST(Isolation, SceneThatNeverEndsIsTimeout) {
+  ConformanceOptions options = misbehavingOn32Wide([] {
+    while (true) std::this_thread::sleep_for(std::chrono::seconds(1));
+  });
+  options.jobs = 2;
+  options.timeoutSeconds = 2;
+  const auto start = std::chrono::steady_clock::now();
+  const auto results = runConformance(suiteAroundOneBadScene(), options);
+  const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  expectOthersIntact(results);
+  EXPECT_EQ(results[2].outcome, Outcome::Timeout);
+  EXPECT_EQ(results[2].error, "no result within 2 s; worker killed (--timeout)");
+  EXPECT_GE(results[2].milliseconds, 2000);
+  EXPECT_LT(seconds, 30);
+  EXPECT_TRUE(isUnexpected(results[2].outcome));
+  EXPECT_EQ(countResults(results).failed, 3u);
+  EXPECT_EQ(resultLine(results[2]), "Timeout        flat_triangle: no result within 2 s; worker killed (--timeout)");
+}
+
+TEST(Isolation, ExpectedTimeoutAndExpectedCrashAreExpectedFail) {
+  const auto expectations = parseExpectations("flat_triangle,Timeout # hangs\n", "exp.txt");
+  ASSERT_TRUE(expectations) << expectations.error();
+  ConformanceOptions options = misbehavingOn32Wide([] {
+    while (true) std::this_thread::sleep_for(std::chrono::seconds(1));
+  });
+  options.expectations = &*expectations;
+  options.timeoutSeconds = 1;
+  const auto timedOut = runConformance({fixture("flat_triangle")}, options);
+  EXPECT_EQ(timedOut[0].outcome, Outcome::ExpectedFail);
+  EXPECT_EQ(timedOut[0].actual, Outcome::Timeout);
+  EXPECT_EQ(timedOut[0].expectation->reason, "hangs");
+  options.renderSoft = {};
+  const auto passed = runConformance({fixture("flat_triangle")}, options);
+  EXPECT_EQ(passed[0].outcome, Outcome::UnexpectedPass);
+}
+
+TEST(Isolation, EveryWorkerDyingStillEndsTheRun) {
+  ConformanceOptions options;
+  options.jobs = 3;
+  options.renderSoft = [](const Scene&) -> softraster::Result<Frame> { std::abort(); };
+  std::vector<SceneEntry> suite;
+  for (int i = 0; i < 7; ++i) suite.push_back({"s" + std::to_string(i), kFixtures / "flat_triangle.json"});
+  std::size_t finished = 0;
+  options.onFinished = [&](std::size_t, const SceneResult&, std::size_t done) { finished = done; };
+  const auto results = runConformance(suite, options);
+  EXPECT_EQ(finished, 7u);
+  for (const SceneResult& r : results) {
+    EXPECT_EQ(r.outcome, Outcome::Crash);
+    EXPECT_EQ(r.error, "worker killed by signal 6 (SIGABRT)");
   }
 }
 

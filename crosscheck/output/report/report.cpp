@@ -64,13 +64,14 @@ std::string fixed(const char* pattern, double value) {
 int outcomeRank(Outcome s) {
   switch (s) {
     case Outcome::Crash: return 0;
-    case Outcome::Fail: return 1;
-    case Outcome::UnexpectedPass: return 2;
-    case Outcome::ExpectedFail: return 3;
-    case Outcome::Pass: return 4;
-    case Outcome::Skip: return 5;
+    case Outcome::Timeout: return 1;
+    case Outcome::Fail: return 2;
+    case Outcome::UnexpectedPass: return 3;
+    case Outcome::ExpectedFail: return 4;
+    case Outcome::Pass: return 5;
+    case Outcome::Skip: return 6;
   }
-  return 6;
+  return 7;
 }
 
 std::string e(std::string_view text) { return escapeMarkup(text); }
@@ -278,7 +279,9 @@ std::string sceneSection(const RunResults& run, const SceneResult& r, std::size_
   const std::string detail = resultDetail(r);
   s += "<summary>" + badge(r.outcome) + "<span class=\"name\">" + e(r.entry.name) + "</span><span class=\"path\">" +
        e(r.entry.path.string()) + "</span>";
-  if (!detail.empty() && r.actual != Outcome::Crash) s += "<span class=\"brief\">" + e(detail) + "</span>";
+  if (!detail.empty() && r.actual != Outcome::Crash && r.actual != Outcome::Timeout) {
+    s += "<span class=\"brief\">" + e(detail) + "</span>";
+  }
   s += "</summary>\n<div class=\"scene-body\">\n";
   if (!r.description.empty()) s += "<p class=\"desc\">" + e(r.description) + "</p>\n";
   // The scene file, linked relative to the report (so the link survives moving both together).

@@ -37,8 +37,8 @@ std::string pixelDataScript(const std::string& sceneName, const Frame& soft, con
 softraster::Status writePixelData(const std::filesystem::path& root, const std::filesystem::path& relative,
                                   SceneResult* result, const Frame& soft, const Frame& vulkan);
 
-// Positions of the results, worst first: Crash, Fail, UnexpectedPass, ExpectedFail, Pass, Skip;
-// then by coverage mismatches, pixels over the colour and depth thresholds (most first), PSNR
+// Positions of the results, worst first: Crash, Timeout, Fail, UnexpectedPass, ExpectedFail, Pass,
+// Skip; then by coverage mismatches, pixels over the colour and depth thresholds (most first), PSNR
 // (lowest first) and name.
 std::vector<std::size_t> worstFirst(const std::vector<SceneResult>& results);
 

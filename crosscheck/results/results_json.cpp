@@ -1,0 +1,259 @@
+// RunResults and SceneResult as JSON and back (see results_json.hpp).
+#include "results/results_json.hpp"
+
+#include <nlohmann/json.hpp>
+
+#include <cmath>
+#include <limits>
+#include <stdexcept>
+#include <string>
+#include <utility>
+
+namespace crosscheck {
+namespace {
+
+using nlohmann::json;
+
+// ---- writing ----
+
+json number(double value) {
+  if (std::isnan(value)) return "nan";
+  if (std::isinf(value)) return value > 0 ? "inf" : "-inf";
+  return value;
+}
+
+json toleranceJson(const Tolerance& t) {
+  return {{"colour_threshold", t.colourThreshold},
+          {"depth_threshold", number(t.depthThreshold)},
+          {"max_coverage_mismatches", t.maxCoverageMismatches},
+          {"max_colour_pixels_over", t.maxColourPixelsOver},
+          {"max_depth_pixels_over", t.maxDepthPixelsOver}};
+}
+
+json comparisonJson(const Comparison& c) {
+  json mean = json::array();
+  for (double v : c.colourMeanDelta) mean.push_back(number(v));
+  return {{"pixels", c.pixels},
+          {"coverage_mismatches", c.coverageMismatches},
+          {"colour_max_delta", c.colourMaxDelta},
+          {"colour_mean_delta", mean},
+          {"colour_pixels_over", c.colourPixelsOver},
+          {"psnr", number(c.psnr)},
+          {"depth_max_delta", number(c.depthMaxDelta)},
+          {"depth_pixels_over", c.depthPixelsOver},
+          {"failures", c.failures}};
+}
+
+// ---- reading: each accessor names the field it failed on ----
+
+struct BadField : std::runtime_error {
+  using std::runtime_error::runtime_error;
+};
+
+[[noreturn]] void bad(const std::string& place, const std::string& what) {
+  throw BadField((place.empty() ? "/" : place) + ": " + what);
+}
+
+const json& field(const json& object, const std::string& place, const char* key) {
+  if (!object.is_object()) bad(place, "expected an object");
+  const auto it = object.find(key);
+  if (it == object.end()) bad(place + "/" + key, "missing");
+  return *it;
+}
+
+std::string readString(const json& value, const std::string& place) {
+  if (!value.is_string()) bad(place, "expected a string");
+  return value.get<std::string>();
+}
+
+bool readBool(const json& value, const std::string& place) {
+  if (!value.is_boolean()) bad(place, "expected true or false");
+  return value.get<bool>();
+}
+
+double readNumber(const json& value, const std::string& place) {
+  if (value.is_number()) return value.get<double>();
+  if (value.is_string()) {
+    const std::string& text = value.get_ref<const std::string&>();
+    if (text == "inf") return std::numeric_limits<double>::infinity();
+    if (text == "-inf") return -std::numeric_limits<double>::infinity();
+    if (text == "nan") return std::numeric_limits<double>::quiet_NaN();
+  }
+  bad(place, "expected a number (or \"inf\", \"-inf\", \"nan\")");
+}
+
+template <class Integer>
+Integer readInteger(const json& value, const std::string& place) {
+  if (value.is_number_unsigned()) {
+    const auto v = value.get<std::uint64_t>();
+    if (std::in_range<Integer>(v)) return static_cast<Integer>(v);
+  } else if (value.is_number_integer()) {
+    const auto v = value.get<std::int64_t>();
+    if (std::in_range<Integer>(v)) return static_cast<Integer>(v);
+  }
+  bad(place, "expected a whole number from " + std::to_string(std::numeric_limits<Integer>::min()) + " to " +
+                 std::to_string(std::numeric_limits<Integer>::max()));
+}
+
+Outcome readOutcome(const json& value, const std::string& place) {
+  const auto outcome = parseOutcome(readString(value, place));
+  if (!outcome) bad(place, "'" + value.get<std::string>() + "' is not an outcome");
+  return *outcome;
+}
+
+const json& readArray(const json& value, const std::string& place, std::size_t size) {
+  if (!value.is_array() || value.size() != size) bad(place, "expected an array of " + std::to_string(size));
+  return value;
+}
+
+Tolerance readTolerance(const json& j, const std::string& place) {
+  Tolerance t;
+  t.colourThreshold = readInteger<int>(field(j, place, "colour_threshold"), place + "/colour_threshold");
+  t.depthThreshold = readNumber(field(j, place, "depth_threshold"), place + "/depth_threshold");
+  t.maxCoverageMismatches =
+      readInteger<std::uint64_t>(field(j, place, "max_coverage_mismatches"), place + "/max_coverage_mismatches");
+  t.maxColourPixelsOver =
+      readInteger<std::uint64_t>(field(j, place, "max_colour_pixels_over"), place + "/max_colour_pixels_over");
+  t.maxDepthPixelsOver =
+      readInteger<std::uint64_t>(field(j, place, "max_depth_pixels_over"), place + "/max_depth_pixels_over");
+  return t;
+}
+
+Comparison readComparison(const json& j, const std::string& place) {
+  Comparison c;
+  c.pixels = readInteger<std::uint64_t>(field(j, place, "pixels"), place + "/pixels");
+  c.coverageMismatches = readInteger<std::uint64_t>(field(j, place, "coverage_mismatches"), place + "/coverage_mismatches");
+  const json& max = readArray(field(j, place, "colour_max_delta"), place + "/colour_max_delta", 4);
+  const json& mean = readArray(field(j, place, "colour_mean_delta"), place + "/colour_mean_delta", 4);
+  for (std::size_t i = 0; i < 4; ++i) {
+    c.colourMaxDelta[i] = readInteger<int>(max[i], place + "/colour_max_delta/" + std::to_string(i));
+    c.colourMeanDelta[i] = readNumber(mean[i], place + "/colour_mean_delta/" + std::to_string(i));
+  }
+  c.colourPixelsOver = readInteger<std::uint64_t>(field(j, place, "colour_pixels_over"), place + "/colour_pixels_over");
+  c.psnr = readNumber(field(j, place, "psnr"), place + "/psnr");
+  c.depthMaxDelta = readNumber(field(j, place, "depth_max_delta"), place + "/depth_max_delta");
+  c.depthPixelsOver = readInteger<std::uint64_t>(field(j, place, "depth_pixels_over"), place + "/depth_pixels_over");
+  const json& failures = field(j, place, "failures");
+  if (!failures.is_array()) bad(place + "/failures", "expected an array");
+  for (std::size_t i = 0; i < failures.size(); ++i) {
+    c.failures.push_back(readString(failures[i], place + "/failures/" + std::to_string(i)));
+  }
+  return c;
+}
+
+SceneResult readSceneResult(const json& j, const std::string& place) {
+  const auto at = [&](const char* key) -> const json& { return field(j, place, key); };
+  const auto where = [&](const char* key) { return place + "/" + key; };
+  SceneResult r;
+  r.entry.name = readString(at("name"), where("name"));
+  r.entry.path = readString(at("path"), where("path"));
+  r.outcome = readOutcome(at("outcome"), where("outcome"));
+  r.actual = readOutcome(at("actual"), where("actual"));
+  if (const json& e = at("expectation"); !e.is_null()) {
+    const std::string p = where("expectation");
+    Expectation expectation;
+    expectation.outcome = readOutcome(field(e, p, "outcome"), p + "/outcome");
+    expectation.reason = readString(field(e, p, "reason"), p + "/reason");
+    expectation.line = readInteger<int>(field(e, p, "line"), p + "/line");
+    r.expectation = expectation;
+  }
+  r.error = readString(at("error"), where("error"));
+  r.loaded = readBool(at("loaded"), where("loaded"));
+  r.description = readString(at("description"), where("description"));
+  r.width = readInteger<std::uint32_t>(at("width"), where("width"));
+  r.height = readInteger<std::uint32_t>(at("height"), where("height"));
+  r.tolerance = readTolerance(at("tolerance"), where("tolerance"));
+  if (const json& c = at("comparison"); !c.is_null()) r.comparison = readComparison(c, where("comparison"));
+  r.softMilliseconds = readNumber(at("soft_milliseconds"), where("soft_milliseconds"));
+  r.vulkanMilliseconds = readNumber(at("vulkan_milliseconds"), where("vulkan_milliseconds"));
+  r.milliseconds = readNumber(at("milliseconds"), where("milliseconds"));
+  r.imageRoot = readString(at("image_root"), where("image_root"));
+  const json& images = at("images");
+  if (!images.is_array()) bad(where("images"), "expected an array");
+  for (std::size_t i = 0; i < images.size(); ++i) {
+    const std::string p = where("images") + "/" + std::to_string(i);
+    r.images.push_back({readString(field(images[i], p, "kind"), p + "/kind"),
+                        readString(field(images[i], p, "file"), p + "/file")});
+  }
+  r.pixelData = readString(at("pixel_data"), where("pixel_data"));
+  const json& range = readArray(at("depth_view_range"), where("depth_view_range"), 2);
+  r.depthViewRange = {static_cast<float>(readNumber(range[0], where("depth_view_range") + "/0")),
+                      static_cast<float>(readNumber(range[1], where("depth_view_range") + "/1"))};
+  return r;
+}
+
+template <class T, class Read>
+softraster::Result<T> guarded(const Read& read) {
+  try {
+    return read();
+  } catch (const BadField& e) {
+    return softraster::Status::error(std::string("results JSON: ") + e.what());
+  } catch (const json::exception& e) {
+    return softraster::Status::error(std::string("results JSON: ") + e.what());
+  }
+}
+
+}  // namespace
+
+json sceneResultToJson(const SceneResult& r) {
+  json j;
+  j["name"] = r.entry.name;
+  j["path"] = r.entry.path.string();
+  j["outcome"] = outcomeName(r.outcome);
+  j["actual"] = outcomeName(r.actual);
+  j["expectation"] = r.expectation ? json{{"outcome", outcomeName(r.expectation->outcome)},
+                                          {"reason", r.expectation->reason},
+                                          {"line", r.expectation->line}}
+                                   : json(nullptr);
+  j["error"] = r.error;
+  j["loaded"] = r.loaded;
+  j["description"] = r.description;
+  j["width"] = r.width;
+  j["height"] = r.height;
+  j["tolerance"] = toleranceJson(r.tolerance);
+  j["comparison"] = r.comparison ? comparisonJson(*r.comparison) : json(nullptr);
+  j["soft_milliseconds"] = number(r.softMilliseconds);
+  j["vulkan_milliseconds"] = number(r.vulkanMilliseconds);
+  j["milliseconds"] = number(r.milliseconds);
+  j["image_root"] = r.imageRoot.string();
+  json images = json::array();
+  for (const SceneImage& image : r.images) images.push_back({{"kind", image.kind}, {"file", image.file.string()}});
+  j["images"] = images;
+  j["pixel_data"] = r.pixelData.string();
+  j["depth_view_range"] = {number(r.depthViewRange.first), number(r.depthViewRange.second)};
+  return j;
+}
+
+softraster::Result<SceneResult> sceneResultFromJson(const json& value) {
+  return guarded<SceneResult>([&] { return readSceneResult(value, ""); });
+}
+
+json runResultsToJson(const RunResults& run) {
+  json scenes = json::array();
+  for (const SceneResult& r : run.scenes) scenes.push_back(sceneResultToJson(r));
+  return {{"suite_name", run.suiteName},
+          {"command_line", run.commandLine},
+          {"junit_file", run.junitFile.generic_string()},
+          {"seconds", number(run.seconds)},
+          {"jobs", run.jobs},
+          {"finished", static_cast<std::int64_t>(run.finished)},
+          {"scenes", scenes}};
+}
+
+softraster::Result<RunResults> runResultsFromJson(const json& value) {
+  return guarded<RunResults>([&] {
+    RunResults run;
+    run.suiteName = readString(field(value, "", "suite_name"), "/suite_name");
+    run.commandLine = readString(field(value, "", "command_line"), "/command_line");
+    run.junitFile = readString(field(value, "", "junit_file"), "/junit_file");
+    run.seconds = readNumber(field(value, "", "seconds"), "/seconds");
+    run.jobs = readInteger<unsigned>(field(value, "", "jobs"), "/jobs");
+    run.finished = static_cast<std::time_t>(readInteger<std::int64_t>(field(value, "", "finished"), "/finished"));
+    const json& scenes = field(value, "", "scenes");
+    if (!scenes.is_array()) bad("/scenes", "expected an array");
+    for (std::size_t i = 0; i < scenes.size(); ++i) run.scenes.push_back(readSceneResult(scenes[i], "/scenes/" + std::to_string(i)));
+    return run;
+  });
+}
+
+}  // namespace crosscheck

@@ -1,0 +1,23 @@
+#!/usr/bin/env bash
+# The sanitizer job (.ci/run runs it after the tests): builds everything with AddressSanitizer,
+# LeakSanitizer and UndefinedBehaviorSanitizer, no recovery (-DSOFTRASTER_SANITIZE=ON), into its
+# own folder (default build-sanitize/), then runs the whole test suite under them: the unit tests,
+# every scene cross-checked, and the conformance suite in worker processes (conformance.cli.*).
+# Leaks inside the Vulkan driver are suppressed by tests/sanitizers/lsan.supp (its libraries
+# only); any other leak, overflow or undefined behaviour fails the test that hit it.
+#   bash scripts/sanitize.sh [BUILD_DIR]
+# Deliberately no package installation: run scripts/setup.sh (or scripts/test.sh) first.
+set -euo pipefail
+cd "$(dirname "$0")/.."
+build=${1:-build-sanitize}
+
+# -O1, as the sanitizers' documentation suggests: the shading-model tables compile in a fraction
+# of -O2's time and the tests still run fast; asserts stay on (no NDEBUG).
+cmake -S . -B "$build" -DCMAKE_BUILD_TYPE=Debug -DCMAKE_CXX_FLAGS_DEBUG="-O1 -g" -DSOFTRASTER_SANITIZE=ON >/dev/null
+cmake --build "$build" -j"$(nproc)"
+
+export ASAN_OPTIONS=detect_leaks=1:strict_string_checks=1:check_initialization_order=1:detect_stack_use_after_return=1
+export UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1
+export LSAN_OPTIONS=suppressions=$PWD/tests/sanitizers/lsan.supp:print_suppressions=0
+cd "$build"
+ctest --output-on-failure -j"$(nproc)"

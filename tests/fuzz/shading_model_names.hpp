@@ -1,0 +1,32 @@
+// The shading models' names and mesh inputs as the fuzz build's stand-in for the real table
+// (shaders/shading_models.cpp), whose rows instantiate every twin's draw code and take minutes
+// to compile: the scene loader only looks a model up by name and asks what its mesh must hold.
+// shading_model_names_test.cpp checks in the default build that this list is the real table's.
+// Deliberately no SPIR-V and no draw functions: nothing in the fuzz build renders a scene.
+#pragma once
+
+#include <draw_inputs.hpp>
+
+#include <string_view>
+
+namespace fuzz {
+
+struct ShadingModelName {
+  std::string_view name;
+  unsigned meshInputs;
+};
+
+inline constexpr ShadingModelName kShadingModelNames[] = {
+    {"vertex_color", 0},
+    {"vertex_color_flat", 0},
+    {"vertex_color_noperspective", 0},
+    {"light_vertex", shaders::kReadsNormals},
+    {"light_pixel", shaders::kReadsNormals},
+    {"light_pixel_noperspective", shaders::kReadsNormals},
+    {"phong_vertex", shaders::kReadsNormals},
+    {"phong_pixel", shaders::kReadsNormals},
+    {"blinn_phong_vertex", shaders::kReadsNormals},
+    {"blinn_phong_pixel", shaders::kReadsNormals},
+};
+
+}  // namespace fuzz
