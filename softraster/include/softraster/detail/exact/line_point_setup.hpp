@@ -20,6 +20,7 @@
 #include <array>
 #include <cmath>
 #include <cstdint>
+#include <initializer_list>
 #include <optional>
 
 namespace softraster::detail {
@@ -56,6 +57,18 @@ inline QuadEdges quadEdges(const std::array<std::int32_t, 4>& x, const std::arra
   return q;
 }
 
+// Snapped line coordinates beyond this (1/256 px; 2^20 pixels) are not drawn: clipping keeps real
+// lines inside the viewport bounds (2^15 pixels), and a coordinate that snapped to INT32_MIN (too
+// large, or NaN) would overflow the quad's arithmetic. lavapipe's result there is undefined too.
+inline constexpr std::int32_t kMaxLineCoordinate = 1 << 28;
+
+inline bool lineCoordinatesInRange(std::initializer_list<std::int32_t> values) {
+  for (const std::int32_t v : values) {
+    if (v < -kMaxLineCoordinate || v > kMaxLineCoordinate) return false;
+  }
+  return true;
+}
+
 // A line's quad and the (possibly adjusted) deltas its attribute planes use.
 struct LineSetup {
   QuadEdges quad;
@@ -71,6 +84,7 @@ inline std::optional<LineSetup> setupRectangularLine(Vec4 v1, Vec4 v2, float wid
   const std::int32_t ty = snapLineCoordinate(dx * scale);
   const std::int32_t x1 = snapLineCoordinate(v1.x - kPixelCentreOffset), y1 = snapLineCoordinate(v1.y - kPixelCentreOffset);
   const std::int32_t x2 = snapLineCoordinate(v2.x - kPixelCentreOffset), y2 = snapLineCoordinate(v2.y - kPixelCentreOffset);
+  if (!lineCoordinatesInRange({tx, ty, x1, y1, x2, y2})) return std::nullopt;
   return LineSetup{quadEdges({x1 - tx, x2 - tx, x2 + tx, x1 + tx}, {y1 - ty, y2 - ty, y2 + ty, y1 + ty}), dx, dy,
                    1.0f / area};
 }
@@ -131,6 +145,7 @@ inline std::optional<LineSetup> setupBresenhamLine(Vec4 v1, Vec4 v2, float lineW
     const std::int32_t bx = snapLineCoordinate(v2.x + xOffsetEnd - kPixelCentreOffset);
     const std::int32_t ay = snapLineCoordinate(v1.y + yOffset - kPixelCentreOffset);
     const std::int32_t by = snapLineCoordinate(v2.y + yOffsetEnd - kPixelCentreOffset);
+    if (!lineCoordinatesInRange({ax, bx, ay, by, fixedWidth})) return std::nullopt;
     x = {ax, bx, bx, ax};
     y = {ay - fixedWidth / 2, by - fixedWidth / 2, by + fixedWidth / 2, ay + fixedWidth / 2};
   } else {  // y-major
@@ -175,6 +190,7 @@ inline std::optional<LineSetup> setupBresenhamLine(Vec4 v1, Vec4 v2, float lineW
     const std::int32_t bx = snapLineCoordinate(v2.x + xOffsetEnd - kPixelCentreOffset);
     const std::int32_t ay = snapLineCoordinate(v1.y + yOffset - kPixelCentreOffset);
     const std::int32_t by = snapLineCoordinate(v2.y + yOffsetEnd - kPixelCentreOffset);
+    if (!lineCoordinatesInRange({ax, bx, ay, by, fixedWidth})) return std::nullopt;
     x = {ax - fixedWidth / 2, bx - fixedWidth / 2, bx + fixedWidth / 2, ax + fixedWidth / 2};
     y = {ay, by, by, ay};
   }
@@ -214,18 +230,20 @@ inline TriangleInterpolants<N> setupLineInterpolants(const ShadedVertex<N>& v1, 
 inline constexpr float kMaxPointSize = 255.0f;  // LP_MAX_POINT_WIDTH
 
 // A point's square: covered iff x0 <= 256*px < x0 + width (likewise y), width >= 1 px.
+// The corner and bounds are 64-bit: a point far outside the guard band snaps to INT32_MIN, and
+// its corner would overflow an int (the bounds then lie outside any draw region).
 inline QuadEdges setupPoint(Vec4 window, float size) {
   if (size > kMaxPointSize) size = kMaxPointSize;
   const std::int32_t width = std::max<std::int32_t>(256, snapLineCoordinate(size));
-  const std::int32_t x0 = snapLineCoordinate(window.x - kPixelCentreOffset) - width / 2;
-  const std::int32_t y0 = snapLineCoordinate(window.y - kPixelCentreOffset) - width / 2;
+  const std::int64_t x0 = std::int64_t{snapLineCoordinate(window.x - kPixelCentreOffset)} - width / 2;
+  const std::int64_t y0 = std::int64_t{snapLineCoordinate(window.y - kPixelCentreOffset)} - width / 2;
   QuadEdges q;
-  q.edges[0] = {-std::int64_t{x0} + 1, -256, 0};             // left, inclusive
-  q.edges[1] = {std::int64_t{x0} + width, 256, 0};           // right, exclusive
-  q.edges[2] = {-std::int64_t{y0} + 1, 0, 256};              // top, inclusive
-  q.edges[3] = {std::int64_t{y0} + width, 0, -256};          // bottom, exclusive
-  q.bounds = {x0 >> kSubpixelBits, y0 >> kSubpixelBits, ((x0 + width + 255) >> kSubpixelBits) - 1,
-              ((y0 + width + 255) >> kSubpixelBits) - 1};
+  q.edges[0] = {-x0 + 1, -256, 0};             // left, inclusive
+  q.edges[1] = {x0 + width, 256, 0};           // right, exclusive
+  q.edges[2] = {-y0 + 1, 0, 256};              // top, inclusive
+  q.edges[3] = {y0 + width, 0, -256};          // bottom, exclusive
+  const auto pixel = [](std::int64_t subpixels) { return static_cast<int>(subpixels >> kSubpixelBits); };
+  q.bounds = {pixel(x0), pixel(y0), pixel(x0 + width + 255) - 1, pixel(y0 + width + 255) - 1};
   return q;
 }
 
