@@ -109,6 +109,16 @@ std::string meanText(const std::array<double, 4>& v) {
 
 std::string psnrText(double psnr) { return std::isfinite(psnr) ? fixed("%.2f", psnr) : "\xE2\x88\x9E"; }
 
+// A file linked from the report: relative to its folder, so the link survives moving both
+// together; absolute when there is no folder or no relative path.
+std::filesystem::path linkFrom(const std::filesystem::path& reportDir, const std::filesystem::path& file) {
+  std::error_code ec;
+  const std::filesystem::path absolute = std::filesystem::absolute(file, ec);
+  if (reportDir.empty() || ec) return absolute;
+  const std::filesystem::path relative = std::filesystem::relative(absolute, std::filesystem::absolute(reportDir, ec), ec);
+  return ec || relative.empty() ? absolute : relative;
+}
+
 // The scene's stable anchor (documented in the README): #scene=NAME.
 std::string anchorOf(const SceneResult& r) { return "#scene=" + e(encodeUrlPath(r.entry.name)); }
 
@@ -284,12 +294,7 @@ std::string sceneSection(const RunResults& run, const SceneResult& r, std::size_
   }
   s += "</summary>\n<div class=\"scene-body\">\n";
   if (!r.description.empty()) s += "<p class=\"desc\">" + e(r.description) + "</p>\n";
-  // The scene file, linked relative to the report (so the link survives moving both together).
-  std::error_code ec;
-  const std::filesystem::path scenePath = std::filesystem::absolute(r.entry.path, ec);
-  const std::filesystem::path relative =
-      reportDir.empty() || ec ? scenePath : std::filesystem::relative(scenePath, std::filesystem::absolute(reportDir, ec), ec);
-  s += "<p class=\"run\">scene file <a href=\"" + url(relative.empty() ? scenePath : relative) + "\">" +
+  s += "<p class=\"run\">scene file <a href=\"" + url(linkFrom(reportDir, r.entry.path)) + "\">" +
        e(r.entry.path.generic_string()) + "</a> \xC2\xB7 <a href=\"" + anchorOf(r) + "\">link to this scene</a>"
        " \xC2\xB7 reproduce: <code class=\"reproduce\">" + e(reproduceCommand(run, r)) + "</code></p>\n";
   if (r.expectation) {
@@ -412,11 +417,7 @@ std::string reportHtml(const RunResults& run, const std::filesystem::path& repor
   if (run.finished != 0) html += " \xC2\xB7 " + e(utcTime(run.finished, "%Y-%m-%d %H:%M:%S UTC"));
   if (!run.commandLine.empty()) html += "<br><code>" + e(run.commandLine) + "</code>";
   if (!run.junitFile.empty()) {
-    std::error_code ec;
-    const std::filesystem::path junit = std::filesystem::absolute(run.junitFile, ec);
-    const std::filesystem::path relative =
-        reportDir.empty() || ec ? junit : std::filesystem::relative(junit, std::filesystem::absolute(reportDir, ec), ec);
-    html += "<br>JUnit: <a href=\"" + url(relative.empty() ? junit : relative) + "\">" + e(run.junitFile.generic_string()) + "</a>";
+    html += "<br>JUnit: <a href=\"" + url(linkFrom(reportDir, run.junitFile)) + "\">" + e(run.junitFile.generic_string()) + "</a>";
   }
   html += "</p>\n";
 
