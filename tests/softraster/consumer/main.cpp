@@ -17,7 +17,12 @@ struct FlatRed {
 };
 
 int main() {
-  softraster::Framebuffer framebuffer(32, 32);
+  softraster::Result<softraster::Framebuffer> created = softraster::Framebuffer::create(32, 32);
+  if (!created) {
+    std::fprintf(stderr, "%s\n", created.error().c_str());
+    return 1;
+  }
+  softraster::Framebuffer& framebuffer = *created;
   framebuffer.clear({0, 0, 0, 1}, 1.0f);
   const std::vector<FlatRed::Vertex> vertices{{{-1, -1, 0.5f}}, {{-1, 1, 0.5f}}, {{1, -1, 0.5f}}};
   const std::vector<std::uint32_t> indices{0, 1, 2};
