@@ -12,8 +12,8 @@
 #   examples     configures examples/ against the package (with GLM) and runs both examples
 # Usage: install_consumer_test.sh BUILD_DIR SOURCE_DIR MODE
 set -euo pipefail
-build_dir=$1
-source_dir=$2
+build_dir=$(cd "$1" && pwd)
+source_dir=$(cd "$2" && pwd)
 mode=$3
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
