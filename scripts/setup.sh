@@ -6,6 +6,7 @@ cd "$(dirname "$0")/.."
 
 packages=(
   cmake g++ make pkg-config                 # toolchain
+  clang                                     # tests: an outside consumer built with Clang too
   libvulkan-dev mesa-vulkan-drivers         # Vulkan loader and lavapipe
   vulkan-validationlayers glslang-tools     # validation in tests; GLSL -> SPIR-V at build time
   libtinyobjloader-dev nlohmann-json3-dev   # OBJ meshes and scene files

@@ -34,13 +34,20 @@ vkref::ShaderProgram programOf(const shaders::ShadingModel& model) {
 SoftrasterScene::SoftrasterScene(const Scene& scene, const softraster::ContextOptions& options)
     : scene_(scene),
       options_(options),
-      context_(options),
-      framebuffer_(scene.width, scene.height, scene.depthFormat, scene.samples) {
+      context_(options) {
+  softraster::Result<softraster::Framebuffer> framebuffer =
+      softraster::Framebuffer::create(scene.width, scene.height, scene.depthFormat, scene.samples);
+  if (framebuffer) {
+    framebuffer_ = std::move(*framebuffer);
+  } else {
+    framebufferStatus_ = framebuffer.status().prefixed("softraster");
+  }
   draws_.reserve(scene.draws.size());  // each draw's vertices and uniforms in its model's types
   for (const Draw& draw : scene.draws) draws_.push_back(draw.shading->prepareSoftraster(draw.mesh, drawParameters(scene, draw)));
 }
 
 softraster::Status SoftrasterScene::render() {
+  if (!framebufferStatus_) return framebufferStatus_;
   // Timed: clear, draws, MSAA resolve (not the framebuffer's allocation, not the Frame).
   const auto start = Clock::now();
   // The 1/z buffer is cleared to 0 (infinitely far); it is not a Vulkan mode.

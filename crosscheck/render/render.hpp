@@ -65,6 +65,7 @@ class SoftrasterScene {
   softraster::ContextOptions options_;
   softraster::Context context_;
   softraster::Framebuffer framebuffer_, resolved_;  // resolved_: the MSAA resolve's output
+  softraster::Status framebufferStatus_;              // why framebuffer_ could not be made, if so
   std::vector<shaders::SoftrasterDraw> draws_;
   double milliseconds_ = 0;
 };

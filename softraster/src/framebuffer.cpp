@@ -1,5 +1,6 @@
-// Framebuffer storage, clears (deferred: see framebuffer.hpp), the MSAA resolve (SSE2 where the
-// build has it, the same operations per channel) and depth read-out.
+// Framebuffer creation (the checks create() documents), storage, clears (deferred: see
+// framebuffer.hpp), the MSAA resolve (SSE2 where the build has it, the same operations per
+// channel) and depth read-out (one sample, or all of them as floats).
 #include <softraster/detail/fragment/colour.hpp>
 #include <softraster/framebuffer.hpp>
 
@@ -7,6 +8,7 @@
 #include <bit>
 #include <cmath>
 #include <cstring>
+#include <string>
 
 #if defined(__SSE2__)
 #include <emmintrin.h>
@@ -18,6 +20,22 @@ std::uint32_t depthClearValue(DepthFormat format, float depth) {
   const int bits = unormDepthBits(format);
   if (bits == 0) return std::bit_cast<std::uint32_t>(depth);
   return static_cast<std::uint32_t>(std::lrint(static_cast<double>(depth) * ((1u << bits) - 1)));
+}
+
+Result<Framebuffer> Framebuffer::create(std::uint32_t width, std::uint32_t height, DepthFormat depthFormat,
+                                        std::uint32_t samples) {
+  if (width == 0 || height == 0 || width > kMaxFramebufferSize || height > kMaxFramebufferSize) {
+    return Status::error("framebuffer size " + std::to_string(width) + "x" + std::to_string(height) +
+                         ": width and height must be 1.." + std::to_string(kMaxFramebufferSize));
+  }
+  if (samples != 1 && samples != 4) {
+    return Status::error("framebuffer samples " + std::to_string(samples) + ": must be 1 or 4");
+  }
+  if (depthFormat != DepthFormat::D16Unorm && depthFormat != DepthFormat::X8D24UnormPack32 &&
+      depthFormat != DepthFormat::D32Sfloat) {
+    return Status::error("unknown depth format");
+  }
+  return Framebuffer(width, height, depthFormat, samples);
 }
 
 Framebuffer::Framebuffer(std::uint32_t width, std::uint32_t height, DepthFormat depthFormat, std::uint32_t samples)
@@ -118,6 +136,18 @@ void Framebuffer::writePendingClear() const {
   const PendingClear clear = *pending_;
   pending_.reset();
   if (height_ != 0) fillRows(clear, 0, height_ - 1);
+}
+
+std::vector<float> Framebuffer::depthValues() const {
+  std::vector<float> out;
+  depthValuesInto(out);
+  return out;
+}
+
+void Framebuffer::depthValuesInto(std::vector<float>& out) const {
+  settled();
+  out.resize(depth_.size());
+  for (std::size_t i = 0; i < depth_.size(); ++i) out[i] = depth(i);
 }
 
 float Framebuffer::depth(std::size_t sample) const {

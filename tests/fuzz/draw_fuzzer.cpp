@@ -104,7 +104,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   const bool onThreads = in.below(8) == 7;
 
   const auto drawWith = [&](const Context& context) {
-    Framebuffer framebuffer(width, height, format, samples);
+    Framebuffer framebuffer = Framebuffer::create(width, height, format, samples).value();
     framebuffer.clear(clearColour, clearDepth);
     Outcome out;
     out.status = indexed ? context.drawIndexed<Shader>(state, uniforms, vertices, indices, framebuffer)

@@ -29,7 +29,7 @@ struct White {
 // its middle); returns the status and counts the white pixels.
 softraster::Status drawWith(softraster::PipelineState state, int* whitePixels = nullptr) {
   state.rasterization.cullMode = softraster::CullMode::None;
-  softraster::Framebuffer framebuffer(16, 16);
+  softraster::Framebuffer framebuffer = softraster::Framebuffer::create(16, 16).value();
   framebuffer.clear({0, 0, 0, 1}, 1.0f);
   const std::vector<White::Vertex> vertices{{{-1.0f, 0.0f, 0.5f}}, {{1.0f, 0.0f, 0.5f}}, {{-1.0f, 1.0f, 0.5f}}};
   const softraster::Context context;

@@ -1,17 +1,25 @@
 // Framebuffer: an R8G8B8A8_UNORM colour image and a depth image (formats.hpp), row 0 at the top,
-// with 1 or 4 samples per pixel (samples of a pixel are adjacent). Depth is kept as the format
-// stores it: UNORM depth as its integer, D32_SFLOAT as its float's bits. resolve() averages
-// colour samples as lavapipe's resolve blit does and keeps depth sample 0.
+// with 1 or 4 samples per pixel (samples of a pixel are adjacent, in Vulkan's sample order).
+// Depth is kept as the format stores it: UNORM depth as its integer, D32_SFLOAT as its float's
+// bits; depthValues() reads it back as floats. resolve() averages colour samples as lavapipe's
+// resolve blit does and keeps depth sample 0.
+// Made by Framebuffer::create, which checks the size, format and sample count and returns the
+// error as a Result (a default-constructed Framebuffer has no pixels and no draw accepts it).
 // clear() is deferred: it remembers the values, and the next draw that runs in the Context's
 // bands writes them band by band, on the band's own thread just before drawing there (so the
 // rows are in that core's cache when drawn); any other access to the images writes the whole
-// clear first, so a pending clear is never observable.
-// Deliberately without stencil until a scene needs it.
+// clear first, so a pending clear is never observable. Not thread-safe: one thread at a time
+// draws into or reads a Framebuffer (even a const read may write a pending clear).
+// Deliberately without stencil until a scene needs it; accessors do not check their
+// coordinates beyond an assert (they are preconditions, as for std::vector's operator[]).
 #pragma once
 
 #include <softraster/formats.hpp>
 #include <softraster/math.hpp>
+#include <softraster/status.hpp>
 
+#include <array>
+#include <cassert>
 #include <cstddef>
 #include <cstdint>
 #include <optional>
@@ -19,12 +27,18 @@
 
 namespace softraster {
 
+// The largest width and height create() accepts: lavapipe's maxFramebufferWidth and Height.
+inline constexpr std::uint32_t kMaxFramebufferSize = 16384;
+
 class Framebuffer {
  public:
-  Framebuffer() = default;
-  // samples: 1 or 4 (the Vulkan standard 4x pattern).
-  Framebuffer(std::uint32_t width, std::uint32_t height, DepthFormat depthFormat = DepthFormat::D32Sfloat,
-              std::uint32_t samples = 1);
+  Framebuffer() = default;  // no pixels: only a target for assignment
+
+  // A width x height framebuffer with `samples` samples per pixel (1, or 4: Vulkan's standard
+  // 4x pattern), or the error: "framebuffer size WxH: width and height must be 1..16384",
+  // "framebuffer samples N: must be 1 or 4", "unknown depth format".
+  static Result<Framebuffer> create(std::uint32_t width, std::uint32_t height,
+                                    DepthFormat depthFormat = DepthFormat::D32Sfloat, std::uint32_t samples = 1);
 
   std::uint32_t width() const { return width_; }
   std::uint32_t height() const { return height_; }
@@ -49,8 +63,26 @@ class Framebuffer {
   // Depth as stored, one value per sample (see the top of this file).
   std::vector<std::uint32_t>& depthStorage() { return settled().depth_; }
   const std::vector<std::uint32_t>& depthStorage() const { return settled().depth_; }
-  // Depth of one sample (index into depthStorage()) as a float in [0, 1].
+  // Depth of one sample (index into depthStorage()) as a float: in [0, 1] for Vulkan depth (the
+  // UNORM integer divided by 2^n - 1), 1/w for the 1/z buffer (D32_SFLOAT's float as stored).
   float depth(std::size_t sample) const;
+  // Every sample's depth as depth() converts it, in depthStorage()'s order (one allocation; the
+  // Into form reuses `out`'s storage).
+  std::vector<float> depthValues() const;
+  void depthValuesInto(std::vector<float>& out) const;
+
+  // Index of sample `sample` of pixel (x, y) in depthStorage(), and times 4 in colour().
+  std::size_t sampleIndex(std::uint32_t x, std::uint32_t y, std::uint32_t sample = 0) const {
+    assert(x < width_ && y < height_ && sample < samples_);
+    return (static_cast<std::size_t>(y) * width_ + x) * samples_ + sample;
+  }
+  // The RGBA8 bytes of one sample of pixel (x, y); (0, 0) is the top-left pixel.
+  std::array<std::uint8_t, 4> colourAt(std::uint32_t x, std::uint32_t y, std::uint32_t sample = 0) const {
+    const std::uint8_t* p = colour().data() + 4 * sampleIndex(x, y, sample);
+    return {p[0], p[1], p[2], p[3]};
+  }
+  // One sample's depth as depth() converts it.
+  float depthAt(std::uint32_t x, std::uint32_t y, std::uint32_t sample = 0) const { return depth(sampleIndex(x, y, sample)); }
 
   // For the draw loop's bands: a clear's values, one word per sample each.
   struct PendingClear {
@@ -69,6 +101,8 @@ class Framebuffer {
   void clearRows(const PendingClear& clear, std::uint32_t y0, std::uint32_t y1);
 
  private:
+  Framebuffer(std::uint32_t width, std::uint32_t height, DepthFormat depthFormat, std::uint32_t samples);
+
   // This framebuffer with any pending clear written: the images are its observable state, so
   // even a const access writes a pending clear first (hence the mutable members).
   Framebuffer& settled() {

@@ -1,12 +1,20 @@
 // Small vector and matrix types for softraster and its shaders.
 // Every operation spells out its order of evaluation, because the exact method must
-// round exactly as lavapipe's JIT code does. Nothing here fuses a multiply and an add:
-// the library is built with -ffp-contract=off, and FMA is only used where it is written.
+// round exactly as lavapipe's JIT code does. Nothing here fuses a multiply and an add: these
+// headers are compiled with the user's flags, so the softraster target passes -ffp-contract=off
+// to everything that links it (CMake's INTERFACE option, pkg-config's cflags), and under Clang
+// this file also turns contraction off itself (#pragma clang fp contract). FMA is only used
+// where it is written (std::fma).
 // Deliberately not a general linear-algebra library: no inverse, no quaternions.
 #pragma once
 
 #include <array>
 #include <cmath>
+
+#if defined(__clang__)
+#pragma float_control(push)
+#pragma clang fp contract(off)
+#endif
 
 namespace softraster {
 
@@ -64,3 +72,7 @@ constexpr Mat4 multiply(const Mat4& a, const Mat4& b) {
 }
 
 }  // namespace softraster
+
+#if defined(__clang__)
+#pragma float_control(pop)
+#endif

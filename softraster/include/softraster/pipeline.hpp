@@ -8,13 +8,26 @@
 // and y are clipped at 2w, measured); 4x MSAA for filled triangles (Framebuffer::resolve()
 // resolves as lavapipe does); depth bias for filled triangles; the course's 1/z depth buffer;
 // blending with every core factor and op, blend constants and the colour write mask.
+// Conventions are Vulkan's: clip space x right, y down, z in [0, w]; window origin at the top
+// left, pixel centres at +0.5; front faces counter-clockwise as seen in the image by default;
+// docs/library.md has them all, with the 4x sample positions.
 // A Context holds no global state and reports errors through Status; it never prints. It owns
-// its threads (ContextOptions::threads); draws from several threads on one Context are safe and
-// take turns where they use the threads; one Context per thread avoids that wait. A steady-state
-// draw allocates nothing: its vectors are the Context's scratch (detail/exact/scratch.hpp).
+// its threads (ContextOptions::threads). Threads: a Context may be shared (its draws are const;
+// draws from several threads take turns where they use the Context's threads), but one Context
+// per thread, each with its own Framebuffer, avoids that wait; a Framebuffer must not be drawn
+// into or read from two threads at once. A steady-state draw allocates nothing: its vectors are
+// the Context's scratch (detail/exact/scratch.hpp).
+// Exactness needs every float operation rounded on its own: the installed target passes
+// -ffp-contract=off to its users (CMake and pkg-config); under Clang the library's own code is
+// also compiled with `#pragma clang fp contract(off)`, whatever the flags.
 // Deliberately absent: MSAA lines, points and polygon modes, depth bias in polygon modes,
 // dual-source blending, alternative rasterization methods (each a later issue).
 #pragma once
+
+#if defined(__clang__)
+#pragma float_control(push)
+#pragma clang fp contract(off)
+#endif
 
 #include <softraster/detail/exact/draw.hpp>
 #include <softraster/detail/exact/scratch.hpp>
@@ -49,43 +62,56 @@ class Context {
   // Threads drawing, the caller's included (options().threads, or the core count for 0).
   unsigned threads() const { return pool_->threads(); }
 
-  // vkCmdDraw: vertices 0..n-1 in order, assembled by state.topology.
-  template <class Shader>
-  Status draw(const PipelineState& state, const typename Shader::Uniforms& uniforms,
-              std::span<const typename Shader::Vertex> vertices, Framebuffer& framebuffer) const {
-    const detail::ScratchPool::Lease scratch = scratch_->lease();
-    std::vector<std::uint32_t>& sequence = (*scratch).vector<std::uint32_t>(detail::ScratchSlot::IndexSequence);
-    sequence.resize(vertices.size());
-    for (std::size_t i = 0; i < sequence.size(); ++i) sequence[i] = static_cast<std::uint32_t>(i);
-    return drawPrimitives<Shader>(state, uniforms, vertices, sequence, framebuffer, *scratch);
+  // vkCmdDraw: vertices 0..n-1 in order, assembled by state.topology. Shader must meet
+  // ShaderInterface (shader.hpp); a type that does not fails to compile here with one message.
+  // Formats: the depth formats this call is compiled for, none meaning all three. The pipeline
+  // is instantiated per format, so naming the one a program uses (draw<S, DepthFormat::D32Sfloat>)
+  // compiles a third of the code; a framebuffer of another format is then an error.
+  template <class Shader, DepthFormat... Formats>
+  Status draw(const PipelineState& state, const typename detail::ShaderParameters<Shader>::Uniforms& uniforms,
+              typename detail::ShaderParameters<Shader>::Vertices vertices, Framebuffer& framebuffer) const {
+    if constexpr (!checkShaderInterface<Shader>()) {
+      return Status::error("not a shader");  // unreachable: checkShaderInterface has failed the build
+    } else {
+      const detail::ScratchPool::Lease scratch = scratch_->lease();
+      std::vector<std::uint32_t>& sequence = (*scratch).vector<std::uint32_t>(detail::ScratchSlot::IndexSequence);
+      sequence.resize(vertices.size());
+      for (std::size_t i = 0; i < sequence.size(); ++i) sequence[i] = static_cast<std::uint32_t>(i);
+      return drawPrimitives<Shader, Formats...>(state, uniforms, vertices, sequence, framebuffer, *scratch);
+    }
   }
 
   // vkCmdDrawIndexed. An index past the end of `vertices` is an error and nothing is drawn.
-  // Indices that do not complete a primitive are ignored, as Vulkan does.
-  template <class Shader>
-  Status drawIndexed(const PipelineState& state, const typename Shader::Uniforms& uniforms,
-                     std::span<const typename Shader::Vertex> vertices, std::span<const std::uint32_t> indices,
-                     Framebuffer& framebuffer) const {
-    for (std::size_t i = 0; i < indices.size(); ++i) {
-      if (indices[i] >= vertices.size()) {
-        return Status::error("index " + std::to_string(i) + " (" + std::to_string(indices[i]) +
-                             ") is past the last vertex (" + std::to_string(vertices.size()) + " vertices)");
+  // Indices that do not complete a primitive are ignored, as Vulkan does. Formats: as for draw.
+  template <class Shader, DepthFormat... Formats>
+  Status drawIndexed(const PipelineState& state, const typename detail::ShaderParameters<Shader>::Uniforms& uniforms,
+                     typename detail::ShaderParameters<Shader>::Vertices vertices,
+                     std::span<const std::uint32_t> indices, Framebuffer& framebuffer) const {
+    if constexpr (!checkShaderInterface<Shader>()) {
+      return Status::error("not a shader");  // unreachable: checkShaderInterface has failed the build
+    } else {
+      for (std::size_t i = 0; i < indices.size(); ++i) {
+        if (indices[i] >= vertices.size()) {
+          return Status::error("index " + std::to_string(i) + " (" + std::to_string(indices[i]) +
+                               ") is past the last vertex (" + std::to_string(vertices.size()) + " vertices)");
+        }
       }
+      const detail::ScratchPool::Lease scratch = scratch_->lease();
+      return drawPrimitives<Shader, Formats...>(state, uniforms, vertices, indices, framebuffer, *scratch);
     }
-    const detail::ScratchPool::Lease scratch = scratch_->lease();
-    return drawPrimitives<Shader>(state, uniforms, vertices, indices, framebuffer, *scratch);
   }
 
  private:
   // Whether this context can draw `state` into `framebuffer` at all: one error, before any work.
   Status validate(const PipelineState& state, const Framebuffer& framebuffer) const {
     const RasterizationState& rs = state.rasterization;
-    if (framebuffer.width() == 0 || framebuffer.height() == 0) return Status::error("framebuffer has no pixels");
+    if (framebuffer.width() == 0 || framebuffer.height() == 0) {
+      return Status::error("framebuffer has no pixels (make it with Framebuffer::create)");
+    }
     if (state.topology > Topology::TriangleFan) return Status::error("unknown topology");
     if (options_.depthMode == DepthMode::InverseZ && framebuffer.depthFormat() != DepthFormat::D32Sfloat) {
       return Status::error("the 1/z depth buffer needs a D32_SFLOAT framebuffer");
     }
-    if (framebuffer.samples() != 1 && framebuffer.samples() != 4) return Status::error("framebuffers have 1 or 4 samples");
     if (framebuffer.samples() == 4 && (!detail::isTriangleTopology(state.topology) ||
                                        rs.polygonMode != PolygonMode::Fill || options_.depthMode != DepthMode::Vulkan)) {
       return Status::error("softraster draws only filled triangles with 4x MSAA so far");
@@ -132,25 +158,34 @@ class Context {
     return {};
   }
 
-  // Validates, then picks the draw loop's instantiation for the depth format and fmuladd.
-  template <class Shader>
+  // Validates, then picks the draw loop's instantiation for the depth format (among Formats, or
+  // all when none are named) and fmuladd.
+  template <class Shader, DepthFormat... Formats>
   Status drawPrimitives(const PipelineState& state, const typename Shader::Uniforms& uniforms,
                         std::span<const typename Shader::Vertex> vertices, std::span<const std::uint32_t> indices,
                         Framebuffer& framebuffer, detail::DrawScratch& scratch) const {
-    static_assert(Shader::kVaryings >= 0 && Shader::kVaryings <= kMaxVaryings, "too many varyings");
     if (Status status = validate(state, framebuffer); !status) return status;
-    switch (framebuffer.depthFormat()) {
-      case DepthFormat::D16Unorm:
-        drawWithFormat<Shader, DepthFormat::D16Unorm>(state, uniforms, vertices, indices, framebuffer, scratch);
-        break;
-      case DepthFormat::X8D24UnormPack32:
-        drawWithFormat<Shader, DepthFormat::X8D24UnormPack32>(state, uniforms, vertices, indices, framebuffer, scratch);
-        break;
-      case DepthFormat::D32Sfloat:
-        drawWithFormat<Shader, DepthFormat::D32Sfloat>(state, uniforms, vertices, indices, framebuffer, scratch);
-        break;
+    if (drawIfFormat<Shader, DepthFormat::D16Unorm, Formats...>(state, uniforms, vertices, indices, framebuffer, scratch) ||
+        drawIfFormat<Shader, DepthFormat::X8D24UnormPack32, Formats...>(state, uniforms, vertices, indices, framebuffer,
+                                                                        scratch) ||
+        drawIfFormat<Shader, DepthFormat::D32Sfloat, Formats...>(state, uniforms, vertices, indices, framebuffer, scratch)) {
+      return {};
     }
-    return {};
+    return Status::error("the draw was compiled for other depth formats than the framebuffer's (Context::draw's Formats)");
+  }
+
+  // Draws with Format and returns true if the framebuffer has it and Formats allows it.
+  template <class Shader, DepthFormat Format, DepthFormat... Formats>
+  bool drawIfFormat(const PipelineState& state, const typename Shader::Uniforms& uniforms,
+                    std::span<const typename Shader::Vertex> vertices, std::span<const std::uint32_t> indices,
+                    Framebuffer& framebuffer, detail::DrawScratch& scratch) const {
+    if constexpr (sizeof...(Formats) == 0 || ((Formats == Format) || ...)) {
+      if (framebuffer.depthFormat() != Format) return false;
+      drawWithFormat<Shader, Format>(state, uniforms, vertices, indices, framebuffer, scratch);
+      return true;
+    } else {
+      return false;
+    }
   }
 
   template <class Shader, DepthFormat Format>
@@ -217,3 +252,7 @@ class Context {
 };
 
 }  // namespace softraster
+
+#if defined(__clang__)
+#pragma float_control(pop)
+#endif

@@ -1,5 +1,6 @@
-// The shader interface softraster's pipeline is a template over, and the vertex-layout
-// description both renderers read from a shader's C++ twin.
+// The shader interface softraster's pipeline is a template over (the concept ShaderInterface,
+// checked where Context::draw is called), and the vertex-layout description a renderer that
+// feeds a GLSL twin reads (vkref).
 //
 // A shader type S provides:
 //   struct S::Vertex;                        the vertex as stored in the vertex buffer
@@ -8,6 +9,7 @@
 //   static Vec4 S::vertex(const Uniforms&, const Vertex&, float* varyingsOut);   clip position
 //   template <class F>
 //   static Vec4T<F> S::fragment(const Uniforms&, const F* varyingsIn);           RGBA colour
+// The clip position is in Vulkan's clip space (x right, y down, z in [0, w]; docs/library.md).
 // The fragment function is written once over its float type F (float, or FloatBatch from
 // simd.hpp: one value per lane of a 4x2 pixel block), so the fast path shades whole batches with
 // the same source the scalar path runs per pixel; IEEE operations round the same per lane, so
@@ -16,8 +18,10 @@
 // and optionally
 //   static constexpr std::array<Interpolation, kVaryings> S::kInterpolation;    default: all perspective
 //   static float S::pointSize(const Uniforms&, const Vertex&);                  gl_PointSize; default 1
-//   static constexpr std::array<VertexAttribute, N> S::kAttributes;             locations of Vertex's
-//       fields, for a renderer that feeds the GLSL twin (vkref); softraster itself does not read it
+// Anything else a shader declares (the project's twins declare kAttributes, VertexAttribute
+// below, for vkref) softraster does not read.
+// A type that breaks the interface fails to compile at the draw call with one static_assert
+// naming the member and the fix (checkShaderInterface below), not with errors from the pipeline.
 // Deliberately no virtual functions: the pipeline is instantiated per shader, so a varying a
 // shader does not declare costs nothing.
 #pragma once
@@ -28,6 +32,8 @@
 #include <array>
 #include <concepts>
 #include <cstdint>
+#include <span>
+#include <type_traits>
 
 namespace softraster {
 
@@ -50,6 +56,123 @@ constexpr InterpolationSet<Shader::kVaryings> interpolationOf() {
     return all;
   }
 }
+
+// The shader interface, piece by piece (each a concept, so a failed one names itself).
+template <class S>
+concept HasShaderVertexType = requires { typename S::Vertex; };
+template <class S>
+concept HasShaderUniformsType = requires { typename S::Uniforms; };
+template <class S>
+concept HasShaderVaryingCount = requires {
+  { S::kVaryings } -> std::convertible_to<int>;
+} && (S::kVaryings >= 0 && S::kVaryings <= kMaxVaryings);
+// A member named `vertex` / `fragment` exists (as a function, a template, static or not).
+template <class S>
+concept HasShaderVertexMember = requires { &S::vertex; };
+template <class S>
+concept HasShaderFragmentMember = requires { &S::fragment; } || requires { &S::template fragment<float>; };
+// The member is a non-static member function (the commonest slip: a shader is never an object).
+template <class S>
+concept HasNonStaticShaderVertex = requires { requires std::is_member_function_pointer_v<decltype(&S::vertex)>; };
+template <class S>
+concept HasNonStaticShaderFragment =
+    requires { requires std::is_member_function_pointer_v<decltype(&S::fragment)>; } ||
+    requires { requires std::is_member_function_pointer_v<decltype(&S::template fragment<float>)>; };
+template <class S>
+concept HasStaticShaderVertex = requires(const typename S::Uniforms& u, const typename S::Vertex& v, float* out) {
+  S::vertex(u, v, out);
+};
+template <class S>
+concept HasStaticShaderFragment = requires(const typename S::Uniforms& u, const float* in) {
+  S::fragment(u, in);
+} || requires(const typename S::Uniforms& u, const float* in) { S::template fragment<float>(u, in); };
+template <class S>
+concept HasShaderVertexSignature = requires(const typename S::Uniforms& u, const typename S::Vertex& v, float* out) {
+  { S::vertex(u, v, out) } -> std::same_as<Vec4>;
+};
+template <class S>
+concept HasShaderFragmentSignature = requires(const typename S::Uniforms& u, const float* in) {
+  { S::fragment(u, in) } -> std::same_as<Vec4>;
+} || requires(const typename S::Uniforms& u, const float* in) {
+  { S::template fragment<float>(u, in) } -> std::same_as<Vec4>;
+};
+template <class S>
+concept HasShaderInterpolation = !requires { S::kInterpolation; } || requires {
+  { S::kInterpolation } -> std::convertible_to<InterpolationSet<S::kVaryings>>;
+};
+
+// The whole interface the top of this file describes.
+template <class S>
+concept ShaderInterface = HasShaderVertexType<S> && HasShaderUniformsType<S> && HasShaderVaryingCount<S> &&
+                 HasShaderVertexSignature<S> && HasShaderFragmentSignature<S> && HasShaderInterpolation<S>;
+
+// Whether S meets ShaderInterface; when it is not, one static_assert says which member is wrong and how
+// to write it. Context::draw calls this first and instantiates nothing more for a non-shader, so
+// that message is the error a user sees (with the call site in the "required from" note).
+template <class S>
+constexpr bool checkShaderInterface() {
+  if constexpr (!HasShaderVertexType<S>) {
+    static_assert(HasShaderVertexType<S>, "softraster: the shader has no `Vertex` type (struct Vertex { ... }; the vertex as stored in the vertex buffer)");
+    return false;
+  } else if constexpr (!HasShaderUniformsType<S>) {
+    static_assert(HasShaderUniformsType<S>, "softraster: the shader has no `Uniforms` type (struct Uniforms { ... }; may be empty)");
+    return false;
+  } else if constexpr (!HasShaderVaryingCount<S>) {
+    static_assert(HasShaderVaryingCount<S>, "softraster: the shader needs `static constexpr int kVaryings` between 0 and softraster::kMaxVaryings (16)");
+    return false;
+  } else if constexpr (!HasShaderVertexMember<S>) {
+    static_assert(HasShaderVertexMember<S>, "softraster: the shader has no `vertex` function (or it is overloaded); write static softraster::Vec4 vertex(const Uniforms&, const Vertex&, float* varyingsOut)");
+    return false;
+  } else if constexpr (HasNonStaticShaderVertex<S>) {
+    static_assert(!HasNonStaticShaderVertex<S>, "softraster: the shader's `vertex` is a non-static member function; make it static");
+    return false;
+  } else if constexpr (!HasStaticShaderVertex<S>) {
+    static_assert(HasStaticShaderVertex<S>, "softraster: the shader's `vertex` takes other parameters; write static softraster::Vec4 vertex(const Uniforms&, const Vertex&, float* varyingsOut)");
+    return false;
+  } else if constexpr (!HasShaderVertexSignature<S>) {
+    static_assert(HasShaderVertexSignature<S>, "softraster: the shader's `vertex` must return softraster::Vec4 (the clip-space position)");
+    return false;
+  } else if constexpr (!HasShaderFragmentMember<S>) {
+    static_assert(HasShaderFragmentMember<S>, "softraster: the shader has no `fragment` function (or it is overloaded); write template <class F> static softraster::Vec4T<F> fragment(const Uniforms&, const F* varyingsIn)");
+    return false;
+  } else if constexpr (HasNonStaticShaderFragment<S>) {
+    static_assert(!HasNonStaticShaderFragment<S>, "softraster: the shader's `fragment` is a non-static member function; make it static");
+    return false;
+  } else if constexpr (!HasStaticShaderFragment<S>) {
+    static_assert(HasStaticShaderFragment<S>, "softraster: the shader's `fragment` takes other parameters; write template <class F> static softraster::Vec4T<F> fragment(const Uniforms&, const F* varyingsIn)");
+    return false;
+  } else if constexpr (!HasShaderFragmentSignature<S>) {
+    static_assert(HasShaderFragmentSignature<S>, "softraster: the shader's `fragment` must return softraster::Vec4T<F> (softraster::Vec4 for F = float: the RGBA colour)");
+    return false;
+  } else if constexpr (!HasShaderInterpolation<S>) {
+    static_assert(HasShaderInterpolation<S>, "softraster: the shader's `kInterpolation` must be a softraster::InterpolationSet<kVaryings> (one Interpolation per varying)");
+    return false;
+  } else {
+    return true;
+  }
+}
+
+namespace detail {
+
+// Stands in for a draw parameter whose type a non-shader lacks (its Uniforms, its Vertex), so the
+// call to Context::draw still resolves and checkShaderInterface is what reports the mistake.
+struct NotAShaderArgument {
+  template <class T>
+  NotAShaderArgument(const T&) {}  // NOLINT(google-explicit-constructor): accepts what the caller passed
+};
+template <class S>
+struct ShaderParameters {
+  using Uniforms = NotAShaderArgument;
+  using Vertices = NotAShaderArgument;
+};
+template <class S>
+  requires HasShaderVertexType<S> && HasShaderUniformsType<S>
+struct ShaderParameters<S> {
+  using Uniforms = typename S::Uniforms;
+  using Vertices = std::span<const typename S::Vertex>;
+};
+
+}  // namespace detail
 
 // One vertex input: `components` consecutive 32-bit floats at byte `offset` of the vertex.
 struct VertexAttribute {

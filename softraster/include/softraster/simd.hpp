@@ -26,6 +26,10 @@
 // into its own AVX2 entry point, so no call with that ABI exists.
 #pragma GCC diagnostic push
 #pragma GCC diagnostic ignored "-Wpsabi"
+#if defined(__clang__)  // every lane rounds on its own, whatever the user's flags (math.hpp says why)
+#pragma float_control(push)
+#pragma clang fp contract(off)
+#endif
 
 namespace softraster {
 
@@ -75,4 +79,7 @@ inline float sseMax(float a, float b) { return a > b ? a : b; }
 
 }  // namespace softraster
 
+#if defined(__clang__)
+#pragma float_control(pop)
+#endif
 #pragma GCC diagnostic pop

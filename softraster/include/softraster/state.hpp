@@ -2,10 +2,11 @@
 // The fields mirror Vulkan's pipeline create-info structures one to one, so vkref can build a
 // VkPipeline from the same value softraster draws with. A field here that one renderer cannot
 // honour is an error in that renderer, never a silent default.
-// The sample count is the framebuffer's (framebuffer.hpp), not state here.
+// 4x MSAA is supported; its sample count is the framebuffer's (framebuffer.hpp), not state here.
 // Deliberately absent until a scene needs it: dual-source blending (the SRC1 blend factors, which
-// need a second fragment output), logic ops, more than one colour attachment, stencil,
-// multisample state (sample shading, sample mask, alpha to coverage), smooth and stippled lines.
+// need a second fragment output), logic ops, more than one colour attachment, stencil, the rest
+// of Vulkan's multisample state (sample shading, sample mask, alpha to coverage), smooth and
+// stippled lines.
 #pragma once
 
 #include <cstdint>

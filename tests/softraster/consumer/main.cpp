@@ -1,7 +1,10 @@
-// Draws one triangle with its own shader through the installed softraster and checks the result.
+// Draws one triangle with its own shader through the installed softraster and checks the result,
+// and that the version header says what the CMake package (or pkg-config) says.
 #include <softraster/pipeline.hpp>
+#include <softraster/version.hpp>
 
 #include <cstdio>
+#include <cstring>
 #include <vector>
 
 struct FlatRed {
@@ -16,8 +19,26 @@ struct FlatRed {
   static softraster::Vec4 fragment(const Uniforms&, const float*) { return {1, 0, 0, 1}; }
 };
 
+static_assert(softraster::ShaderInterface<FlatRed>);
+
 int main() {
-  softraster::Framebuffer framebuffer(32, 32);
+#ifdef CONSUMER_PACKAGE_VERSION
+  if (std::strcmp(SOFTRASTER_VERSION_STRING, CONSUMER_PACKAGE_VERSION) != 0) {
+    std::fprintf(stderr, "version.hpp says %s, the package %s\n", SOFTRASTER_VERSION_STRING, CONSUMER_PACKAGE_VERSION);
+    return 1;
+  }
+#endif
+  std::printf("softraster %s\n", SOFTRASTER_VERSION_STRING);
+  if (softraster::Framebuffer::create(32, 32, softraster::DepthFormat::D32Sfloat, 2)) {
+    std::fprintf(stderr, "a 2-sample framebuffer was accepted\n");
+    return 1;
+  }
+  softraster::Result<softraster::Framebuffer> created = softraster::Framebuffer::create(32, 32);
+  if (!created) {
+    std::fprintf(stderr, "%s\n", created.error().c_str());
+    return 1;
+  }
+  softraster::Framebuffer& framebuffer = *created;
   framebuffer.clear({0, 0, 0, 1}, 1.0f);
   const std::vector<FlatRed::Vertex> vertices{{{-1, -1, 0.5f}}, {{-1, 1, 0.5f}}, {{1, -1, 0.5f}}};
   const std::vector<std::uint32_t> indices{0, 1, 2};

@@ -5,6 +5,11 @@
 
 #include <cmath>
 
+#if defined(__clang__)  // the separate form must stay two roundings whatever the user's flags
+#pragma float_control(push)
+#pragma clang fp contract(off)
+#endif
+
 namespace softraster::detail {
 
 template <bool Fused>
@@ -12,7 +17,7 @@ inline float fmuladd(float a, float b, float c) {
   if constexpr (Fused) {
     return std::fma(a, b, c);
   } else {
-    return a * b + c;  // -ffp-contract=off keeps the two roundings
+    return a * b + c;  // -ffp-contract=off (and under Clang the pragma above) keeps the two roundings
   }
 }
 
@@ -28,3 +33,7 @@ inline bool cpuHasFma() {
 }
 
 }  // namespace softraster::detail
+
+#if defined(__clang__)
+#pragma float_control(pop)
+#endif

@@ -5,12 +5,12 @@
 // blending, and masked loads and stores of one block's colour and depth.
 // Every operation is the scalar path's operation per lane (same order, same rounding, FMA exactly
 // where the scalar path fuses), so the results are the same bits.
-// Compiled for AVX2 + FMA through the target attribute (SOFTRASTER_FAST_TARGET) and only ever
-// called from the fast path's entry point, which the Context takes when the CPU has both.
+// AVX2 + FMA code (SOFTRASTER_FAST_TARGET), inlined into the fast path's entry point only; GCC
+// only (Clang rejects the by-value batches across targets) and not at -O0 (no inlining, so ABIs differ).
 // Deliberately absent: coverage walking and shading (fast/fragments.hpp), AVX-512 (16 lanes).
 #pragma once
 
-#if defined(__x86_64__) && (defined(__GNUC__) || defined(__clang__))
+#if defined(__x86_64__) && defined(__GNUC__) && !defined(__clang__) && !defined(__NO_INLINE__)  // see the top
 #define SOFTRASTER_HAS_FAST_PATH 1
 #include <immintrin.h>
 #define SOFTRASTER_FAST_TARGET gnu::target("avx2,fma")

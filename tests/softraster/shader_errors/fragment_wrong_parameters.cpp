@@ -1,0 +1,20 @@
+// expect: the shader's `fragment` takes other parameters
+// A shader with one mistake, drawn the way a user draws (shader_errors_test.sh compiles it).
+#include <softraster/pipeline.hpp>
+
+#include <vector>
+
+struct Broken {
+  using Vertex = int;
+  struct Uniforms {};
+  static constexpr int kVaryings = 0;
+  static softraster::Vec4 vertex(const Uniforms&, const Vertex&, float*) { return {0, 0, 0, 1}; }
+  static softraster::Vec4 fragment(const float*) { return {1, 0, 0, 1}; }
+};
+
+int main() {
+  auto framebuffer = softraster::Framebuffer::create(8, 8);
+  std::vector<int> vertices(3);
+  const softraster::Context context;
+  return context.draw<Broken>(softraster::PipelineState{}, Broken::Uniforms{}, vertices, *framebuffer).ok() ? 0 : 1;
+}
