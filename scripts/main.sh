@@ -5,6 +5,6 @@
 # the summary and, last, "N passed, N failed". Exit 1 if anything unexpected happened.
 set -euo pipefail
 cd "$(dirname "$0")/.."
-bash scripts/setup.sh
+bash scripts/setup.sh main
 exec build/bin/crosscheck report --jobs "$(nproc)" --expectations scenes/expectations.txt \
   --junit out/conformance.junit.xml -o out/report

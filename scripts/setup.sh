@@ -1,31 +1,60 @@
 #!/usr/bin/env bash
-# Set-up shared by the README's two commands: installs the Debian packages the project needs
-# (only those missing, so a second run installs nothing), then configures and builds into build/.
+# Set-up shared by the README's two commands: installs the Debian packages the job needs (only
+# those missing, so a second run installs nothing), then configures and builds into build/.
+#   setup.sh main   the main job: the packages crosscheck needs, and only the crosscheck target
+#   setup.sh tests  the test job (the default): everything, the tests' tools and every target
+# Installing needs root or sudo; without either, and when apt-get fails, it says so and stops.
+# The fuzz and sanitizer jobs install their own extra packages (scripts/fuzz.sh, sanitize.sh).
 set -euo pipefail
 cd "$(dirname "$0")/.."
+job=${1:-tests}
+case $job in main|tests) ;; *) echo "setup: unknown job '$job' (main or tests)" >&2; exit 2 ;; esac
 
 packages=(
   cmake g++ make pkg-config                 # toolchain
-  clang                                     # tests: an outside consumer built with Clang too
   libvulkan-dev mesa-vulkan-drivers         # Vulkan loader and lavapipe
-  vulkan-validationlayers glslang-tools     # validation in tests; GLSL -> SPIR-V at build time
+  vulkan-validationlayers glslang-tools     # validation layer (vkref asks for it); GLSL -> SPIR-V at build time
   libtinyobjloader-dev nlohmann-json3-dev   # OBJ meshes and scene files
   libglm-dev                                # scene matrices (model, normal, camera) in double
-  libstb-dev libcli11-dev libgtest-dev      # PNG output, command line, tests
-  zlib1g-dev                                # the report's pixel data
-  chromium libxml2-utils bsdutils           # tests: the report in a browser, JUnit (xmllint), a terminal (script)
+  libstb-dev libcli11-dev                   # PNG output, command line
+  zlib1g-dev                                # the report's PNGs and pixel data
 )
+if [ "$job" = tests ]; then
+  packages+=(
+    libgtest-dev                            # the unit and cross-check tests
+    clang                                   # an outside consumer built with Clang too
+    chromium libxml2-utils bsdutils         # the report in a browser, JUnit (xmllint), a terminal (script)
+    python3                                 # the bench JSON check; the scene generators in scenes/tools/
+  )
+fi
 missing=()
 for p in "${packages[@]}"; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
 done
 if ((${#missing[@]})); then
-  sudo=""
-  [ "$(id -u)" -eq 0 ] || sudo=sudo
+  sudo=()
+  if [ "$(id -u)" -ne 0 ]; then
+    if ! command -v sudo >/dev/null; then
+      echo "setup: these packages are missing and installing them needs root or sudo (neither is available): ${missing[*]}" >&2
+      exit 1
+    fi
+    sudo=(sudo)
+  fi
   echo "setup: installing ${missing[*]}"
-  $sudo apt-get update -qq
-  DEBIAN_FRONTEND=noninteractive $sudo apt-get install -y -qq "${missing[@]}" >/dev/null
+  log=$(mktemp)
+  if ! { "${sudo[@]}" apt-get update -qq && DEBIAN_FRONTEND=noninteractive "${sudo[@]}" apt-get install -y -qq "${missing[@]}"; } >"$log" 2>&1; then
+    cat "$log" >&2
+    echo "setup: apt-get failed (its output is above); missing: ${missing[*]}" >&2
+    rm -f "$log"
+    exit 1
+  fi
+  rm -f "$log"
 fi
 
-cmake -S . -B build -DCMAKE_BUILD_TYPE=RelWithDebInfo >/dev/null
-cmake --build build -j"$(nproc)"
+if [ "$job" = main ]; then
+  cmake -S . -B build -DCMAKE_BUILD_TYPE=RelWithDebInfo -DBUILD_TESTING=OFF >/dev/null
+  cmake --build build -j"$(nproc)" --target crosscheck
+else
+  cmake -S . -B build -DCMAKE_BUILD_TYPE=RelWithDebInfo -DBUILD_TESTING=ON >/dev/null
+  cmake --build build -j"$(nproc)"
+fi
