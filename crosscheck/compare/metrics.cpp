@@ -1,15 +1,14 @@
 // The limits a comparison breaks (see metrics.hpp).
 #include "compare/metrics.hpp"
 
-#include <sstream>
+#include <cstdint>
 
 namespace crosscheck {
 namespace {
 
-std::string formatLimit(const char* metric, double value, double limit) {
-  std::ostringstream s;
-  s << metric << " " << value << " > " << limit;
-  return s.str();
+// "colour_pixels_over 12 > 0": the tolerance key, the count and the count allowed.
+std::string formatLimit(const char* metric, std::uint64_t value, std::uint64_t limit) {
+  return std::string(metric) + " " + std::to_string(value) + " > " + std::to_string(limit);
 }
 
 }  // namespace
@@ -17,11 +16,11 @@ std::string formatLimit(const char* metric, double value, double limit) {
 std::vector<std::string> limitFailures(const Comparison& c, const Tolerance& tol) {
   std::vector<std::string> failures;
   if (c.coverageMismatches > tol.maxCoverageMismatches)
-    failures.push_back(formatLimit("coverage_mismatches", double(c.coverageMismatches), double(tol.maxCoverageMismatches)));
+    failures.push_back(formatLimit("coverage_mismatches", c.coverageMismatches, tol.maxCoverageMismatches));
   if (c.colourPixelsOver > tol.maxColourPixelsOver)
-    failures.push_back(formatLimit("colour_pixels_over", double(c.colourPixelsOver), double(tol.maxColourPixelsOver)));
+    failures.push_back(formatLimit("colour_pixels_over", c.colourPixelsOver, tol.maxColourPixelsOver));
   if (c.depthPixelsOver > tol.maxDepthPixelsOver)
-    failures.push_back(formatLimit("depth_pixels_over", double(c.depthPixelsOver), double(tol.maxDepthPixelsOver)));
+    failures.push_back(formatLimit("depth_pixels_over", c.depthPixelsOver, tol.maxDepthPixelsOver));
   return failures;
 }
 

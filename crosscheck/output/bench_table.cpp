@@ -1,6 +1,8 @@
 // The bench's terminal table (see bench_table.hpp).
 #include "output/bench_table.hpp"
 
+#include "output/metric_text.hpp"
+
 #include <algorithm>
 #include <cstdio>
 #include <string>
@@ -18,7 +20,7 @@ std::string agreementText(const BenchRun& run) {
   if (!run.agreement) return run.renderer == "lavapipe" ? "(reference)" : "-";
   const Comparison& c = *run.agreement;
   const int colour = *std::max_element(c.colourMaxDelta.begin(), c.colourMaxDelta.end());
-  std::string text = format("%llu/%d/%g", static_cast<unsigned long long>(c.coverageMismatches), colour, c.depthMaxDelta);
+  std::string text = std::to_string(c.coverageMismatches) + "/" + std::to_string(colour) + "/" + depthText(c.depthMaxDelta);
   if (!c.passed()) text += " OUTSIDE TOLERANCE";
   return text;
 }
@@ -34,7 +36,7 @@ std::string benchTable(const BenchResults& results) {
   out += format("machine: %s, %u cores, memset %.1f GB/s\n", m.cpu.c_str(), m.cores, m.memsetGigabytesPerSecond);
   out += "times in ms per frame; setup = make ready + first frame; mem = colour + depth bytes at memset speed\n";
   out += "lavapipe/x = lavapipe median / this median (> 1: softraster is faster)\n";
-  out += "agreement with Vulkan = coverage mismatches / colour max |d| / depth max |d|\n\n";
+  out += "agreement with Vulkan = coverage mismatches / colour max " + std::string(kAbsDelta) + " / depth max " + kAbsDelta + "\n\n";
   out += format("%-26s %-12s %9s  %-23s %3s %9s %9s %9s %8s %10s  %s\n", "scene", "size", "triangles", "renderer",
                 "thr", "median", "min", "setup", "mem", "lavapipe/x", "agreement");
   for (const BenchScene& scene : results.scenes) {

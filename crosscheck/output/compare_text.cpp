@@ -1,7 +1,8 @@
 // The compare command's text (see compare_text.hpp).
 #include "output/compare_text.hpp"
 
-#include <cmath>
+#include "output/metric_text.hpp"
+
 #include <cstdarg>
 #include <cstdio>
 
@@ -28,18 +29,17 @@ void appendScene(std::string& out, const SceneResult& r) {
   }
   const Comparison& c = *r.comparison;
   const Tolerance& t = r.tolerance;
-  append(out, "%s: %s\n", path.c_str(), c.passed() ? "PASS" : "FAIL");
-  append(out, "  coverage mismatches  %llu (max %llu)\n", count(c.coverageMismatches), count(t.maxCoverageMismatches));
-  append(out, "  colour max |d| RGBA  %d %d %d %d\n", c.colourMaxDelta[0], c.colourMaxDelta[1], c.colourMaxDelta[2],
-         c.colourMaxDelta[3]);
-  append(out, "  colour mean |d| RGBA %.6f %.6f %.6f %.6f\n", c.colourMeanDelta[0], c.colourMeanDelta[1],
+  append(out, "%s: %s\n", path.c_str(), std::string(outcomeName(r.outcome)).c_str());
+  append(out, "  coverage mismatches  %llu (allowed %llu)\n", count(c.coverageMismatches), count(t.maxCoverageMismatches));
+  append(out, "  colour max %s RGBA  %d %d %d %d (threshold %d)\n", kAbsDelta, c.colourMaxDelta[0], c.colourMaxDelta[1],
+         c.colourMaxDelta[2], c.colourMaxDelta[3], t.colourThreshold);
+  append(out, "  colour mean %s RGBA %.6f %.6f %.6f %.6f\n", kAbsDelta, c.colourMeanDelta[0], c.colourMeanDelta[1],
          c.colourMeanDelta[2], c.colourMeanDelta[3]);
-  append(out, "  colour pixels over   %llu (threshold %d, max %llu)\n", count(c.colourPixelsOver), t.colourThreshold,
-         count(t.maxColourPixelsOver));
-  append(out, "  PSNR                 %s\n", std::isfinite(c.psnr) ? std::to_string(c.psnr).c_str() : "inf (identical)");
-  append(out, "  depth max |d|        %.9g\n", c.depthMaxDelta);
-  append(out, "  depth pixels over    %llu (threshold %.9g, max %llu)\n", count(c.depthPixelsOver), t.depthThreshold,
-         count(t.maxDepthPixelsOver));
+  append(out, "  colour pixels over   %llu (allowed %llu)\n", count(c.colourPixelsOver), count(t.maxColourPixelsOver));
+  append(out, "  PSNR (RGB, dB)       %s\n", psnrText(c.psnr).c_str());
+  append(out, "  depth max %s        %s (threshold %s)\n", kAbsDelta, depthText(c.depthMaxDelta).c_str(),
+         depthText(t.depthThreshold).c_str());
+  append(out, "  depth pixels over    %llu (allowed %llu)\n", count(c.depthPixelsOver), count(t.maxDepthPixelsOver));
   append(out, "  time soft %.2f ms, vulkan %.2f ms\n", r.softMilliseconds, r.vulkanMilliseconds);
   for (const std::string& f : c.failures) append(out, "  over tolerance: %s\n", f.c_str());
 }

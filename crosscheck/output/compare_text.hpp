@@ -1,4 +1,4 @@
-// The compare command's text: per scene its path and PASS or FAIL, then each metric next to its
+// The compare command's text: per scene its path and Pass or Fail, then each metric next to its
 // limit, both renderers' times and one line per limit that was exceeded.
 // Reads a run's results (results.hpp) only; the compare command's run has one scene.
 // Deliberately returns a string and prints nothing.

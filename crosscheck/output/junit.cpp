@@ -2,6 +2,7 @@
 #include "output/junit.hpp"
 
 #include "output/markup.hpp"
+#include "output/metric_text.hpp"
 #include "output/summary.hpp"
 
 #include <cmath>
@@ -32,16 +33,16 @@ std::string systemOut(const SceneResult& r) {
   if (r.comparison) {
     const Comparison& c = *r.comparison;
     const Tolerance& t = r.tolerance;
-    out += "coverage_mismatches: " + std::to_string(c.coverageMismatches) + " (max " + std::to_string(t.maxCoverageMismatches) + ")\n";
+    out += "coverage_mismatches: " + std::to_string(c.coverageMismatches) + " (allowed " + std::to_string(t.maxCoverageMismatches) + ")\n";
     out += "colour_max_delta_rgba: " + std::to_string(c.colourMaxDelta[0]) + " " + std::to_string(c.colourMaxDelta[1]) + " " +
            std::to_string(c.colourMaxDelta[2]) + " " + std::to_string(c.colourMaxDelta[3]) + " (threshold " +
            std::to_string(t.colourThreshold) + ")\n";
     out += "colour_mean_delta_rgba: " + number("%.6f", c.colourMeanDelta[0]) + number(" %.6f", c.colourMeanDelta[1]) +
            number(" %.6f", c.colourMeanDelta[2]) + number(" %.6f", c.colourMeanDelta[3]) + "\n";
-    out += "colour_pixels_over: " + std::to_string(c.colourPixelsOver) + " (max " + std::to_string(t.maxColourPixelsOver) + ")\n";
-    out += "psnr: " + (std::isfinite(c.psnr) ? number("%.4f", c.psnr) : std::string("inf")) + "\n";
-    out += "depth_max_delta: " + number("%.9g", c.depthMaxDelta) + number(" (threshold %.9g)", t.depthThreshold) + "\n";
-    out += "depth_pixels_over: " + std::to_string(c.depthPixelsOver) + " (max " + std::to_string(t.maxDepthPixelsOver) + ")\n";
+    out += "colour_pixels_over: " + std::to_string(c.colourPixelsOver) + " (allowed " + std::to_string(t.maxColourPixelsOver) + ")\n";
+    out += "psnr: " + psnrText(c.psnr) + "\n";
+    out += "depth_max_delta: " + depthText(c.depthMaxDelta) + " (threshold " + depthText(t.depthThreshold) + ")\n";
+    out += "depth_pixels_over: " + std::to_string(c.depthPixelsOver) + " (allowed " + std::to_string(t.maxDepthPixelsOver) + ")\n";
     out += "time_ms: soft " + number("%.3f", r.softMilliseconds) + ", vulkan " + number("%.3f", r.vulkanMilliseconds) +
            ", scene " + number("%.3f", r.milliseconds) + "\n";
   }

@@ -1,6 +1,8 @@
 // Conformance text output (see summary.hpp).
 #include "output/summary.hpp"
 
+#include "output/metric_text.hpp"
+
 #include <algorithm>
 #include <cstdio>
 
@@ -29,12 +31,12 @@ std::string explainFailure(const std::string& failure, const SceneResult& r) {
   const Comparison& c = *r.comparison;
   if (failure.rfind("colour_pixels_over", 0) == 0) {
     const int worst = *std::max_element(c.colourMaxDelta.begin(), c.colourMaxDelta.end());
-    return failure + " (colour max |d| " + std::to_string(worst) + ", threshold " +
+    return failure + " (colour max " + kAbsDelta + " " + std::to_string(worst) + ", threshold " +
            std::to_string(r.tolerance.colourThreshold) + ")";
   }
   if (failure.rfind("depth_pixels_over", 0) == 0) {
-    return failure + format(" (depth max |d| %.9g", c.depthMaxDelta) +
-           format(", threshold %.9g)", r.tolerance.depthThreshold);
+    return failure + " (depth max " + kAbsDelta + " " + depthText(c.depthMaxDelta) + ", threshold " +
+           depthText(r.tolerance.depthThreshold) + ")";
   }
   return failure;
 }

@@ -17,7 +17,7 @@ namespace crosscheck {
 std::string resultLine(const SceneResult& result);
 
 // What went wrong in a scene, one line: the failed limits with the metric behind each
-// ("depth_pixels_over 333 > 0 (depth max |d| 1.8e-07, threshold 6e-08)"), the crash error, or why
+// ("depth_pixels_over 333 > 0 (depth max |Δ| 1.7881393e-07, threshold 5.9604645e-08)"), the crash error, or why
 // an UnexpectedPass is one.
 std::string resultDetail(const SceneResult& result);
 

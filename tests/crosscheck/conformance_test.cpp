@@ -214,7 +214,7 @@ TEST(Conformance, PassFailAndCrashFromLoading) {
   ASSERT_TRUE(failed[0].comparison);
   EXPECT_EQ(failed[0].comparison->coverageMismatches, 1u);
   EXPECT_EQ(failed[0].comparison->failures.front(), "coverage_mismatches 1 > 0");
-  EXPECT_EQ(resultDetail(failed[0]), "coverage_mismatches 1 > 0; colour_pixels_over 1 > 0 (colour max |d| 255, threshold 1)");
+  EXPECT_EQ(resultDetail(failed[0]), "coverage_mismatches 1 > 0; colour_pixels_over 1 > 0 (colour max |Δ| 255, threshold 1)");
 }
 
 TEST(Conformance, RendererErrorAndExceptionAreCrashAndTheRunGoesOn) {
@@ -474,7 +474,7 @@ TEST(Summary, ListsFailuresWithMetricAndThresholdAndTheFiveSlowest) {
   RunResults run;
   run.scenes = results;
   const std::string text = summaryText(run);
-  EXPECT_NE(text.find("Failures (2):\n  Fail           bad: depth_pixels_over 3 > 0 (depth max |d| 0.75, threshold 0.5)\n"
+  EXPECT_NE(text.find("Failures (2):\n  Fail           bad: depth_pixels_over 3 > 0 (depth max |Δ| 0.75, threshold 0.5)\n"
                       "  Crash          broken: broken.json: broken\n"),
             std::string::npos)
       << text;
@@ -484,7 +484,7 @@ TEST(Summary, ListsFailuresWithMetricAndThresholdAndTheFiveSlowest) {
   EXPECT_LT(tail.find("pass5"), tail.find("pass4"));
   EXPECT_LT(tail.find("pass2"), tail.find("pass1"));
   EXPECT_EQ(tail.find("pass0"), std::string::npos) << "only five";
-  EXPECT_EQ(resultLine(results[6]), "Fail           bad: depth_pixels_over 3 > 0 (depth max |d| 0.75, threshold 0.5)  "
+  EXPECT_EQ(resultLine(results[6]), "Fail           bad: depth_pixels_over 3 > 0 (depth max |Δ| 0.75, threshold 0.5)  "
                                     "(soft 1.25 ms, vulkan 2.50 ms)");
   EXPECT_EQ(progressLine(3, 10, 1, 12.34), "[3/10] failures: 1 elapsed: 12.3s");
 }
@@ -512,19 +512,19 @@ TEST(JUnit, CountsAndElementsPerStatus) {
             std::string::npos)
       << xml;
   EXPECT_NE(xml.find("name=\"a\" file=\"a.json\" time=\"1.500\""), std::string::npos);
-  EXPECT_NE(xml.find("<failure type=\"Fail\" message=\"depth_pixels_over 3 &gt; 0 (depth max |d| 0.75, threshold 0.5)\"/>"),
+  EXPECT_NE(xml.find("<failure type=\"Fail\" message=\"depth_pixels_over 3 &gt; 0 (depth max |Δ| 0.75, threshold 0.5)\"/>"),
             std::string::npos)
       << xml;
   EXPECT_NE(xml.find("name=\"c&lt;&amp;&quot;&#39;&gt;\""), std::string::npos);
   EXPECT_NE(xml.find("<error type=\"Crash\" message=\"c&lt;&amp;&quot;&#39;&gt;.json: broken\"/>"), std::string::npos);
   EXPECT_NE(xml.find("<failure type=\"UnexpectedPass\" message=\"expected Fail (line 7), but passed\"/>"), std::string::npos);
   EXPECT_NE(xml.find("<skipped message=\"skipped by expectations\"/>"), std::string::npos);
-  EXPECT_NE(xml.find("<skipped message=\"expected failure: depth_pixels_over 3 &gt; 0 (depth max |d| 0.75, threshold 0.5) "
+  EXPECT_NE(xml.find("<skipped message=\"expected failure: depth_pixels_over 3 &gt; 0 (depth max |Δ| 0.75, threshold 0.5) "
                      "[tracked in issue 9]\"/>"),
             std::string::npos)
       << xml;
   EXPECT_NE(xml.find("image diff: out/a/diff.png\n"), std::string::npos);
-  EXPECT_NE(xml.find("depth_pixels_over: 3 (max 0)\n"), std::string::npos);
+  EXPECT_NE(xml.find("depth_pixels_over: 3 (allowed 0)\n"), std::string::npos);
 }
 
 TEST(Markup, EscapesAndReplacesWhatXmlCannotCarry) {

@@ -121,6 +121,24 @@ case $case_name in
       expect_status 0
       [ -s "$artifacts/k/flat_triangle/soft.png" ] || fail "conformance $option wrote no images"
     done
+    # One spelling of each metric everywhere: Pass; |Δ|; "allowed" for counts; PSNR of identical
+    # images "inf"; a depth threshold of 2^-24 as the scene files write it, 5.9604645e-08.
+    run compare tests/data/conformance/flat_triangle.json
+    expect_status 0
+    for line in "tests/data/conformance/flat_triangle.json: Pass" "  coverage mismatches  0 (allowed 0)" \
+                "  PSNR (RGB, dB)       inf" "  depth max |Δ|        0 (threshold 5.9604645e-08)"; do
+      grep -qxF "$line" "$artifacts/out.txt" || fail "compare text lacks '$line'"
+    done
+    rm -rf "$artifacts/v"
+    run report tests/data/conformance/flat_triangle.json --junit "$artifacts/v.xml" -o "$artifacts/v"
+    expect_status 0
+    grep -qxF "psnr: inf" "$artifacts/v.xml" || fail "JUnit PSNR is not 'inf'"
+    grep -qF "depth_max_delta: 0 (threshold 5.9604645e-08)" "$artifacts/v.xml" || fail "JUnit depth threshold spelling"
+    grep -qF ">inf</td>" "$artifacts/v/index.html" || fail "report PSNR is not 'inf'"
+    grep -qF "threshold 5.9604645e-08" "$artifacts/v/index.html" || fail "report depth threshold spelling"
+    if grep -qF -e '|d|' -e '(max ' -e $'\xE2\x88\x9E' -e 'PASS' "$artifacts/out.txt" "$artifacts/v.xml" "$artifacts/v/index.html"; then
+      fail "an old spelling (|d|, (max N), ∞, PASS) is still written"
+    fi
     ;;
   *)
     fail "unknown case $case_name"

@@ -3,6 +3,7 @@
 
 #include "output/artifacts.hpp"  // kPreviewSize
 #include "output/markup.hpp"
+#include "output/metric_text.hpp"
 #include "output/summary.hpp"
 #include "report_assets.hpp"  // generated from report.css and report.js
 
@@ -107,8 +108,6 @@ std::string meanText(const std::array<double, 4>& v) {
   return fixed("%.4f", v[0]) + fixed(" %.4f", v[1]) + fixed(" %.4f", v[2]) + fixed(" %.4f", v[3]);
 }
 
-std::string psnrText(double psnr) { return std::isfinite(psnr) ? fixed("%.2f", psnr) : "\xE2\x88\x9E"; }
-
 // A file linked from the report: relative to its folder, so the link survives moving both
 // together; absolute when there is no folder or no relative path.
 std::filesystem::path linkFrom(const std::filesystem::path& reportDir, const std::filesystem::path& file) {
@@ -151,19 +150,19 @@ std::string summaryRow(const SceneResult& r, std::size_t rank) {
     const int colourMax = *std::max_element(c.colourMaxDelta.begin(), c.colourMaxDelta.end());
     const double colourMean = *std::max_element(c.colourMeanDelta.begin(), c.colourMeanDelta.end());
     row += numberCell(double(c.coverageMismatches), std::to_string(c.coverageMismatches),
-                      c.coverageMismatches > t.maxCoverageMismatches, "allowed: " + std::to_string(t.maxCoverageMismatches));
+                      c.coverageMismatches > t.maxCoverageMismatches, "allowed " + std::to_string(t.maxCoverageMismatches));
     row += numberCell(double(c.colourPixelsOver), std::to_string(c.colourPixelsOver), c.colourPixelsOver > t.maxColourPixelsOver,
                       "pixels with a channel |\xCE\x94| over " + std::to_string(t.colourThreshold) +
-                          "; allowed: " + std::to_string(t.maxColourPixelsOver));
+                          "; allowed " + std::to_string(t.maxColourPixelsOver));
     row += numberCell(colourMax, std::to_string(colourMax), colourMax > t.colourThreshold,
                       "RGBA " + rgbaText(c.colourMaxDelta) + "; threshold " + std::to_string(t.colourThreshold));
     row += numberCell(colourMean, fixed("%.4f", colourMean), false, "RGBA " + meanText(c.colourMeanDelta));
     row += numberCell(c.psnr, psnrText(c.psnr), false);
     row += numberCell(double(c.depthPixelsOver), std::to_string(c.depthPixelsOver), c.depthPixelsOver > t.maxDepthPixelsOver,
-                      fixed("pixels with depth |\xCE\x94| over %.9g", t.depthThreshold) +
-                          "; allowed: " + std::to_string(t.maxDepthPixelsOver));
-    row += numberCell(c.depthMaxDelta, fixed("%.3g", c.depthMaxDelta), c.depthMaxDelta > t.depthThreshold,
-                      fixed("threshold %.9g", t.depthThreshold));
+                      "pixels with depth |\xCE\x94| over " + depthText(t.depthThreshold) +
+                          "; allowed " + std::to_string(t.maxDepthPixelsOver));
+    row += numberCell(c.depthMaxDelta, depthText(c.depthMaxDelta), c.depthMaxDelta > t.depthThreshold,
+                      "threshold " + depthText(t.depthThreshold));
     row += numberCell(r.softMilliseconds, fixed("%.2f", r.softMilliseconds), false);
     row += numberCell(r.vulkanMilliseconds, fixed("%.2f", r.vulkanMilliseconds), false);
   } else {
@@ -228,13 +227,13 @@ std::string metricsTable(const SceneResult& r) {
     rows += metricRow("PSNR (RGB, dB)", psnrText(c.psnr), "", false);
     rows += metricRow("depth pixels over threshold", std::to_string(c.depthPixelsOver),
                       "\xE2\x89\xA4 " + std::to_string(t.maxDepthPixelsOver), c.depthPixelsOver > t.maxDepthPixelsOver);
-    rows += metricRow("depth max |\xCE\x94|", fixed("%.9g", c.depthMaxDelta), fixed("threshold %.9g", t.depthThreshold),
+    rows += metricRow("depth max |\xCE\x94|", depthText(c.depthMaxDelta), "threshold " + depthText(t.depthThreshold),
                       c.depthMaxDelta > t.depthThreshold);
     rows += metricRow("time", fixed("softraster %.2f ms", r.softMilliseconds) + fixed(", Vulkan %.2f ms", r.vulkanMilliseconds) +
                       fixed(", whole scene %.2f ms", r.milliseconds), "", false);
   } else if (r.loaded) {
     rows += metricRow("tolerance", "", "colour threshold " + std::to_string(t.colourThreshold) +
-                      fixed(", depth threshold %.9g", t.depthThreshold) + ", coverage mismatches \xE2\x89\xA4 " +
+                      ", depth threshold " + depthText(t.depthThreshold) + ", coverage mismatches \xE2\x89\xA4 " +
                       std::to_string(t.maxCoverageMismatches) + ", colour pixels over \xE2\x89\xA4 " +
                       std::to_string(t.maxColourPixelsOver) + ", depth pixels over \xE2\x89\xA4 " +
                       std::to_string(t.maxDepthPixelsOver), false);
@@ -274,7 +273,7 @@ std::string colourLegend(const std::string& threshold) {
 
 std::string depthLegend(double threshold) {
   return "<div class=\"legend\"><span><i class=\"swatch sw-equal\"></i>equal</span>"
-         "<span><i class=\"swatch sw-within\"></i>|\xCE\x94z| \xE2\x89\xA4 " + e(fixed("%.3g", threshold)) +
+         "<span><i class=\"swatch sw-within\"></i>|\xCE\x94z| \xE2\x89\xA4 " + e(depthText(threshold)) +
          "</span><span><i class=\"swatch sw-depth-over\"></i>over, log scale (yellow \xE2\x89\xA5 2<sup>16</sup>\xC3\x97 threshold)</span>"
          "<span><i class=\"swatch sw-coverage\"></i>NaN in one only</span></div>";
 }
