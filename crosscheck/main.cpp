@@ -3,9 +3,9 @@
 //   crosscheck render SCENE --renderer soft|vulkan -o OUT.png [--depth-out OUT.png]
 //   crosscheck compare SCENE [-o DIR] [--json]
 //   crosscheck conformance [SCENE|DIR ...] [--expectations FILE] [--jobs N] [--shard I/N] [--junit FILE] [-o DIR]
-//                          [--timeout SECONDS] [--memory-limit MB]
+//                          [--timeout SECONDS] [--memory-limit MB] [--set KEY.PATH=VALUE ...]
 //   crosscheck report [SCENE|DIR ...] -o DIR [--expectations FILE] [--jobs N] [--shard I/N] [--junit FILE]
-//                     [--timeout SECONDS] [--memory-limit MB]
+//                     [--timeout SECONDS] [--memory-limit MB] [--set KEY.PATH=VALUE ...]
 //   crosscheck bench [SCENE|DIR ...] [--frames N] [--warmup N] [--threads N] [-o FILE.json]
 // render and compare also take --method exact|exact-scalar and --threads N (softraster's).
 // Exit status (README, "Exit status"): 0 success / within tolerance / nothing unexpected; 1
@@ -60,9 +60,9 @@ constexpr const char* kUsage =
     "usage: crosscheck render SCENE --renderer soft|vulkan -o OUT.png [--depth-out OUT.png]\n"
     "       crosscheck compare SCENE [-o DIR] [--json]\n"
     "       crosscheck conformance [SCENE|DIR ...] [--expectations FILE] [--jobs N] [--shard I/N] [--junit FILE] "
-    "[-o DIR] [--timeout SECONDS] [--memory-limit MB]\n"
+    "[-o DIR] [--timeout SECONDS] [--memory-limit MB] [--set KEY.PATH=VALUE ...]\n"
     "       crosscheck report [SCENE|DIR ...] -o DIR [--expectations FILE] [--jobs N] [--shard I/N] [--junit FILE] "
-    "[--timeout SECONDS] [--memory-limit MB]\n"
+    "[--timeout SECONDS] [--memory-limit MB] [--set KEY.PATH=VALUE ...]\n"
     "       crosscheck bench [SCENE|DIR ...] [--frames N] [--warmup N] [--threads N] [-o FILE.json]\n"
     "       (crosscheck SUBCOMMAND --help for every option)";
 
@@ -174,6 +174,7 @@ int main(int argc, char** argv) {
                     "Crash (out of memory); 0 = none; default " + memoryLimitText);
     cmd->add_option("--shard", suite.shard, "Run slice I of N (1-based: 1/3, 2/3, 3/3); scene k goes to shard k mod N + 1");
     cmd->add_option("--junit", suite.junitFile, "Write JUnit XML to this file");
+    cmd->add_option("--set", suite.overrides, "Override a value in every scene, e.g. camera.yaw=90 (repeatable)");
     addDevice(cmd);
   };
   CLI::App* conformance =

@@ -57,6 +57,7 @@ int compareCommand(const CompareCommand& command);
 // Options the suite commands (conformance, report) share.
 struct SuiteCommand {
   std::vector<std::string> inputs;      // scene files and directories; empty: scenes/
+  std::vector<std::string> overrides;   // --set KEY.PATH=VALUE, applied to every scene
   std::string expectationsFile;
   unsigned jobs = 1;                    // worker processes
   double timeoutSeconds = 0;            // per scene; 0: none

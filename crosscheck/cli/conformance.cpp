@@ -102,6 +102,9 @@ int runSuite(const SuiteCommand& command, const SuiteOutputs& outputs) {
     if (!parsed) return usageError(parsed.error());
     shard = *parsed;
   }
+  for (const std::string& assignment : command.overrides) {
+    if (const Status form = checkOverride(assignment); !form) return usageError(form.message());
+  }
   std::optional<Expectations> expectations;
   if (!command.expectationsFile.empty()) {
     auto loaded = loadExpectations(command.expectationsFile);
@@ -128,15 +131,22 @@ int runSuite(const SuiteCommand& command, const SuiteOutputs& outputs) {
     }
   }
   const std::vector<SceneEntry> slice = selectShard(*suite, shard);
+  ConformanceOptions options;
+  options.jobs = command.jobs;
+  options.overrides = command.overrides;
+  options.expectations = expectations ? &*expectations : nullptr;
+  // The jobs that run: no more than the scenes that are not skipped.
+  const std::size_t jobs = jobsFor(slice, options);
   std::printf("crosscheck %s: %zu scene%s", outputs.name.c_str(), slice.size(), slice.size() == 1 ? "" : "s");
   if (shard.count > 1) std::printf(" (shard %zu/%zu of %zu)", shard.index, shard.count, suite->size());
-  std::printf(", %u job%s\n", command.jobs, command.jobs == 1 ? "" : "s");
+  std::printf(", %zu job%s", jobs, jobs == 1 ? "" : "s");
+  if (jobs < command.jobs) std::printf(" (--jobs %u: no more jobs than scenes to run)", command.jobs);
+  std::printf("\n");
+  for (const std::string& assignment : command.overrides) std::printf("  --set %s in every scene\n", assignment.c_str());
   std::fflush(stdout);
 
   const auto start = Clock::now();
   Printer printer(slice.size(), start);
-  ConformanceOptions options;
-  options.jobs = command.jobs;
   options.timeoutSeconds = command.timeoutSeconds;
   options.memoryLimitMegabytes = command.memoryLimitMegabytes;
   bool workerFailed = false;
@@ -144,7 +154,6 @@ int runSuite(const SuiteCommand& command, const SuiteOutputs& outputs) {
     std::fprintf(stderr, "%scrosscheck: %s\n", printer.onTerminal() ? "\r\033[K" : "", error.c_str());
     workerFailed = true;
   };
-  options.expectations = expectations ? &*expectations : nullptr;
   options.device = command.device;
   options.softraster = command.softraster;
   options.onFinished = [&](std::size_t position, const SceneResult& result, std::size_t done) {
@@ -166,7 +175,7 @@ int runSuite(const SuiteCommand& command, const SuiteOutputs& outputs) {
   printer.end();
   run.seconds = std::chrono::duration<double>(Clock::now() - start).count();
   run.finished = std::time(nullptr);
-  run.jobs = command.jobs;
+  run.jobs = static_cast<unsigned>(jobs);
   run.commandLine = command.commandLine;
   run.junitFile = command.junitFile;
   if (shard.count > 1) run.suiteName += ".shard" + std::to_string(shard.index) + "of" + std::to_string(shard.count);

@@ -40,7 +40,7 @@ Outcome runScene(SceneResult& result, const ConformanceOptions& options, VulkanS
     result.error = std::move(message);
     return Outcome::Crash;
   };
-  const auto scene = loadScene(result.entry.path);
+  const auto scene = loadScene(result.entry.path, options.overrides);
   if (!scene) return crash(scene.error());
   result.loaded = true;
   result.description = scene->description;
@@ -152,7 +152,7 @@ std::vector<SceneResult> runOnThreads(const std::vector<SceneEntry>& suite, cons
   std::atomic<std::size_t> next{0};
   std::mutex lock;
   std::size_t done = 0;
-  const std::size_t jobs = std::clamp<std::size_t>(options.jobs, 1, std::max<std::size_t>(suite.size(), 1));
+  const std::size_t jobs = jobsFor(suite, options);
   const ConformanceOptions perJob = perJobOptions(options, jobs);
   const auto worker = [&] {
     VulkanSlot vulkan;
@@ -191,7 +191,7 @@ std::vector<SceneResult> runInProcesses(const std::vector<SceneEntry>& suite, co
       toRun.push_back(i);
     }
   }
-  const std::size_t jobs = std::clamp<std::size_t>(options.jobs, 1, std::max<std::size_t>(toRun.size(), 1));
+  const std::size_t jobs = jobsFor(suite, options);
   const ConformanceOptions perJob = perJobOptions(options, jobs);
 
   // In a worker: its own Vulkan renderer (and, in runScene, its own softraster Context).
@@ -242,6 +242,12 @@ std::vector<SceneResult> runInProcesses(const std::vector<SceneEntry>& suite, co
 }
 
 }  // namespace
+
+std::size_t jobsFor(const std::vector<SceneEntry>& suite, const ConformanceOptions& options) {
+  const auto running = static_cast<std::size_t>(
+      std::count_if(suite.begin(), suite.end(), [&](const SceneEntry& entry) { return !isSkipped(entry, options); }));
+  return std::clamp<std::size_t>(options.jobs, 1, std::max<std::size_t>(running, 1));
+}
 
 std::vector<SceneResult> runConformance(const std::vector<SceneEntry>& suite, const ConformanceOptions& options) {
   return options.isolation == Isolation::Processes ? runInProcesses(suite, options) : runOnThreads(suite, options);

@@ -44,7 +44,8 @@ enum class Isolation { Processes, Threads };
 inline constexpr std::size_t kDefaultMemoryLimitMegabytes = 16384;
 
 struct ConformanceOptions {
-  unsigned jobs = 1;
+  unsigned jobs = 1;                           // at most; jobsFor says how many run
+  std::vector<std::string> overrides;          // --set assignments applied to every scene (loadScene)
   Isolation isolation = Isolation::Processes;
   double timeoutSeconds = 0;                   // per scene (Processes only); 0: none
   std::size_t memoryLimitMegabytes = kDefaultMemoryLimitMegabytes;  // per worker (Processes only); 0: none
@@ -67,5 +68,9 @@ struct ConformanceOptions {
 // One SceneResult per scene of `suite`, in suite order (RunResults::scenes). With Processes the
 // calling process must have no other threads and no Vulkan renderer open (workers are forked).
 std::vector<SceneResult> runConformance(const std::vector<SceneEntry>& suite, const ConformanceOptions& options);
+
+// How many jobs runConformance uses for `suite`: options.jobs, but no more than the scenes that
+// run (those the expectations do not skip), and at least one.
+std::size_t jobsFor(const std::vector<SceneEntry>& suite, const ConformanceOptions& options);
 
 }  // namespace crosscheck

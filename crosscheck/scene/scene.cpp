@@ -674,12 +674,19 @@ Draw readDrawMesh(const json& d, const std::string& place, const std::filesystem
   return draw;
 }
 
+// What is wrong with the form of "a.b.c=value", or empty.
+std::string overrideFormError(const std::string& assignment) {
+  const auto equals = assignment.find('=');
+  if (equals == std::string::npos || equals == 0) return "expected KEY.PATH=VALUE";
+  const std::string key = assignment.substr(0, equals);
+  if (key.front() == '.' || key.back() == '.' || key.find("..") != std::string::npos) return "empty key component";
+  return "";
+}
+
 // Applies "a.b.c=value" to the JSON document; value is JSON, or a plain string if it is not.
 void applyOverride(json& document, const std::string& assignment) {
+  if (const std::string error = overrideFormError(assignment); !error.empty()) throw SceneError("--set " + assignment, error);
   const auto equals = assignment.find('=');
-  if (equals == std::string::npos || equals == 0) {
-    throw SceneError("--set " + assignment, "expected KEY.PATH=VALUE");
-  }
   const std::string key = assignment.substr(0, equals);
   const std::string text = assignment.substr(equals + 1);
   json value = json::parse(text, nullptr, false);
@@ -807,6 +814,12 @@ shaders::DrawParameters drawParameters(const Scene& scene, const Draw& draw) {
   p.material = draw.material;
   p.pointSize = draw.pointSize;
   return p;
+}
+
+softraster::Status checkOverride(const std::string& assignment) {
+  const std::string error = overrideFormError(assignment);
+  if (error.empty()) return {};
+  return softraster::Status::error("--set " + assignment + ": " + error);
 }
 
 softraster::Result<Scene> loadScene(const std::filesystem::path& path, const std::vector<std::string>& overrides) {

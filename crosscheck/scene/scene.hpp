@@ -75,4 +75,8 @@ shaders::DrawParameters drawParameters(const Scene& scene, const Draw& draw);
 // "FILE: PLACE: what is wrong".
 softraster::Result<Scene> loadScene(const std::filesystem::path& path, const std::vector<std::string>& overrides = {});
 
+// Whether `assignment` has the KEY.PATH=VALUE form (before any scene is read, so a suite run can
+// refuse a malformed --set at once); the error is "--set ASSIGNMENT: what is wrong".
+softraster::Status checkOverride(const std::string& assignment);
+
 }  // namespace crosscheck
