@@ -165,8 +165,19 @@ class ExactDraw {
         [&](const Vertex& p) { drawPoint(p); });
   }
 
-  // Snapping, the fixed-point cull, setup and fragments of one filled triangle.
+  // drawTriangle, drawLine and drawPoint are called from several places (straight, after
+  // clipping, from the unfilled stage): each is compiled once, for the fragment stage's
+  // instruction set (detail/instruction_set.hpp), rather than copied into every caller.
   void drawTriangle(const Vertex& a, const Vertex& b, const Vertex& c) {
+    callCompiledFor<Fragments::kInstructionSet, &ExactDraw::drawTriangleHere>(*this, a, b, c);
+  }
+  void drawLine(const Vertex& a, const Vertex& b) {
+    callCompiledFor<Fragments::kInstructionSet, &ExactDraw::drawLineHere>(*this, a, b);
+  }
+  void drawPoint(const Vertex& v) { callCompiledFor<Fragments::kInstructionSet, &ExactDraw::drawPointHere>(*this, v); }
+
+  // Snapping, the fixed-point cull, setup and fragments of one filled triangle.
+  void drawTriangleHere(const Vertex& a, const Vertex& b, const Vertex& c) {
     const float pixelOffset = multisample_ ? 0.0f : kPixelCentreOffset;
     FixedTriangle fixed = snapTriangle(a.window, b.window, c.window, pixelOffset);
     const int area = fixedAreaSign(fixed);
@@ -189,7 +200,7 @@ class ExactDraw {
     }
   }
 
-  void drawLine(const Vertex& a, const Vertex& b) {
+  void drawLineHere(const Vertex& a, const Vertex& b) {
     const auto line = rs_.lineRasterization == LineRasterization::Bresenham
                           ? setupBresenhamLine(a.window, b.window, rs_.lineWidth)
                           : setupRectangularLine(a.window, b.window, rs_.lineWidth);
@@ -197,7 +208,7 @@ class ExactDraw {
     fragments_.shadePixels(line->quad.edges, line->quad.bounds, setupLineInterpolants(a, b, *line, kInterpolation));
   }
 
-  void drawPoint(const Vertex& v) {
+  void drawPointHere(const Vertex& v) {
     const QuadEdges quad = setupPoint(v.window, v.pointSize);
     fragments_.shadePixels(quad.edges, quad.bounds, setupPointInterpolants(v, kInterpolation));
   }

@@ -131,24 +131,7 @@ class BandQueue {
   // One band's records, drawn by the calling thread. The band task is reached through
   // std::function, outside the Context's flattened entry point, so it is compiled for the
   // stage's instruction set and flattened here again.
-  void drawBand(std::size_t band) const {
-#if defined(__x86_64__) && defined(__GNUC__)
-    if constexpr (Stage::kInstructionSet == InstructionSet::Avx2Fma) {
-      drawBandAvx2Fma(band);
-    } else if constexpr (Stage::kInstructionSet == InstructionSet::Fma) {
-      drawBandFma(band);
-    } else {
-      drawBandBaseline(band);
-    }
-#else
-    drawBandBaseline(band);
-#endif
-  }
-#if defined(__x86_64__) && defined(__GNUC__)
-  [[gnu::target("avx2,fma"), gnu::flatten]] void drawBandAvx2Fma(std::size_t band) const { replay(band); }
-  [[gnu::target("fma"), gnu::flatten]] void drawBandFma(std::size_t band) const { replay(band); }
-#endif
-  [[gnu::flatten]] void drawBandBaseline(std::size_t band) const { replay(band); }
+  void drawBand(std::size_t band) const { callCompiledFor<Stage::kInstructionSet, &BandQueue::replay>(*this, band); }
 
   void replay(std::size_t band) const {
     const std::vector<std::uint32_t>& bin = bins_[band];

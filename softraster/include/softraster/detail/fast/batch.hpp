@@ -162,28 +162,6 @@ inline Mask depthTestPasses(CompareOp op, Words incoming, Words stored) {
   }
 }
 
-// The same with the compare op known at compile time (the block loop is instantiated per op).
-template <CompareOp Op, class V>
-inline Mask compareLanes(V incoming, V stored) {
-  if constexpr (Op == CompareOp::Never) return Mask{};
-  if constexpr (Op == CompareOp::Less) return reinterpret_cast<Mask>(incoming < stored);
-  if constexpr (Op == CompareOp::Equal) return reinterpret_cast<Mask>(incoming == stored);
-  if constexpr (Op == CompareOp::LessOrEqual) return reinterpret_cast<Mask>(incoming <= stored);
-  if constexpr (Op == CompareOp::Greater) return reinterpret_cast<Mask>(incoming > stored);
-  if constexpr (Op == CompareOp::NotEqual) return reinterpret_cast<Mask>(incoming != stored);
-  if constexpr (Op == CompareOp::GreaterOrEqual) return reinterpret_cast<Mask>(incoming >= stored);
-  if constexpr (Op == CompareOp::Always) return ~Mask{};
-}
-
-template <DepthFormat Format, CompareOp Op>
-inline Mask depthTestPasses(Words incoming, Words stored) {
-  if constexpr (Format == DepthFormat::D32Sfloat) {
-    return compareLanes<Op>(reinterpret_cast<Floats>(incoming), reinterpret_cast<Floats>(stored));
-  } else {
-    return compareLanes<Op>(incoming, stored);
-  }
-}
-
 // unorm8FromFloat per lane: clamp to [0, 1] (NaN to 0), times 255, round half to even.
 // SSE max(v, 0) then min(., 1) is the scalar clamp exactly (maxps returns its second operand for
 // a NaN, and +0 for -0); cvtps2dq rounds as the scalar path's add and subtract of 2^23 do, in the

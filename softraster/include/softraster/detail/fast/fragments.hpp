@@ -6,8 +6,9 @@
 //     division) into the blocks wholly outside an edge (skipped) and those wholly inside all
 //     three (every lane covered, no per-lane test); other blocks take their coverage from the
 //     64-bit edge functions at their eight pixel centres;
-//   - the depth state (test, compare op, write) picks the block loop's instantiation once per
-//     triangle; a block wholly inside the box reads and writes with plain loads and stores;
+//   - the depth state (test, compare op, write) is read per block, a branch the predictor
+//     learns (one block loop per stage, not one per state, keeps a shader's compile time down);
+//     a block wholly inside the box reads and writes with plain loads and stores;
 //   - depth per lane at the integer pixel coordinates (no incremental stepping: the plane is
 //     evaluated per pixel exactly as the scalar path does), the depth test before shading;
 //   - varyings with the real 1/w division, the shader on the batch, UNORM8 conversion, blending
@@ -118,26 +119,9 @@ class FastFragmentStage {
                                                 const TriangleInterpolants<N>& t) const {
     const PixelRect box = intersect(bounds, target_.region);
     if (box.empty()) return;
+    if (target_.depth.testEnable && target_.depth.compareOp == CompareOp::Never) return;  // nothing passes
     const BlockPlanes planes = blockPlanes(t);
-    // The depth state picks the block loop's instantiation once per triangle, not per block.
-    if (!target_.depth.testEnable) return walk<CompareOp::Always, false, false>(edges, box, planes);
-    if (target_.depth.writeEnable) return walkTested<true>(edges, box, planes);
-    return walkTested<false>(edges, box, planes);
-  }
-
-  template <bool Write>
-  [[SOFTRASTER_FAST_TARGET]] void walkTested(const EdgeFunction (&edges)[3], const PixelRect& box,
-                                             const BlockPlanes& planes) const {
-    switch (target_.depth.compareOp) {
-      case CompareOp::Never: return;  // no fragment passes: nothing is written
-      case CompareOp::Less: return walk<CompareOp::Less, true, Write>(edges, box, planes);
-      case CompareOp::Equal: return walk<CompareOp::Equal, true, Write>(edges, box, planes);
-      case CompareOp::LessOrEqual: return walk<CompareOp::LessOrEqual, true, Write>(edges, box, planes);
-      case CompareOp::Greater: return walk<CompareOp::Greater, true, Write>(edges, box, planes);
-      case CompareOp::NotEqual: return walk<CompareOp::NotEqual, true, Write>(edges, box, planes);
-      case CompareOp::GreaterOrEqual: return walk<CompareOp::GreaterOrEqual, true, Write>(edges, box, planes);
-      case CompareOp::Always: return walk<CompareOp::Always, true, Write>(edges, box, planes);
-    }
+    walk(edges, box, planes);
   }
 
   static constexpr std::int64_t kCutBlocks = 4;  // rows of more blocks than this are cut by division
@@ -201,7 +185,6 @@ class FastFragmentStage {
     }
   }
 
-  template <CompareOp Op, bool Test, bool Write>
   [[SOFTRASTER_FAST_TARGET, gnu::flatten, gnu::noinline]] void walk(const EdgeFunction (&edges)[3], const PixelRect& box,
                                                                    const BlockPlanes& planes) const {
     const BlockEdges lanes = blockEdges(edges);
@@ -214,7 +197,7 @@ class FastFragmentStage {
     walkBlocks(edges, box, lowest, highest,
                [&](int px, int py, unsigned inBox, bool inside, const std::int64_t (&value)[3]) {
                  const unsigned covered = inside ? inBox : insideBits(lanes, value) & inBox;
-                 if (covered != 0) shadeBlock<Op, Test, Write>(px, py, covered, inBox == 0xffu, planes);
+                 if (covered != 0) shadeBlock(px, py, covered, inBox == 0xffu, planes);
                });
   }
 
@@ -241,27 +224,26 @@ class FastFragmentStage {
 
   // Depth test, shading and writes of the lanes `covered` of the block whose lane 0 is (px, py);
   // `whole`: all eight lanes are inside the box (so inside the image), read and written plainly.
-  template <CompareOp Op, bool Test, bool Write>
   [[SOFTRASTER_FAST_TARGET]] void shadeBlock(int px, int py, unsigned covered, bool whole, const BlockPlanes& t) const {
     const Floats fx = broadcast(static_cast<float>(px)) + kLaneX;
     const Floats fy = broadcast(static_cast<float>(py)) + kLaneY;
     const std::size_t first = static_cast<std::size_t>(py) * target_.width + static_cast<std::size_t>(px);
     Words stored{}, current{};
     Mask passes = ~Mask{};
-    if constexpr (Test) {
-      if constexpr (Op != CompareOp::Always || Write) {
+    if (target_.depth.testEnable) {
+      if (target_.depth.compareOp != CompareOp::Always || target_.depth.writeEnable) {
         current = whole ? loadFullBlock(target_.depthStorage + first, target_.width)
                         : loadBlock(target_.depthStorage + first, target_.width, covered);
       }
       if (target_.inverseZ) {  // the course's 1/z buffer: larger is nearer, so compare the other way round
         stored = reinterpret_cast<Words>(evaluatePlane(t.oneOverW, fx, fy));
-        passes = depthTestPasses<Format, Op>(current, stored);
+        passes = depthTestPasses<Format>(target_.depth.compareOp, current, stored);
       } else {
         const Floats z = evaluatePlane(t.depth, fx, fy) + t.depthOffset;
         stored = depthToStorage<Format>(clampDepth(z, target_.depthRange));
-        passes = depthTestPasses<Format, Op>(stored, current);
+        passes = depthTestPasses<Format>(target_.depth.compareOp, stored, current);
       }
-      if constexpr (Op != CompareOp::Always) {
+      if (target_.depth.compareOp != CompareOp::Always) {
         covered &= maskBits(passes);
         if (covered == 0) return;
       }
@@ -275,7 +257,7 @@ class FastFragmentStage {
     } else {
       storeBlock(colour_ + first, target_.width, covered, colour);
     }
-    if constexpr (Write) {
+    if (target_.depth.testEnable && target_.depth.writeEnable) {
       if (whole) {  // lanes that fail keep the value just read: one plain store
         const Words written = reinterpret_cast<Words>(laneMask(covered));
         storeFullBlock(target_.depthStorage + first, target_.width, (stored & written) | (current & ~written));
@@ -351,29 +333,12 @@ class FastFragmentStage {
                                                        const TriangleInterpolants<N>& t) const {
     const PixelRect box = intersect(bounds, target_.region);
     if (box.empty()) return;
+    if (target_.depth.testEnable && target_.depth.compareOp == CompareOp::Never) return;  // nothing passes
     const BlockPlanes planes = blockPlanes(t);
-    if (!target_.depth.testEnable) return walkSamples<CompareOp::Always, false, false>(edges, box, planes);
-    if (target_.depth.writeEnable) return walkSamplesTested<true>(edges, box, planes);
-    return walkSamplesTested<false>(edges, box, planes);
-  }
-
-  template <bool Write>
-  [[SOFTRASTER_FAST_TARGET]] void walkSamplesTested(const EdgeFunction (&edges)[3], const PixelRect& box,
-                                                    const BlockPlanes& planes) const {
-    switch (target_.depth.compareOp) {
-      case CompareOp::Never: return;  // no sample passes: nothing is written
-      case CompareOp::Less: return walkSamples<CompareOp::Less, true, Write>(edges, box, planes);
-      case CompareOp::Equal: return walkSamples<CompareOp::Equal, true, Write>(edges, box, planes);
-      case CompareOp::LessOrEqual: return walkSamples<CompareOp::LessOrEqual, true, Write>(edges, box, planes);
-      case CompareOp::Greater: return walkSamples<CompareOp::Greater, true, Write>(edges, box, planes);
-      case CompareOp::NotEqual: return walkSamples<CompareOp::NotEqual, true, Write>(edges, box, planes);
-      case CompareOp::GreaterOrEqual: return walkSamples<CompareOp::GreaterOrEqual, true, Write>(edges, box, planes);
-      case CompareOp::Always: return walkSamples<CompareOp::Always, true, Write>(edges, box, planes);
-    }
+    walkSamples(edges, box, planes);
   }
 
   // The bounding box block by block, as walk() does, with the coverage of every sample.
-  template <CompareOp Op, bool Test, bool Write>
   [[SOFTRASTER_FAST_TARGET, gnu::flatten, gnu::noinline]] void walkSamples(const EdgeFunction (&edges)[3],
                                                                           const PixelRect& box,
                                                                           const BlockPlanes& planes) const {
@@ -382,13 +347,12 @@ class FastFragmentStage {
                [&](int px, int py, unsigned inBox, bool inside, const std::int64_t (&value)[3]) {
                  const std::uint32_t inBoxSamples = kSpreadToSamples[inBox];
                  const std::uint32_t covered = inside ? inBoxSamples : sampleInsideBits(samples, value) & inBoxSamples;
-                 if (covered != 0) shadeSampleBlock<Op, Test, Write>(px, py, covered, inBox == 0xffu, planes);
+                 if (covered != 0) shadeSampleBlock(px, py, covered, inBox == 0xffu, planes);
                });
   }
 
   // Depth test per sample, shading once per pixel and the writes of the samples `covered` (bit
   // 4 * lane + s) of the block whose lane 0 is (px, py), as the scalar shadeSamples does them.
-  template <CompareOp Op, bool Test, bool Write>
   [[SOFTRASTER_FAST_TARGET]] void shadeSampleBlock(int px, int py, std::uint32_t covered, bool whole,
                                                    const BlockPlanes& t) const {
     static constexpr Floats kSampleX = {kSamplePositions4x[0][0], kSamplePositions4x[1][0], kSamplePositions4x[2][0],
@@ -403,20 +367,20 @@ class FastFragmentStage {
     const Floats x0 = broadcast(static_cast<float>(px)), y0 = broadcast(static_cast<float>(py));
     std::uint32_t passed = covered;
     Words stored[4]{}, current[4]{};
-    if constexpr (Test) {
+    if (target_.depth.testEnable) {
       passed = 0;
       for (int pair = 0; pair < 4; ++pair) {
         const unsigned bits = (covered >> (8 * pair)) & 0xffu;
         if (bits == 0) continue;
         const int row = pair >> 1, column = 2 * (pair & 1);
         const std::uint32_t* depth = target_.depthStorage + 4 * (firstPixel + static_cast<std::size_t>(row) * width + column);
-        if constexpr (Op != CompareOp::Always || Write) current[pair] = whole ? loadWords(depth) : loadWords(depth, bits);
+        if (target_.depth.compareOp != CompareOp::Always || target_.depth.writeEnable) current[pair] = whole ? loadWords(depth) : loadWords(depth, bits);
         // The sample's position as the scalar path forms it: float(pixel) + sample offset.
         const Floats fx = (x0 + broadcast(static_cast<float>(column)) + kHalfX) + kSampleX;
         const Floats fy = (y0 + broadcast(static_cast<float>(row))) + kSampleY;
         const Floats z = evaluatePlane(t.depth, fx, fy) + t.depthOffset;
         stored[pair] = depthToStorage<Format>(clampDepth(z, target_.depthRange));
-        passed |= (bits & maskBits(depthTestPasses<Format, Op>(stored[pair], current[pair]))) << (8 * pair);
+        passed |= (bits & maskBits(depthTestPasses<Format>(target_.depth.compareOp, stored[pair], current[pair]))) << (8 * pair);
       }
       if (passed == 0) return;
     }
@@ -437,7 +401,7 @@ class FastFragmentStage {
           _mm256_permutevar8x32_epi32(colour, _mm256_setr_epi32(lane, lane, lane, lane, lane + 1, lane + 1, lane + 1, lane + 1)));
       if (target_.blend.readsDestination) c = blendColour(c, loadWords(colour_ + first, bits), target_.blend);
       storeWords(colour_ + first, bits, c);
-      if constexpr (Write) {
+      if (target_.depth.testEnable && target_.depth.writeEnable) {
         if (whole) {  // samples that fail keep the value just read: one plain store
           const Words written = reinterpret_cast<Words>(laneMask(bits));
           storeWords(target_.depthStorage + first, 0xffu, (stored[pair] & written) | (current[pair] & ~written));

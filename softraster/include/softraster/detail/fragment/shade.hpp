@@ -13,6 +13,7 @@
 #include <softraster/detail/exact/rasterizer.hpp>
 #include <softraster/detail/fragment/colour.hpp>
 #include <softraster/detail/fragment/depth.hpp>
+#include <softraster/detail/instruction_set.hpp>
 #include <softraster/framebuffer.hpp>
 #include <softraster/shader.hpp>
 #include <softraster/state.hpp>
@@ -26,8 +27,6 @@ namespace softraster::detail {
 
 // The instructions a fragment stage's code is compiled for (where the draw loop runs it on
 // other threads, fast/bands.hpp compiles it the same way there).
-enum class InstructionSet : std::uint8_t { Baseline, Fma, Avx2Fma };
-
 // What a fragment stage tests against and writes to, for one draw (or one band of it): derived
 // once from the state and the framebuffer, shared by the scalar and the fast stage.
 struct FragmentTarget {
@@ -65,9 +64,21 @@ class FragmentStage {
 
   const FragmentTarget& target() const { return target_; }
 
-  // Every pixel centre inside all E edges (3: a triangle; 4: a line or point quad).
+  // Every pixel centre inside all E edges (3: a triangle; 4: a line or point quad). Compiled once
+  // per stage for its instruction set, not copied into each caller (detail/instruction_set.hpp).
   template <int E>
   void shadePixels(const EdgeFunction (&edges)[E], const PixelRect& bounds, const TriangleInterpolants<N>& t) const {
+    callCompiledFor<kInstructionSet, &FragmentStage::template shadePixelsHere<E>>(*this, edges, bounds, t);
+  }
+
+  // 4x MSAA: every pixel with a sample inside all three edges of a triangle.
+  void shadeSamples(const EdgeFunction (&edges)[3], const PixelRect& bounds, const TriangleInterpolants<N>& t) const {
+    callCompiledFor<kInstructionSet, &FragmentStage::shadeSamplesHere>(*this, edges, bounds, t);
+  }
+
+ private:
+  template <int E>
+  void shadePixelsHere(const EdgeFunction (&edges)[E], const PixelRect& bounds, const TriangleInterpolants<N>& t) const {
     std::array<float, (N == 0 ? 1 : N)> varyings{};
     rasterizeEdges(edges, bounds, target_.region, [&](int px, int py) {
       const float fx = static_cast<float>(px), fy = static_cast<float>(py);
@@ -90,8 +101,7 @@ class FragmentStage {
     });
   }
 
-  // 4x MSAA: every pixel with a sample inside all three edges of a triangle.
-  void shadeSamples(const EdgeFunction (&edges)[3], const PixelRect& bounds, const TriangleInterpolants<N>& t) const {
+  void shadeSamplesHere(const EdgeFunction (&edges)[3], const PixelRect& bounds, const TriangleInterpolants<N>& t) const {
     std::array<float, (N == 0 ? 1 : N)> varyings{};
     rasterizeEdgesSampled(edges, bounds, target_.region, [&](int px, int py, unsigned mask) {
       const float fx = static_cast<float>(px), fy = static_cast<float>(py);
@@ -119,7 +129,6 @@ class FragmentStage {
     });
   }
 
- private:
   static constexpr InterpolationSet<N> kInterpolation = interpolationOf<Shader>();
 
   const typename Shader::Uniforms& uniforms_;

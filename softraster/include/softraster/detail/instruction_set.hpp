@@ -1,0 +1,50 @@
+// The instruction sets the draw loops are compiled for, and callCompiledFor: a member function
+// compiled as one function of its own for one of them, with everything it calls inlined.
+// The draw loop's entry points are flattened for their instruction set (pipeline.hpp), so that
+// fmuladd is one FMA instruction and the fast path's AVX2 batches never cross a function
+// boundary. Flattening copies a callee into every call site, though, and one function holding the
+// whole draw took GCC most of a minute per shader; the stages called from several places (a
+// triangle's, a line's and a point's setup and fragments) go through callCompiledFor instead,
+// which keeps one copy of each, flattened on its own, for the same instruction set.
+// Deliberately no run-time dispatch: the caller picks the instruction set (pipeline.hpp).
+#pragma once
+
+#include <cstdint>
+#include <utility>
+
+namespace softraster::detail {
+
+enum class InstructionSet : std::uint8_t { Baseline, Fma, Avx2Fma };
+
+#if defined(__x86_64__) && defined(__GNUC__)
+template <auto Member, class Self, class... Args>
+[[gnu::target("avx2,fma"), gnu::flatten, gnu::noinline]] void callCompiledForAvx2Fma(Self& self, Args&&... args) {
+  (self.*Member)(std::forward<Args>(args)...);
+}
+template <auto Member, class Self, class... Args>
+[[gnu::target("fma"), gnu::flatten, gnu::noinline]] void callCompiledForFma(Self& self, Args&&... args) {
+  (self.*Member)(std::forward<Args>(args)...);
+}
+#endif
+template <auto Member, class Self, class... Args>
+[[gnu::flatten, gnu::noinline]] void callCompiledForBaseline(Self& self, Args&&... args) {
+  (self.*Member)(std::forward<Args>(args)...);
+}
+
+// (self.*Member)(args...), compiled for Isa (for Baseline where the compiler cannot target it).
+template <InstructionSet Isa, auto Member, class Self, class... Args>
+inline void callCompiledFor(Self& self, Args&&... args) {
+#if defined(__x86_64__) && defined(__GNUC__)
+  if constexpr (Isa == InstructionSet::Avx2Fma) {
+    callCompiledForAvx2Fma<Member>(self, std::forward<Args>(args)...);
+  } else if constexpr (Isa == InstructionSet::Fma) {
+    callCompiledForFma<Member>(self, std::forward<Args>(args)...);
+  } else {
+    callCompiledForBaseline<Member>(self, std::forward<Args>(args)...);
+  }
+#else
+  callCompiledForBaseline<Member>(self, std::forward<Args>(args)...);
+#endif
+}
+
+}  // namespace softraster::detail
