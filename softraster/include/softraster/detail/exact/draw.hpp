@@ -55,7 +55,10 @@ class ExactDraw {
         transform_(makeViewportTransform(viewport_)),
         region_(drawRegion(state.scissor, viewport_, framebuffer.width(), framebuffer.height())),
         multisample_(framebuffer.samples() == 4),
-        fragments_(pool, scratch, state, uniforms, framebuffer, viewport_, region_, inverseZ),
+        // With 4x MSAA the fragment stage may also touch the column and row lavapipe's scissor
+        // planes reach (MsaaRegionEdges); the bands (fast/bands.hpp) cover them too.
+        fragments_(pool, scratch, state, uniforms, framebuffer, viewport_,
+                   multisample_ ? msaaRegionEdges(region_).rasterRegion : region_, inverseZ),
         shaded_(scratch.vector<Vertex>(ScratchSlot::ShadedVertices)),
         triangles_(scratch.vector<TriangleIndices>(ScratchSlot::Triangles)),
         lines_(scratch.vector<LineIndices>(ScratchSlot::Lines)) {}

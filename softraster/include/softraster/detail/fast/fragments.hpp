@@ -331,6 +331,7 @@ class FastFragmentStage {
 
   [[SOFTRASTER_FAST_TARGET]] void shadeSampledTriangle(const EdgeFunction (&edges)[3], const PixelRect& bounds,
                                                        const TriangleInterpolants<N>& t) const {
+    if (intersect(bounds, target_.msaa.drawRegion).empty()) return;  // lavapipe culls it
     const PixelRect box = intersect(bounds, target_.region);
     if (box.empty()) return;
     if (target_.depth.testEnable && target_.depth.compareOp == CompareOp::Never) return;  // nothing passes
@@ -346,9 +347,24 @@ class FastFragmentStage {
     walkBlocks(edges, box, samples.lowest, samples.highest,
                [&](int px, int py, unsigned inBox, bool inside, const std::int64_t (&value)[3]) {
                  const std::uint32_t inBoxSamples = kSpreadToSamples[inBox];
-                 const std::uint32_t covered = inside ? inBoxSamples : sampleInsideBits(samples, value) & inBoxSamples;
+                 const std::uint32_t covered = (inside ? inBoxSamples : sampleInsideBits(samples, value) & inBoxSamples) &
+                                               allowedBlockSamples(px, py);
                  if (covered != 0) shadeSampleBlock(px, py, covered, inBox == 0xffu, planes);
                });
+  }
+
+  // The samples of the block whose lane 0 is (px, py) that lavapipe's scissor planes let through
+  // (bit 4 * lane + s; MsaaRegionEdges): all but in the region's partial column and row.
+  std::uint32_t allowedBlockSamples(int px, int py) const {
+    const MsaaRegionEdges& m = target_.msaa;
+    const bool column = m.partialColumn >= px && m.partialColumn < px + kBatchWidth;
+    const bool row = m.partialRow >= py && m.partialRow < py + kBatchHeight;
+    if (!column && !row) return ~0u;
+    std::uint32_t allowed = 0;
+    for (int lane = 0; lane < kBatchWidth * kBatchHeight; ++lane) {
+      allowed |= m.allowedSamples(px + lane % kBatchWidth, py + lane / kBatchWidth) << (4 * lane);
+    }
+    return allowed;
   }
 
   // Depth test per sample, shading once per pixel and the writes of the samples `covered` (bit

@@ -3,7 +3,8 @@
 // colour and depth writes, in lavapipe's order:
 //   - single sample: depth at the pixel centre; a fragment failing the depth test is not shaded;
 //   - 4x MSAA (filled triangles): coverage and depth per sample, the fragment shaded once at the
-//     pixel centre and written to the samples that are covered and pass the depth test;
+//     pixel centre and written to the samples that are covered and pass the depth test; the
+//     region's left column and top row as lavapipe's scissor planes cut them (MsaaRegionEdges);
 //   - depth is tested and written only with the depth test on (Vulkan); the course's 1/z buffer
 //     (DepthMode::InverseZ) compares the other way round, larger being nearer.
 // Deliberately absent: coverage itself (exact/rasterizer.hpp walks it), stencil, sample shading.
@@ -32,7 +33,8 @@ namespace softraster::detail {
 struct FragmentTarget {
   DepthState depth;
   ColourBlend blend;  // the draw's BlendState, prepared for UNORM8 (fragment/colour.hpp)
-  PixelRect region;
+  PixelRect region;   // what this stage may touch: the draw's raster region, or one band of it
+  MsaaRegionEdges msaa;  // 4x MSAA: the whole draw's region edges (the same for every band)
   DepthRange depthRange;
   bool inverseZ;
   std::uint32_t width;
@@ -45,6 +47,9 @@ inline FragmentTarget fragmentTarget(const PipelineState& state, Framebuffer& fr
   return {state.depth,
           colourBlend(state.blend),
           region,
+          framebuffer.samples() == 4
+              ? msaaRegionEdges(drawRegion(state.scissor, viewport, framebuffer.width(), framebuffer.height()))
+              : MsaaRegionEdges{},
           fragmentDepthRange(viewport, state.rasterization.depthClampEnable),
           inverseZ,
           framebuffer.width(),
@@ -102,8 +107,11 @@ class FragmentStage {
   }
 
   void shadeSamplesHere(const EdgeFunction (&edges)[3], const PixelRect& bounds, const TriangleInterpolants<N>& t) const {
+    if (intersect(bounds, target_.msaa.drawRegion).empty()) return;  // lavapipe culls it
     std::array<float, (N == 0 ? 1 : N)> varyings{};
-    rasterizeEdgesSampled(edges, bounds, target_.region, [&](int px, int py, unsigned mask) {
+    rasterizeEdgesSampled(edges, bounds, target_.region, [&](int px, int py, unsigned covered) {
+      const unsigned mask = covered & target_.msaa.allowedSamples(px, py);
+      if (mask == 0) return;
       const float fx = static_cast<float>(px), fy = static_cast<float>(py);
       const std::size_t pixel = static_cast<std::size_t>(py) * target_.width + static_cast<std::size_t>(px);
       std::uint32_t stored[4];

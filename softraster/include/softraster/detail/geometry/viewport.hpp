@@ -1,11 +1,13 @@
 // The window a draw lands in: the viewport a state names (or the whole framebuffer), and the
 // pixel rectangle a draw may touch, as lavapipe computes them.
+// With 4x MSAA, also the extra samples lavapipe's scissor planes let through (MsaaRegionEdges).
 // Deliberately absent: multiple viewports, viewport swizzles.
 #pragma once
 
 #include <softraster/state.hpp>
 
 #include <algorithm>
+#include <climits>
 #include <cmath>
 #include <cstdint>
 
@@ -46,6 +48,44 @@ inline PixelRect drawRegion(const Scissor& scissor, const Viewport& vp, std::uin
   const float top = std::fmin(vp.y, vp.y + vp.height), bottom = std::fmax(vp.y, vp.y + vp.height);
   return intersect(region, {static_cast<int>(vp.x + 0.499f), static_cast<int>(top + 0.499f),
                             static_cast<int>(vp.x + vp.width - 0.501f), static_cast<int>(bottom - 0.501f)});
+}
+
+// 4x MSAA: lavapipe bounds a triangle that crosses the draw region's edges by four scissor
+// planes (lp_setup_add_scissor_planes), and with multisampling their constants carry +127/256:
+// the left and top planes then lie 127/256 px outside the region. So in the column left of the
+// region only the samples with an x offset above 127/256 pass (samples 1 and 3), in the row above
+// only those with a y offset above it (2 and 3), in their corner sample 3; the right and bottom
+// planes cut exactly. Lavapipe rasterizes only the 64x64 tiles the region touches, so a column or
+// row on the other side of a tile boundary (x0 or y0 a multiple of 64) is never visited, and a
+// triangle whose bounds miss the region itself is culled before the planes are made. As the draw
+// region includes the viewport rectangle, this covers scissors and viewports alike. The Vulkan
+// spec scissors whole fragments (a lavapipe deviation for the scissor; for a viewport the extra
+// samples are inside the clipped primitive, as the spec has it).
+struct MsaaRegionEdges {
+  static constexpr int kLavapipeTileSize = 64;
+  static constexpr unsigned kRightHalfSamples = 0b1010;   // x offsets 0.875 and 0.625
+  static constexpr unsigned kBottomHalfSamples = 0b1100;  // y offsets 0.625 and 0.875
+
+  PixelRect drawRegion{0, 0, -1, -1};  // the region itself: a triangle missing it is culled
+  PixelRect rasterRegion{0, 0, -1, -1};  // the region with the partial column and row
+  int partialColumn = INT_MIN, partialRow = INT_MIN;
+
+  // The samples (bit s: sample s) of pixel (px, py) the planes let through.
+  unsigned allowedSamples(int px, int py) const {
+    unsigned allowed = 0xfu;
+    if (px == partialColumn) allowed &= kRightHalfSamples;
+    if (py == partialRow) allowed &= kBottomHalfSamples;
+    return allowed;
+  }
+};
+
+inline MsaaRegionEdges msaaRegionEdges(const PixelRect& region) {
+  MsaaRegionEdges e;
+  e.drawRegion = e.rasterRegion = region;
+  if (region.empty()) return e;
+  if (region.x0 % MsaaRegionEdges::kLavapipeTileSize != 0) e.partialColumn = --e.rasterRegion.x0;
+  if (region.y0 % MsaaRegionEdges::kLavapipeTileSize != 0) e.partialRow = --e.rasterRegion.y0;
+  return e;
 }
 
 }  // namespace softraster::detail
