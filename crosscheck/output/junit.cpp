@@ -44,6 +44,9 @@ std::string systemOut(const SceneResult& r) {
     out += "depth_pixels_over: " + std::to_string(c.depthPixelsOver) + " (max " + std::to_string(t.maxDepthPixelsOver) + ")\n";
     out += "time_ms: soft " + number("%.3f", r.softMilliseconds) + ", vulkan " + number("%.3f", r.vulkanMilliseconds) +
            ", scene " + number("%.3f", r.milliseconds) + "\n";
+    out += "step_ms: load " + number("%.3f", r.timings.load) + ", softraster " + number("%.3f", r.timings.soft) +
+           ", vulkan " + number("%.3f", r.timings.vulkan) + ", compare " + number("%.3f", r.timings.compare) + ", images " +
+           number("%.3f", r.timings.images) + "\n";
   }
   for (const SceneImage& image : r.images) out += "image " + image.kind + ": " + (r.imageRoot / image.file).string() + "\n";
   return out;

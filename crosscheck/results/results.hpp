@@ -31,6 +31,14 @@ struct SceneImage {
   std::filesystem::path file;   // relative to SceneResult::imageRoot
 };
 
+// Where a scene's wall time went, in milliseconds, as the runner measured it: loading the scene
+// (and its OBJs), each renderer's whole call (softraster: framebuffer, vertices, draws, resolve;
+// Vulkan: prepare, submit, read-back), comparing the frames and writing its images and pixel
+// data. SceneResult::milliseconds is these plus what surrounds them.
+struct SceneTimings {
+  double load = 0, soft = 0, vulkan = 0, compare = 0, images = 0;
+};
+
 struct SceneResult {
   SceneEntry entry;
   Outcome outcome = Outcome::Crash;
@@ -47,6 +55,7 @@ struct SceneResult {
   std::optional<Comparison> comparison;     // the metrics, known once both renderers produced a frame
   double softMilliseconds = 0, vulkanMilliseconds = 0;  // each renderer's timed span (render/render.hpp)
   double milliseconds = 0;                  // the whole scene: load, render, compare, write
+  SceneTimings timings;                     // the steps of `milliseconds`
 
   std::filesystem::path imageRoot;          // where images were written (empty: none)
   std::vector<SceneImage> images;

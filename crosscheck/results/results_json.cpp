@@ -167,6 +167,15 @@ SceneResult readSceneResult(const json& j, const std::string& place) {
   r.softMilliseconds = readNumber(at("soft_milliseconds"), where("soft_milliseconds"));
   r.vulkanMilliseconds = readNumber(at("vulkan_milliseconds"), where("vulkan_milliseconds"));
   r.milliseconds = readNumber(at("milliseconds"), where("milliseconds"));
+  {
+    const std::string p = where("step_milliseconds");
+    const json& t = at("step_milliseconds");
+    r.timings.load = readNumber(field(t, p, "load"), p + "/load");
+    r.timings.soft = readNumber(field(t, p, "soft"), p + "/soft");
+    r.timings.vulkan = readNumber(field(t, p, "vulkan"), p + "/vulkan");
+    r.timings.compare = readNumber(field(t, p, "compare"), p + "/compare");
+    r.timings.images = readNumber(field(t, p, "images"), p + "/images");
+  }
   r.imageRoot = readString(at("image_root"), where("image_root"));
   const json& images = at("images");
   if (!images.is_array()) bad(where("images"), "expected an array");
@@ -215,6 +224,11 @@ json sceneResultToJson(const SceneResult& r) {
   j["soft_milliseconds"] = number(r.softMilliseconds);
   j["vulkan_milliseconds"] = number(r.vulkanMilliseconds);
   j["milliseconds"] = number(r.milliseconds);
+  j["step_milliseconds"] = {{"load", number(r.timings.load)},
+                            {"soft", number(r.timings.soft)},
+                            {"vulkan", number(r.timings.vulkan)},
+                            {"compare", number(r.timings.compare)},
+                            {"images", number(r.timings.images)}};
   j["image_root"] = r.imageRoot.string();
   json images = json::array();
   for (const SceneImage& image : r.images) images.push_back({{"kind", image.kind}, {"file", image.file.string()}});

@@ -212,6 +212,13 @@ case $case_name in
       sort "$artifacts/union.txt" | diff - "$artifacts/all.txt" || fail "the union of $n shards is not the whole suite"
     done
     ;;
+  slowest_steps)
+    # The slowest scenes say where their time went.
+    run conformance "$fixtures/flat_triangle.json" "$fixtures/malformed.json" -o "$artifacts/images"
+    expect_status 1
+    expect_out '^  flat_triangle +[0-9.]+ ms: load [0-9.]+, softraster [0-9.]+ \(draw [0-9.]+\), vulkan [0-9.]+ \(submit [0-9.]+\), compare [0-9.]+, images [0-9.]+$'
+    expect_out '^  malformed +[0-9.]+ ms: load [0-9.]+, softraster 0.00, vulkan 0.00, compare 0.00, images 0.00$'
+    ;;
   junit)
     # Well-formed JUnit with the right counts; Fail/UnexpectedPass as <failure>, Crash as <error>,
     # Skip and ExpectedFail as <skipped>, metrics and image paths in <system-out>.

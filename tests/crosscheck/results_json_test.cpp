@@ -44,6 +44,7 @@ SceneResult everyFieldSet() {
   r.softMilliseconds = 1.25;
   r.vulkanMilliseconds = 2.5e-3;
   r.milliseconds = 123.456789012345;
+  r.timings = {0.5, 1.5, 2.5, 0.125, 99.75};
   r.imageRoot = "out/images";
   r.images = {{"soft", "room/soft.png"}, {"diff", "room/diff.png"}};
   r.pixelData = "room/pixels.js";
@@ -90,6 +91,11 @@ void expectSame(const SceneResult& a, const SceneResult& b) {
   EXPECT_TRUE(same(a.softMilliseconds, b.softMilliseconds));
   EXPECT_TRUE(same(a.vulkanMilliseconds, b.vulkanMilliseconds));
   EXPECT_TRUE(same(a.milliseconds, b.milliseconds));
+  EXPECT_TRUE(same(a.timings.load, b.timings.load));
+  EXPECT_TRUE(same(a.timings.soft, b.timings.soft));
+  EXPECT_TRUE(same(a.timings.vulkan, b.timings.vulkan));
+  EXPECT_TRUE(same(a.timings.compare, b.timings.compare));
+  EXPECT_TRUE(same(a.timings.images, b.timings.images));
   EXPECT_EQ(a.imageRoot, b.imageRoot);
   ASSERT_EQ(a.images.size(), b.images.size());
   for (std::size_t i = 0; i < a.images.size(); ++i) {
