@@ -6,7 +6,8 @@
 // are written while the frames still exist (output/artifacts.hpp, output/report/) and only their
 // paths are kept here.
 // Deliberately data only: no frames, no scenes, no formatting (output/ does that), so a record
-// can later be written as results.json, read back and merged across shards.
+// can be written as results.json (results_file.hpp), read back and merged across shards
+// (merge.hpp).
 #pragma once
 
 #include "compare/metrics.hpp"
@@ -65,8 +66,13 @@ struct SceneResult {
 
 struct RunResults {
   std::vector<SceneResult> scenes;          // in suite order
-  std::string suiteName = "crosscheck.conformance";  // JUnit's name for the run (a shard adds ".shardIofN")
-  std::string commandLine;                  // how the run was started, for the report
+  std::vector<SceneEntry> suite;            // the whole suite the run was a shard of (empty: not known)
+  Shard shard;                              // which slice of `suite` `scenes` are (1/1: all of it)
+  std::string suiteName = "crosscheck.conformance";  // JUnit's name for the run, the same for every shard
+  // The run's options that change a render, as `crosscheck compare` takes them ("--softraster-fma
+  // separate --set camera.yaw=90"), for the report's reproduce commands; shards must agree on them.
+  std::string renderArguments;
+  std::string commandLine;                  // how this run was started (shown in the report; not in results.json)
   std::filesystem::path junitFile;          // the JUnit file the run wrote (empty: none)
   double seconds = 0;                       // wall time of the whole run
   unsigned jobs = 1;

@@ -245,8 +245,13 @@ softraster::Result<SceneResult> sceneResultFromJson(const json& value) {
 json runResultsToJson(const RunResults& run) {
   json scenes = json::array();
   for (const SceneResult& r : run.scenes) scenes.push_back(sceneResultToJson(r));
-  return {{"suite_name", run.suiteName},
-          {"command_line", run.commandLine},
+  json suite = json::array();
+  for (const SceneEntry& entry : run.suite) suite.push_back({{"name", entry.name}, {"path", entry.path.string()}});
+  return {{"format", kResultsFormat},
+          {"suite_name", run.suiteName},
+          {"suite", suite},
+          {"shard", {{"index", run.shard.index}, {"count", run.shard.count}}},
+          {"render_arguments", run.renderArguments},
           {"junit_file", run.junitFile.generic_string()},
           {"seconds", number(run.seconds)},
           {"jobs", run.jobs},
@@ -257,8 +262,26 @@ json runResultsToJson(const RunResults& run) {
 softraster::Result<RunResults> runResultsFromJson(const json& value) {
   return guarded<RunResults>([&] {
     RunResults run;
+    const int format = readInteger<int>(field(value, "", "format"), "/format");
+    if (format != kResultsFormat) {
+      bad("/format", "version " + std::to_string(format) + ", but this crosscheck reads version " +
+                         std::to_string(kResultsFormat));
+    }
     run.suiteName = readString(field(value, "", "suite_name"), "/suite_name");
-    run.commandLine = readString(field(value, "", "command_line"), "/command_line");
+    const json& suite = field(value, "", "suite");
+    if (!suite.is_array()) bad("/suite", "expected an array");
+    for (std::size_t i = 0; i < suite.size(); ++i) {
+      const std::string p = "/suite/" + std::to_string(i);
+      run.suite.push_back(
+          {readString(field(suite[i], p, "name"), p + "/name"), readString(field(suite[i], p, "path"), p + "/path")});
+    }
+    const json& shard = field(value, "", "shard");
+    run.shard.index = readInteger<std::size_t>(field(shard, "/shard", "index"), "/shard/index");
+    run.shard.count = readInteger<std::size_t>(field(shard, "/shard", "count"), "/shard/count");
+    if (run.shard.count == 0 || run.shard.index == 0 || run.shard.index > run.shard.count) {
+      bad("/shard", "expected 1 <= index <= count");
+    }
+    run.renderArguments = readString(field(value, "", "render_arguments"), "/render_arguments");
     run.junitFile = readString(field(value, "", "junit_file"), "/junit_file");
     run.seconds = readNumber(field(value, "", "seconds"), "/seconds");
     run.jobs = readInteger<unsigned>(field(value, "", "jobs"), "/jobs");

@@ -212,6 +212,31 @@ case $case_name in
       sort "$artifacts/union.txt" | diff - "$artifacts/all.txt" || fail "the union of $n shards is not the whole suite"
     done
     ;;
+  results_json)
+    # conformance -o DIR and report -o DIR write DIR/results.json: every scene, paths relative to DIR.
+    run conformance "$fixtures" tests/data/bad_enum.json --softraster-fma "$other_fma" \
+      --expectations "$expectations/unknown_scene.txt" --junit "$artifacts/run.xml" --out "$artifacts/images"
+    expect_status 1
+    expect_out "^results: $artifacts/images/results.json$"
+    file=$artifacts/images/results.json
+    [ -s "$file" ] || fail "no results.json"
+    grep -qx ' "format": 1,' "$file" || fail "no format version"
+    grep -qx ' "junit_file": "../run.xml",' "$file" || fail "the JUnit path is not relative to the folder"
+    [ "$(grep -c '"image_root": "."' "$file")" = 1 ] || fail "not one scene (depth_slope) with images in this folder"
+    [ "$(grep -c '"step_milliseconds": {' "$file")" = 5 ] || fail "not five scenes with their step timings"
+    [ "$(grep -c '"outcome": "Crash"' "$file")" = 3 ] || fail "not three crashes"
+    grep -q '"outcome": "Skip"' "$file" || fail "no skipped scene"
+    grep -q '"file": "depth_slope/diff.png"' "$file" || fail "image paths are not relative to the image root"
+    grep -q '"error": "tests/data/bad_enum.json: ' "$file" || fail "no error line"
+    run report "$fixtures/flat_triangle.json" -o "$artifacts/report"
+    expect_status 0
+    grep -q '"file": "flat_triangle/preview.png"' "$artifacts/report/results.json" || fail "report wrote no results.json"
+    # A results.json that cannot be written is an error naming it, exit 2.
+    mkdir -p "$artifacts/blocked/results.json"
+    run conformance "$fixtures/flat_triangle.json" -o "$artifacts/blocked"
+    expect_status 2
+    expect_err "^crosscheck: $artifacts/blocked/results.json: cannot write results file: "
+    ;;
   slowest_steps)
     # The slowest scenes say where their time went.
     run conformance "$fixtures/flat_triangle.json" "$fixtures/malformed.json" -o "$artifacts/images"

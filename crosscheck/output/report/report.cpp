@@ -194,17 +194,7 @@ std::string expectationsLines(const RunResults& run) {
 // The command that reproduces one scene: compare with the run's options that change a render.
 std::string reproduceCommand(const RunResults& run, const SceneResult& r) {
   std::string command = "crosscheck compare " + r.entry.path.generic_string();
-  std::istringstream words(run.commandLine);
-  std::vector<std::string> tokens{std::istream_iterator<std::string>(words), std::istream_iterator<std::string>()};
-  for (std::size_t i = 0; i < tokens.size(); ++i) {
-    const std::string& t = tokens[i];
-    if (t == "--validation") command += " " + t;
-    const bool takesValue = t == "--softraster-fma" || t == "--device" || t == "--set";
-    if (takesValue && i + 1 < tokens.size()) command += " " + t + " " + tokens[++i];
-    for (const char* option : {"--softraster-fma=", "--device=", "--set="}) {
-      if (t.rfind(option, 0) == 0) command += " " + t;
-    }
-  }
+  if (!run.renderArguments.empty()) command += " " + run.renderArguments;
   return command + " --out out/" + r.entry.name;
 }
 
@@ -358,6 +348,26 @@ std::string sceneSection(const RunResults& run, const SceneResult& r, std::size_
 }
 
 }  // namespace
+
+std::string renderArgumentsOf(const std::string& commandLine) {
+  std::string arguments;
+  const auto add = [&](const std::string& text) { arguments += (arguments.empty() ? "" : " ") + text; };
+  std::istringstream words(commandLine);
+  std::vector<std::string> tokens{std::istream_iterator<std::string>(words), std::istream_iterator<std::string>()};
+  for (std::size_t i = 0; i < tokens.size(); ++i) {
+    const std::string& t = tokens[i];
+    if (t == "--validation") add(t);
+    const bool takesValue = t == "--softraster-fma" || t == "--device" || t == "--set";
+    if (takesValue && i + 1 < tokens.size()) {
+      add(t + " " + tokens[i + 1]);
+      ++i;
+    }
+    for (const char* option : {"--softraster-fma=", "--device=", "--set="}) {
+      if (t.rfind(option, 0) == 0) add(t);
+    }
+  }
+  return arguments;
+}
 
 std::string pixelDataScript(const std::string& sceneName, const Frame& soft, const Frame& vulkan) {
   using nlohmann::json;

@@ -42,6 +42,10 @@ softraster::Status writePixelData(const std::filesystem::path& root, const std::
 // (lowest first) and name.
 std::vector<std::size_t> worstFirst(const std::vector<SceneResult>& results);
 
+// The arguments of a suite command line that change a render, as `crosscheck compare` takes them
+// (--softraster-fma, --device, --set, --validation; RunResults::renderArguments), in their order.
+std::string renderArgumentsOf(const std::string& commandLine);
+
 // The header shows the counts, the run's time and jobs, when it finished (UTC), its command line
 // and the JUnit file; then every unexpected result with thumbnails and the expectations lines
 // that would accept them, the filters, and the summary table. Links to scene files and the JUnit
