@@ -170,7 +170,6 @@ int runSuite(const SuiteCommand& command, const SuiteOutputs& outputs) {
   run.jobs = command.jobs;
   run.commandLine = command.commandLine;
   run.junitFile = command.junitFile;
-  if (shard.count > 1) run.suiteName += ".shard" + std::to_string(shard.index) + "of" + std::to_string(shard.count);
   run.suite = *suite;
   run.shard = shard;
   run.renderArguments = renderArgumentsOf(command.commandLine);

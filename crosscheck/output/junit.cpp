@@ -69,6 +69,11 @@ std::string junitXml(const RunResults& run) {
   xml += "  <testsuite name=\"" + suite + "\"" + totals;
   if (run.finished != 0) xml += " timestamp=\"" + escapeMarkup(utcTime(run.finished, "%Y-%m-%dT%H:%M:%S")) + "\"";
   xml += ">\n";
+  // The shard is a property, never part of a name: a scene's identity is the same in every shard.
+  if (run.shard.count > 1) {
+    xml += "    <properties>\n      <property name=\"shard\" value=\"" + std::to_string(run.shard.index) + "/" +
+           std::to_string(run.shard.count) + "\"/>\n    </properties>\n";
+  }
   for (const SceneResult& r : results) {
     xml += "    <testcase classname=\"" + suite + "\" name=\"" + escapeMarkup(r.entry.name) + "\" file=\"" +
            escapeMarkup(r.entry.path.string()) + "\" time=\"" + seconds(r.milliseconds / 1000.0) + "\">\n";

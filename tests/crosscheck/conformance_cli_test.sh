@@ -211,6 +211,14 @@ case $case_name in
       [ -z "$(sort "$artifacts/union.txt" | uniq -d)" ] || fail "with $n shards a scene ran twice: $(sort "$artifacts/union.txt" | uniq -d)"
       sort "$artifacts/union.txt" | diff - "$artifacts/all.txt" || fail "the union of $n shards is not the whole suite"
     done
+    # Test identity does not depend on the shard: one suite name and classname everywhere, the
+    # shard a property.
+    for xml in "$artifacts"/shard*-of-3.xml "$artifacts/all.xml"; do
+      [ "$(xmllint --xpath 'string(/testsuites/testsuite/@name)' "$xml")" = crosscheck.conformance ] || fail "$xml: suite name"
+      [ "$(xpath_number "$xml" 'count(//testcase[@classname!="crosscheck.conformance"])')" = 0 ] || fail "$xml: a classname differs"
+    done
+    [ "$(xmllint --xpath 'string(//property[@name="shard"]/@value)' "$artifacts/shard2-of-3.xml")" = 2/3 ] || fail "no shard property"
+    [ "$(xpath_number "$artifacts/all.xml" 'count(//property)')" = 0 ] || fail "an unsharded run has a shard property"
     ;;
   results_json)
     # conformance -o DIR and report -o DIR write DIR/results.json: every scene, paths relative to DIR.
