@@ -6,6 +6,7 @@
 //                          [--timeout SECONDS] [--memory-limit MB]
 //   crosscheck report [SCENE|DIR ...] -o DIR [--expectations FILE] [--jobs N] [--shard I/N] [--junit FILE]
 //                     [--timeout SECONDS] [--memory-limit MB]
+//   crosscheck merge RESULTS.json|DIR ... -o DIR [--junit FILE]
 //   crosscheck bench [SCENE|DIR ...] [--frames N] [--warmup N] [--threads N] [-o FILE.json]
 // render and compare also take --method exact|exact-scalar and --threads N (softraster's).
 // Exit status (README, "Exit status"): 0 success / within tolerance / nothing unexpected; 1
@@ -63,6 +64,7 @@ constexpr const char* kUsage =
     "[-o DIR] [--timeout SECONDS] [--memory-limit MB]\n"
     "       crosscheck report [SCENE|DIR ...] -o DIR [--expectations FILE] [--jobs N] [--shard I/N] [--junit FILE] "
     "[--timeout SECONDS] [--memory-limit MB]\n"
+    "       crosscheck merge RESULTS.json|DIR ... -o DIR [--junit FILE]\n"
     "       crosscheck bench [SCENE|DIR ...] [--frames N] [--warmup N] [--threads N] [-o FILE.json]\n"
     "       (crosscheck SUBCOMMAND --help for every option)";
 
@@ -185,6 +187,16 @@ int main(int argc, char** argv) {
   addSuite(reportCommand);
   reportCommand->add_option("-o,--output", reportDir, "Report directory")->required();
 
+  crosscheck::cli::MergeCommand merge;
+  CLI::App* mergeCommand = app.add_subcommand(
+      "merge", "Merge the results.json of N shards (--shard I/N) into one report, JUnit file and results.json");
+  mergeCommand->add_option("RESULTS", merge.inputs, "Each shard's results.json, or the output directory holding it")
+      ->required();
+  mergeCommand->add_option("-o,--output", merge.outDir,
+                           "Directory for index.html, results.json, junit.xml and every scene's images (copied)")
+      ->required();
+  mergeCommand->add_option("--junit", merge.junitFile, "Write the JUnit XML here instead of DIR/junit.xml");
+
   crosscheck::cli::BenchCommand bench;
   std::string framesText = "15", warmupText = "3", benchThreadsText = "0";
   CLI::App* benchCommand = app.add_subcommand(
@@ -205,7 +217,8 @@ int main(int argc, char** argv) {
     bool known = false;
     for (const CLI::App* sub : app.get_subcommands({})) known = known || sub->get_name() == name;
     if (!known) {
-      std::fprintf(stderr, "crosscheck: unknown subcommand '%s' (expected render, compare, conformance, report or bench)\n%s\n",
+      std::fprintf(stderr, "crosscheck: unknown subcommand '%s' (expected render, compare, conformance, report, merge or "
+                   "bench)\n%s\n",
                    name.c_str(), kUsage);
       return 2;
     }
@@ -242,6 +255,10 @@ int main(int argc, char** argv) {
     return crosscheck::cli::renderCommand({common.sceneOptions(scenePath), renderer, output, depthOutput, depthRange});
   }
   if (compare->parsed()) return crosscheck::cli::compareCommand({common.sceneOptions(scenePath), outDir, json});
+  if (mergeCommand->parsed()) {
+    for (int i = 0; i < argc; ++i) merge.commandLine += (i ? " " : "") + std::string(argv[i]);
+    return crosscheck::cli::mergeCommand(merge);
+  }
   const auto timeout = seconds("--timeout", timeoutText, kMaxTimeoutSeconds);
   if (!timeout) return 2;
   const auto memoryLimit = wholeNumber("--memory-limit", memoryLimitText, 0, kMaxMemoryLimitMegabytes);
