@@ -4,8 +4,8 @@
 //   crosscheck compare SCENE [-o DIR] [--json]
 //   crosscheck conformance [SCENE|DIR ...] [--expectations FILE] [--jobs N] [--shard I/N] [--junit FILE] [-o DIR]
 //                          [--timeout SECONDS] [--memory-limit MB]
-//   crosscheck report [SCENE|DIR ...] -o DIR [--expectations FILE] [--jobs N] [--shard I/N] [--junit FILE]
-//                     [--timeout SECONDS] [--memory-limit MB]
+//   crosscheck report [SCENE|DIR ...] -o DIR [--baseline DIR] [--expectations FILE] [--jobs N] [--shard I/N]
+//                     [--junit FILE] [--timeout SECONDS] [--memory-limit MB]
 //   crosscheck merge RESULTS.json|DIR ... -o DIR [--junit FILE]
 //   crosscheck bench [SCENE|DIR ...] [--frames N] [--warmup N] [--threads N] [-o FILE.json]
 // render and compare also take --method exact|exact-scalar and --threads N (softraster's).
@@ -62,8 +62,8 @@ constexpr const char* kUsage =
     "       crosscheck compare SCENE [-o DIR] [--json]\n"
     "       crosscheck conformance [SCENE|DIR ...] [--expectations FILE] [--jobs N] [--shard I/N] [--junit FILE] "
     "[-o DIR] [--timeout SECONDS] [--memory-limit MB]\n"
-    "       crosscheck report [SCENE|DIR ...] -o DIR [--expectations FILE] [--jobs N] [--shard I/N] [--junit FILE] "
-    "[--timeout SECONDS] [--memory-limit MB]\n"
+    "       crosscheck report [SCENE|DIR ...] -o DIR [--baseline DIR] [--expectations FILE] [--jobs N] [--shard I/N] "
+    "[--junit FILE] [--timeout SECONDS] [--memory-limit MB]\n"
     "       crosscheck merge RESULTS.json|DIR ... -o DIR [--junit FILE]\n"
     "       crosscheck bench [SCENE|DIR ...] [--frames N] [--warmup N] [--threads N] [-o FILE.json]\n"
     "       (crosscheck SUBCOMMAND --help for every option)";
@@ -159,7 +159,7 @@ int main(int argc, char** argv) {
   addCommon(compare);
 
   crosscheck::cli::SuiteCommand suite;
-  std::string reportDir;
+  std::string reportDir, baselineDir;
   int jobs = 1;
   std::string timeoutText = "0", memoryLimitText = std::to_string(crosscheck::kDefaultMemoryLimitMegabytes);
   const auto addSuite = [&](CLI::App* cmd) {
@@ -186,6 +186,9 @@ int main(int argc, char** argv) {
       app.add_subcommand("report", "Run the suite like conformance and write an HTML report to DIR/index.html");
   addSuite(reportCommand);
   reportCommand->add_option("-o,--output", reportDir, "Report directory")->required();
+  reportCommand->add_option("--baseline", baselineDir,
+                            "An earlier run's output directory (or its results.json): mark new failures, fixed scenes "
+                            "and changed metrics against it");
 
   crosscheck::cli::MergeCommand merge;
   CLI::App* mergeCommand = app.add_subcommand(
@@ -269,6 +272,6 @@ int main(int argc, char** argv) {
   suite.device = common.deviceOptions();
   suite.softraster = common.softraster();
   for (int i = 0; i < argc; ++i) suite.commandLine += (i ? " " : "") + std::string(argv[i]);
-  if (reportCommand->parsed()) return crosscheck::cli::reportCommand(suite, reportDir);
+  if (reportCommand->parsed()) return crosscheck::cli::reportCommand(suite, reportDir, baselineDir);
   return crosscheck::cli::conformanceCommand(suite, outDir);
 }

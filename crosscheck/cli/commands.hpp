@@ -72,8 +72,9 @@ struct SuiteCommand {
 };
 // outDir: conformance --out, per-scene PNGs and results.json; empty: none.
 int conformanceCommand(const SuiteCommand& command, const std::string& outDir);
-// reportDir: report -o, index.html with its PNGs, pixel data and results.json.
-int reportCommand(const SuiteCommand& command, const std::string& reportDir);
+// reportDir: report -o, index.html with its PNGs, pixel data and results.json; baselineDir:
+// --baseline, an earlier run's folder (or its results.json) to mark changes against; empty: none.
+int reportCommand(const SuiteCommand& command, const std::string& reportDir, const std::string& baselineDir = "");
 
 struct MergeCommand {
   std::vector<std::string> inputs;      // results.json files, or the folders that hold them

@@ -1,9 +1,10 @@
 // Shards and their merge: results.json on disk (paths relative to its folder, the format version
 // checked), mergeShards' checks (missing, duplicated, another suite, other rendering options) and
-// order, JUnit identity whatever the shard, and the real command line:
+// order, a run against a baseline, JUnit identity whatever the shard, and the real command line:
 // `report --shard I/3` three times then `merge` gives results.json byte for byte and JUnit equal
 // to an unsharded run's but for timings. The merge command's error lines: conformance_cli_test.sh.
 #include "output/junit.hpp"
+#include "results/baseline.hpp"
 #include "results/merge.hpp"
 #include "results/results_file.hpp"
 #include "results/results_json.hpp"
@@ -110,6 +111,40 @@ TEST(JUnit, TestIdentityDoesNotDependOnTheShard) {
   ASSERT_TRUE(std::regex_search(part, inPart, testcase));
   EXPECT_EQ(inAll.str(), inPart.str());
   EXPECT_NE(inAll.str().find("classname=\"crosscheck.conformance\""), std::string::npos) << inAll.str();
+}
+
+TEST(Baseline, MarksNewFailuresFixedScenesAndChangedMetrics) {
+  RunResults before, now;
+  const auto compared = [](Outcome outcome, std::uint64_t mismatches) {
+    SceneResult r = scene("x", outcome);
+    r.comparison = Comparison{};
+    r.comparison->coverageMismatches = mismatches;
+    return r;
+  };
+  before.scenes = {compared(Outcome::Pass, 0), scene("broke", Outcome::Pass), scene("mended", Outcome::Crash),
+                   scene("still", Outcome::Crash), scene("gone", Outcome::Pass)};
+  before.scenes[0].entry.name = "metrics";
+  now.scenes = {compared(Outcome::Fail, 12), scene("broke", Outcome::Crash), scene("mended", Outcome::Pass),
+                scene("still", Outcome::Crash), scene("added", Outcome::Fail)};
+  now.scenes[0].entry.name = "metrics";
+  const BaselineComparison v = compareWithBaseline(now, before);
+  ASSERT_EQ(v.scenes.size(), 5u);
+  EXPECT_TRUE(v.scenes[0].newFailure);
+  ASSERT_EQ(v.scenes[0].changes.size(), 1u);
+  EXPECT_EQ(v.scenes[0].changes[0].metric, "coverage mismatches");
+  EXPECT_EQ(v.scenes[0].changes[0].before, 0);
+  EXPECT_EQ(v.scenes[0].changes[0].after, 12);
+  EXPECT_TRUE(v.scenes[1].newFailure);
+  EXPECT_EQ(v.scenes[1].before, Outcome::Pass);
+  EXPECT_TRUE(v.scenes[2].fixed);
+  EXPECT_FALSE(v.scenes[3].newFailure || v.scenes[3].fixed) << "failing in both is neither";
+  EXPECT_FALSE(v.scenes[4].inBaseline);
+  EXPECT_TRUE(v.scenes[4].newFailure);
+  EXPECT_EQ(v.newFailures, 3u);
+  EXPECT_EQ(v.fixed, 1u);
+  EXPECT_EQ(v.changed, 1u);
+  EXPECT_EQ(v.added, 1u);
+  EXPECT_EQ(v.gone, std::vector<std::string>{"gone"});
 }
 
 TEST(ResultsFile, PathsAreRelativeToItsFolderAndTheFormatIsChecked) {
