@@ -4,8 +4,9 @@
 //   crosscheck compare SCENE [-o DIR] [--json]
 //   crosscheck conformance [SCENE|DIR ...] [--expectations FILE] [--jobs N] [--shard I/N] [--junit FILE] [-o DIR]
 //                          [--timeout SECONDS] [--memory-limit MB] [--set KEY.PATH=VALUE ...]
-//   crosscheck report [SCENE|DIR ...] -o DIR [--expectations FILE] [--jobs N] [--shard I/N] [--junit FILE]
-//                     [--timeout SECONDS] [--memory-limit MB] [--set KEY.PATH=VALUE ...]
+//   crosscheck report [SCENE|DIR ...] -o DIR [--baseline DIR] [--expectations FILE] [--jobs N] [--shard I/N]
+//                     [--junit FILE] [--timeout SECONDS] [--memory-limit MB] [--set KEY.PATH=VALUE ...]
+//   crosscheck merge RESULTS.json|DIR ... -o DIR [--junit FILE]
 //   crosscheck bench [SCENE|DIR ...] [--frames N] [--warmup N] [--threads N] [-o FILE.json]
 // render and compare also take --method exact|exact-scalar and --threads N (softraster's).
 // Exit status (README, "Exit status"): 0 success / within tolerance / nothing unexpected; 1
@@ -61,8 +62,9 @@ constexpr const char* kUsage =
     "       crosscheck compare SCENE [-o DIR] [--json]\n"
     "       crosscheck conformance [SCENE|DIR ...] [--expectations FILE] [--jobs N] [--shard I/N] [--junit FILE] "
     "[-o DIR] [--timeout SECONDS] [--memory-limit MB] [--set KEY.PATH=VALUE ...]\n"
-    "       crosscheck report [SCENE|DIR ...] -o DIR [--expectations FILE] [--jobs N] [--shard I/N] [--junit FILE] "
-    "[--timeout SECONDS] [--memory-limit MB] [--set KEY.PATH=VALUE ...]\n"
+    "       crosscheck report [SCENE|DIR ...] -o DIR [--baseline DIR] [--expectations FILE] [--jobs N] [--shard I/N] "
+    "[--junit FILE] [--timeout SECONDS] [--memory-limit MB] [--set KEY.PATH=VALUE ...]\n"
+    "       crosscheck merge RESULTS.json|DIR ... -o DIR [--junit FILE]\n"
     "       crosscheck bench [SCENE|DIR ...] [--frames N] [--warmup N] [--threads N] [-o FILE.json]\n"
     "       (crosscheck SUBCOMMAND --help for every option)";
 
@@ -157,7 +159,7 @@ int main(int argc, char** argv) {
   addCommon(compare);
 
   crosscheck::cli::SuiteCommand suite;
-  std::string reportDir;
+  std::string reportDir, baselineDir;
   int jobs = 1;
   std::string timeoutText = "0", memoryLimitText = std::to_string(crosscheck::kDefaultMemoryLimitMegabytes);
   const auto addSuite = [&](CLI::App* cmd) {
@@ -185,6 +187,19 @@ int main(int argc, char** argv) {
       app.add_subcommand("report", "Run the suite like conformance and write an HTML report to DIR/index.html");
   addSuite(reportCommand);
   reportCommand->add_option("-o,--output", reportDir, "Report directory")->required();
+  reportCommand->add_option("--baseline", baselineDir,
+                            "An earlier run's output directory (or its results.json): mark new failures, fixed scenes "
+                            "and changed metrics against it");
+
+  crosscheck::cli::MergeCommand merge;
+  CLI::App* mergeCommand = app.add_subcommand(
+      "merge", "Merge the results.json of N shards (--shard I/N) into one report, JUnit file and results.json");
+  mergeCommand->add_option("RESULTS", merge.inputs, "Each shard's results.json, or the output directory holding it")
+      ->required();
+  mergeCommand->add_option("-o,--output", merge.outDir,
+                           "Directory for index.html, results.json, junit.xml and every scene's images (copied)")
+      ->required();
+  mergeCommand->add_option("--junit", merge.junitFile, "Write the JUnit XML here instead of DIR/junit.xml");
 
   crosscheck::cli::BenchCommand bench;
   std::string framesText = "15", warmupText = "3", benchThreadsText = "0";
@@ -206,7 +221,8 @@ int main(int argc, char** argv) {
     bool known = false;
     for (const CLI::App* sub : app.get_subcommands({})) known = known || sub->get_name() == name;
     if (!known) {
-      std::fprintf(stderr, "crosscheck: unknown subcommand '%s' (expected render, compare, conformance, report or bench)\n%s\n",
+      std::fprintf(stderr, "crosscheck: unknown subcommand '%s' (expected render, compare, conformance, report, merge or "
+                   "bench)\n%s\n",
                    name.c_str(), kUsage);
       return 2;
     }
@@ -243,6 +259,10 @@ int main(int argc, char** argv) {
     return crosscheck::cli::renderCommand({common.sceneOptions(scenePath), renderer, output, depthOutput, depthRange});
   }
   if (compare->parsed()) return crosscheck::cli::compareCommand({common.sceneOptions(scenePath), outDir, json});
+  if (mergeCommand->parsed()) {
+    for (int i = 0; i < argc; ++i) merge.commandLine += (i ? " " : "") + std::string(argv[i]);
+    return crosscheck::cli::mergeCommand(merge);
+  }
   const auto timeout = seconds("--timeout", timeoutText, kMaxTimeoutSeconds);
   if (!timeout) return 2;
   const auto memoryLimit = wholeNumber("--memory-limit", memoryLimitText, 0, kMaxMemoryLimitMegabytes);
@@ -253,6 +273,6 @@ int main(int argc, char** argv) {
   suite.device = common.deviceOptions();
   suite.softraster = common.softraster();
   for (int i = 0; i < argc; ++i) suite.commandLine += (i ? " " : "") + std::string(argv[i]);
-  if (reportCommand->parsed()) return crosscheck::cli::reportCommand(suite, reportDir);
+  if (reportCommand->parsed()) return crosscheck::cli::reportCommand(suite, reportDir, baselineDir);
   return crosscheck::cli::conformanceCommand(suite, outDir);
 }

@@ -5,10 +5,13 @@
 //   compare      one scene, both renderers, text or JSON        0 within tolerance, 1 outside or an error
 //   conformance  a suite of scenes, one line each, JUnit, PNGs  0 nothing unexpected, 1 something
 //   report       the conformance run plus DIR/index.html        as conformance
+//   merge        N shards' results.json into one report, JUnit  as conformance
+//                and results.json
 //   bench        frame times of every renderer, table and JSON  0 every method agrees with lavapipe,
 //                                                               1 a renderer failed or disagrees
 // 2 is bad usage everywhere (main.cpp's parse errors; the suite commands' unreadable
-// expectations, shards, folders or output paths).
+// expectations, shards, folders or output paths; merge's unreadable results or shards that do not
+// make up one suite).
 // Errors print as one line, "crosscheck: ..." on stderr.
 // Deliberately no argument parsing here (main.cpp does that with CLI11) and no rendering or
 // formatting of their own: each command strings together scene/, render/, compare/, run/ and
@@ -68,10 +71,19 @@ struct SuiteCommand {
   softraster::ContextOptions softraster;
   std::string commandLine;              // shown in the report
 };
-// outDir: conformance --out, per-scene PNGs; empty: none.
+// outDir: conformance --out, per-scene PNGs and results.json; empty: none.
 int conformanceCommand(const SuiteCommand& command, const std::string& outDir);
-// reportDir: report -o, index.html with its PNGs and pixel data.
-int reportCommand(const SuiteCommand& command, const std::string& reportDir);
+// reportDir: report -o, index.html with its PNGs, pixel data and results.json; baselineDir:
+// --baseline, an earlier run's folder (or its results.json) to mark changes against; empty: none.
+int reportCommand(const SuiteCommand& command, const std::string& reportDir, const std::string& baselineDir = "");
+
+struct MergeCommand {
+  std::vector<std::string> inputs;      // results.json files, or the folders that hold them
+  std::string outDir;                   // the merged report, results.json and (by default) junit.xml
+  std::string junitFile;                // empty: outDir/junit.xml
+  std::string commandLine;              // shown in the report
+};
+int mergeCommand(const MergeCommand& command);
 
 // The suite run both suite commands are (conformance.cpp; report.cpp adds the page): check the
 // arguments, run, print a line per scene in suite order (and a progress line when stderr is a

@@ -1,7 +1,7 @@
 // crosscheck conformance, and the suite run it shares with crosscheck report (see commands.hpp):
 // check the arguments, run the suite, print one line per scene (in suite order), a progress line
 // when stderr is a terminal, the summary and, last, "N passed, N failed[, N skipped]"; write
-// JUnit and the scenes' images. The scenes run in worker processes (run/conformance.hpp), which
+// JUnit, the scenes' images and DIR/results.json. The scenes run in worker processes (run/conformance.hpp), which
 // write the images; a worker that fails after its last scene is one line on stderr and exit 1.
 #include "cli/commands.hpp"
 
@@ -10,6 +10,7 @@
 #include "output/report/report.hpp"  // writePixelData
 #include "output/summary.hpp"
 #include "results/results.hpp"
+#include "results/results_file.hpp"
 #include "run/conformance.hpp"
 #include "run/expectations.hpp"
 #include "run/suite.hpp"
@@ -178,12 +179,20 @@ int runSuite(const SuiteCommand& command, const SuiteOutputs& outputs) {
   run.jobs = static_cast<unsigned>(jobs);
   run.commandLine = command.commandLine;
   run.junitFile = command.junitFile;
-  if (shard.count > 1) run.suiteName += ".shard" + std::to_string(shard.index) + "of" + std::to_string(shard.count);
+  run.suite = *suite;
+  run.shard = shard;
+  run.renderArguments = renderArgumentsOf(command.commandLine);
   const Counts counts = countResults(run.scenes);
 
   bool written = true;
   if (!command.junitFile.empty()) {
     if (const Status status = writeJUnit(command.junitFile, run); !status) {
+      std::fprintf(stderr, "crosscheck: %s\n", status.message().c_str());
+      written = false;
+    }
+  }
+  if (!outputs.imageDir.empty()) {
+    if (const Status status = writeResultsFile(outputs.imageDir, run); !status) {
       std::fprintf(stderr, "crosscheck: %s\n", status.message().c_str());
       written = false;
     }
@@ -199,6 +208,9 @@ int runSuite(const SuiteCommand& command, const SuiteOutputs& outputs) {
   const std::string summary = summaryText(run);
   if (!summary.empty()) std::printf("\n%s", summary.c_str());
   if (!command.junitFile.empty() && written) std::printf("JUnit: %s\n", command.junitFile.c_str());
+  if (!outputs.imageDir.empty() && written) {
+    std::printf("results: %s\n", (std::filesystem::path(outputs.imageDir) / kResultsFileName).string().c_str());
+  }
   if (!outputs.doneLine.empty() && (!outputs.write || written)) std::printf("%s\n", outputs.doneLine.c_str());
   std::printf("ran %zu scene%s in %.2f s with %u job%s\n", run.scenes.size(), run.scenes.size() == 1 ? "" : "s",
               run.seconds, run.jobs, run.jobs == 1 ? "" : "s");

@@ -7,6 +7,8 @@
 #include <algorithm>
 #include <cmath>
 #include <cstring>
+#include <system_error>
+#include <vector>
 
 namespace crosscheck {
 
@@ -90,6 +92,24 @@ softraster::Status writeCompareImages(const std::filesystem::path& dir, const Sc
 softraster::Status writeDepthView(const std::filesystem::path& path, const Frame& frame, float clearDepth, float lo,
                                   float hi) {
   return writePng(path, frame.width, frame.height, depthToGrey(frame.depth, clearDepth, lo, hi));
+}
+
+softraster::Status copySceneFiles(SceneResult* result, const std::filesystem::path& root) {
+  if (result->imageRoot.empty()) return {};
+  std::vector<std::filesystem::path> files;
+  for (const SceneImage& image : result->images) files.push_back(image.file);
+  if (!result->pixelData.empty()) files.push_back(result->pixelData);
+  for (const std::filesystem::path& file : files) {
+    const std::filesystem::path from = result->imageRoot / file, to = root / file;
+    std::error_code ec;
+    if (std::filesystem::equivalent(from, to, ec)) continue;  // already there (merging into a shard's folder)
+    ec.clear();
+    std::filesystem::create_directories(to.parent_path(), ec);
+    if (!ec) std::filesystem::copy_file(from, to, std::filesystem::copy_options::overwrite_existing, ec);
+    if (ec) return softraster::Status::error(from.string() + ": cannot copy to " + to.string() + ": " + ec.message());
+  }
+  result->imageRoot = root;
+  return {};
 }
 
 }  // namespace crosscheck

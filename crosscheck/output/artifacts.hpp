@@ -3,6 +3,7 @@
 // buffers mapped to grey over one shared range, so equal depths look equal) and depth.diff.png
 // (depthDiffHeatmap); the runner's scenes record what was written. Also the compare command's
 // five images and the render command's depth view.
+// Also copying a scene's files to another folder (merge).
 // Deliberately PNG only and nothing about how a page shows them (that is report/report.hpp).
 #pragma once
 
@@ -35,6 +36,12 @@ inline constexpr std::uint32_t kPreviewSize = 160;
 softraster::Status writeSceneImages(const std::filesystem::path& root, const std::filesystem::path& folder,
                                     SceneResult* result, const Scene& scene, const Frame& soft, const Frame& vulkan,
                                     SceneImageSet set = SceneImageSet::All);
+
+// Copies a scene's recorded files (its images and pixel data, from result->imageRoot) to the same
+// relative paths under `root` and makes `root` its image root (merge: one report folder over the
+// shards' folders). A file already there is replaced; a scene without files is left as it is.
+// The error is "FILE: cannot copy to DEST: reason".
+softraster::Status copySceneFiles(SceneResult* result, const std::filesystem::path& root);
 
 // The compare command's --out DIR: soft.png, vulkan.png, diff.png, and soft.depth.png and
 // vulkan.depth.png each over its own range (depthToGrey's default); no depth difference.

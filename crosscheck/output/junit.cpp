@@ -45,6 +45,9 @@ std::string systemOut(const SceneResult& r) {
     out += "depth_pixels_over: " + std::to_string(c.depthPixelsOver) + " (allowed " + std::to_string(t.maxDepthPixelsOver) + ")\n";
     out += "time_ms: soft " + number("%.3f", r.softMilliseconds) + ", vulkan " + number("%.3f", r.vulkanMilliseconds) +
            ", scene " + number("%.3f", r.milliseconds) + "\n";
+    out += "step_ms: load " + number("%.3f", r.timings.load) + ", softraster " + number("%.3f", r.timings.soft) +
+           ", vulkan " + number("%.3f", r.timings.vulkan) + ", compare " + number("%.3f", r.timings.compare) + ", images " +
+           number("%.3f", r.timings.images) + "\n";
   }
   for (const SceneImage& image : r.images) out += "image " + image.kind + ": " + (r.imageRoot / image.file).string() + "\n";
   return out;
@@ -67,6 +70,11 @@ std::string junitXml(const RunResults& run) {
   xml += "  <testsuite name=\"" + suite + "\"" + totals;
   if (run.finished != 0) xml += " timestamp=\"" + escapeMarkup(utcTime(run.finished, "%Y-%m-%dT%H:%M:%S")) + "\"";
   xml += ">\n";
+  // The shard is a property, never part of a name: a scene's identity is the same in every shard.
+  if (run.shard.count > 1) {
+    xml += "    <properties>\n      <property name=\"shard\" value=\"" + std::to_string(run.shard.index) + "/" +
+           std::to_string(run.shard.count) + "\"/>\n    </properties>\n";
+  }
   for (const SceneResult& r : results) {
     xml += "    <testcase classname=\"" + suite + "\" name=\"" + escapeMarkup(r.entry.name) + "\" file=\"" +
            escapeMarkup(r.entry.path.string()) + "\" time=\"" + seconds(r.milliseconds / 1000.0) + "\">\n";

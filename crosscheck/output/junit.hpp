@@ -3,6 +3,10 @@
 // every testcase's <system-out> holds its metrics, limits, timings and image paths. Times are in
 // seconds.
 // Reads a run's results (results.hpp) only: the suite name, time and timestamp are the run's.
+// Test identity does not depend on sharding: the testsuite name and every classname are the
+// suite's name and each testcase's name the scene's, whichever shard ran it (a shard is a
+// <property name="shard" value="I/N"> of the testsuite), so CI history survives a new shard count
+// and the JUnit of merged shards equals an unsharded run's but for times.
 // Deliberately no XML library: the writer builds text and escapes every value (markup.hpp).
 #pragma once
 

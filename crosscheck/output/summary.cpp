@@ -25,6 +25,19 @@ std::string timing(const SceneResult& r) {
   return format("soft %.2f ms", r.softMilliseconds) + format(", vulkan %.2f ms", r.vulkanMilliseconds);
 }
 
+// Where a scene's time went (SceneTimings), with each renderer's timed span beside its whole call;
+// empty when no step ran (a skipped scene, or one whose worker died or timed out).
+std::string steps(const SceneResult& r) {
+  const SceneTimings& t = r.timings;
+  if (t.load == 0 && t.soft == 0 && t.vulkan == 0 && t.compare == 0 && t.images == 0) return "";
+  const bool rendered = r.actual == Outcome::Pass || r.actual == Outcome::Fail;
+  std::string text = format(": load %.2f", t.load) + format(", softraster %.2f", t.soft);
+  if (rendered) text += format(" (draw %.2f)", r.softMilliseconds);
+  text += format(", vulkan %.2f", t.vulkan);
+  if (rendered) text += format(" (submit %.2f)", r.vulkanMilliseconds);
+  return text + format(", compare %.2f", t.compare) + format(", images %.2f", t.images);
+}
+
 // One Comparison::failures entry with the metric that drove it next to its threshold.
 std::string explainFailure(const std::string& failure, const SceneResult& r) {
   if (!r.comparison) return failure;
@@ -111,9 +124,7 @@ std::string summaryText(const RunResults& run, std::size_t slowest) {
   if (!ran.empty() && slowest > 0) {
     text += "Slowest scenes:\n";
     for (const SceneResult* r : ran) {
-      text += "  " + padded(r->entry.name, 24) + format(" %9.2f ms", r->milliseconds);
-      if (r->actual == Outcome::Pass || r->actual == Outcome::Fail) text += "  (" + timing(*r) + ")";
-      text += "\n";
+      text += "  " + padded(r->entry.name, 24) + format(" %9.2f ms", r->milliseconds) + steps(*r) + "\n";
     }
   }
   return text;

@@ -6,7 +6,8 @@
 // are written while the frames still exist (output/artifacts.hpp, output/report/) and only their
 // paths are kept here.
 // Deliberately data only: no frames, no scenes, no formatting (output/ does that), so a record
-// can later be written as results.json, read back and merged across shards.
+// can be written as results.json (results_file.hpp), read back and merged across shards
+// (merge.hpp).
 #pragma once
 
 #include "compare/metrics.hpp"
@@ -31,6 +32,14 @@ struct SceneImage {
   std::filesystem::path file;   // relative to SceneResult::imageRoot
 };
 
+// Where a scene's wall time went, in milliseconds, as the runner measured it: loading the scene
+// (and its OBJs), each renderer's whole call (softraster: framebuffer, vertices, draws, resolve;
+// Vulkan: prepare, submit, read-back), comparing the frames and writing its images and pixel
+// data. SceneResult::milliseconds is these plus what surrounds them.
+struct SceneTimings {
+  double load = 0, soft = 0, vulkan = 0, compare = 0, images = 0;
+};
+
 struct SceneResult {
   SceneEntry entry;
   Outcome outcome = Outcome::Crash;
@@ -47,6 +56,7 @@ struct SceneResult {
   std::optional<Comparison> comparison;     // the metrics, known once both renderers produced a frame
   double softMilliseconds = 0, vulkanMilliseconds = 0;  // each renderer's timed span (render/render.hpp)
   double milliseconds = 0;                  // the whole scene: load, render, compare, write
+  SceneTimings timings;                     // the steps of `milliseconds`
 
   std::filesystem::path imageRoot;          // where images were written (empty: none)
   std::vector<SceneImage> images;
@@ -56,8 +66,13 @@ struct SceneResult {
 
 struct RunResults {
   std::vector<SceneResult> scenes;          // in suite order
-  std::string suiteName = "crosscheck.conformance";  // JUnit's name for the run (a shard adds ".shardIofN")
-  std::string commandLine;                  // how the run was started, for the report
+  std::vector<SceneEntry> suite;            // the whole suite the run was a shard of (empty: not known)
+  Shard shard;                              // which slice of `suite` `scenes` are (1/1: all of it)
+  std::string suiteName = "crosscheck.conformance";  // JUnit's name for the run, the same for every shard
+  // The run's options that change a render, as `crosscheck compare` takes them ("--softraster-fma
+  // separate --set camera.yaw=90"), for the report's reproduce commands; shards must agree on them.
+  std::string renderArguments;
+  std::string commandLine;                  // how this run was started (shown in the report; not in results.json)
   std::filesystem::path junitFile;          // the JUnit file the run wrote (empty: none)
   double seconds = 0;                       // wall time of the whole run
   unsigned jobs = 1;

@@ -167,6 +167,15 @@ SceneResult readSceneResult(const json& j, const std::string& place) {
   r.softMilliseconds = readNumber(at("soft_milliseconds"), where("soft_milliseconds"));
   r.vulkanMilliseconds = readNumber(at("vulkan_milliseconds"), where("vulkan_milliseconds"));
   r.milliseconds = readNumber(at("milliseconds"), where("milliseconds"));
+  {
+    const std::string p = where("step_milliseconds");
+    const json& t = at("step_milliseconds");
+    r.timings.load = readNumber(field(t, p, "load"), p + "/load");
+    r.timings.soft = readNumber(field(t, p, "soft"), p + "/soft");
+    r.timings.vulkan = readNumber(field(t, p, "vulkan"), p + "/vulkan");
+    r.timings.compare = readNumber(field(t, p, "compare"), p + "/compare");
+    r.timings.images = readNumber(field(t, p, "images"), p + "/images");
+  }
   r.imageRoot = readString(at("image_root"), where("image_root"));
   const json& images = at("images");
   if (!images.is_array()) bad(where("images"), "expected an array");
@@ -215,6 +224,11 @@ json sceneResultToJson(const SceneResult& r) {
   j["soft_milliseconds"] = number(r.softMilliseconds);
   j["vulkan_milliseconds"] = number(r.vulkanMilliseconds);
   j["milliseconds"] = number(r.milliseconds);
+  j["step_milliseconds"] = {{"load", number(r.timings.load)},
+                            {"soft", number(r.timings.soft)},
+                            {"vulkan", number(r.timings.vulkan)},
+                            {"compare", number(r.timings.compare)},
+                            {"images", number(r.timings.images)}};
   j["image_root"] = r.imageRoot.string();
   json images = json::array();
   for (const SceneImage& image : r.images) images.push_back({{"kind", image.kind}, {"file", image.file.string()}});
@@ -231,8 +245,13 @@ softraster::Result<SceneResult> sceneResultFromJson(const json& value) {
 json runResultsToJson(const RunResults& run) {
   json scenes = json::array();
   for (const SceneResult& r : run.scenes) scenes.push_back(sceneResultToJson(r));
-  return {{"suite_name", run.suiteName},
-          {"command_line", run.commandLine},
+  json suite = json::array();
+  for (const SceneEntry& entry : run.suite) suite.push_back({{"name", entry.name}, {"path", entry.path.string()}});
+  return {{"format", kResultsFormat},
+          {"suite_name", run.suiteName},
+          {"suite", suite},
+          {"shard", {{"index", run.shard.index}, {"count", run.shard.count}}},
+          {"render_arguments", run.renderArguments},
           {"junit_file", run.junitFile.generic_string()},
           {"seconds", number(run.seconds)},
           {"jobs", run.jobs},
@@ -243,8 +262,26 @@ json runResultsToJson(const RunResults& run) {
 softraster::Result<RunResults> runResultsFromJson(const json& value) {
   return guarded<RunResults>([&] {
     RunResults run;
+    const int format = readInteger<int>(field(value, "", "format"), "/format");
+    if (format != kResultsFormat) {
+      bad("/format", "version " + std::to_string(format) + ", but this crosscheck reads version " +
+                         std::to_string(kResultsFormat));
+    }
     run.suiteName = readString(field(value, "", "suite_name"), "/suite_name");
-    run.commandLine = readString(field(value, "", "command_line"), "/command_line");
+    const json& suite = field(value, "", "suite");
+    if (!suite.is_array()) bad("/suite", "expected an array");
+    for (std::size_t i = 0; i < suite.size(); ++i) {
+      const std::string p = "/suite/" + std::to_string(i);
+      run.suite.push_back(
+          {readString(field(suite[i], p, "name"), p + "/name"), readString(field(suite[i], p, "path"), p + "/path")});
+    }
+    const json& shard = field(value, "", "shard");
+    run.shard.index = readInteger<std::size_t>(field(shard, "/shard", "index"), "/shard/index");
+    run.shard.count = readInteger<std::size_t>(field(shard, "/shard", "count"), "/shard/count");
+    if (run.shard.count == 0 || run.shard.index == 0 || run.shard.index > run.shard.count) {
+      bad("/shard", "expected 1 <= index <= count");
+    }
+    run.renderArguments = readString(field(value, "", "render_arguments"), "/render_arguments");
     run.junitFile = readString(field(value, "", "junit_file"), "/junit_file");
     run.seconds = readNumber(field(value, "", "seconds"), "/seconds");
     run.jobs = readInteger<unsigned>(field(value, "", "jobs"), "/jobs");

@@ -34,13 +34,20 @@ struct VulkanSlot {
   }
 };
 
-// Renders and compares one scene; returns Pass, Fail or Crash (with result.error set).
+double millisecondsSince(Clock::time_point start) {
+  return std::chrono::duration<double, std::milli>(Clock::now() - start).count();
+}
+
+// Renders and compares one scene; returns Pass, Fail or Crash (with result.error set). Each step's
+// wall time goes into result.timings as it ends, so a step that fails is timed too.
 Outcome runScene(SceneResult& result, const ConformanceOptions& options, VulkanSlot& vulkan) {
   const auto crash = [&](std::string message) {
     result.error = std::move(message);
     return Outcome::Crash;
   };
+  auto step = Clock::now();
   const auto scene = loadScene(result.entry.path, options.overrides);
+  result.timings.load = millisecondsSince(step);
   if (!scene) return crash(scene.error());
   result.loaded = true;
   result.description = scene->description;
@@ -48,7 +55,9 @@ Outcome runScene(SceneResult& result, const ConformanceOptions& options, VulkanS
   result.height = scene->height;
   result.tolerance = scene->tolerance;
 
+  step = Clock::now();
   const auto soft = options.renderSoft ? options.renderSoft(*scene) : renderSoftraster(*scene, options.softraster);
+  result.timings.soft = millisecondsSince(step);
   if (!soft) return crash(soft.error());
   result.softMilliseconds = soft->milliseconds;
 
@@ -56,7 +65,9 @@ Outcome runScene(SceneResult& result, const ConformanceOptions& options, VulkanS
   if (!opened) return crash("vulkan: " + opened.error());
   vkref::Renderer* renderer = opened->get();
   const std::size_t messagesBefore = options.device.validation ? renderer->validationMessages().size() : 0;
+  step = Clock::now();
   const auto reference = renderVulkan(*scene, *renderer);
+  result.timings.vulkan = millisecondsSince(step);
   if (!reference) return crash(reference.error());
   result.vulkanMilliseconds = reference->milliseconds;
   if (options.device.validation) {
@@ -68,11 +79,14 @@ Outcome runScene(SceneResult& result, const ConformanceOptions& options, VulkanS
     }
   }
 
+  step = Clock::now();
   result.comparison = compareFrames(*soft, *reference, *scene);
+  result.timings.compare = millisecondsSince(step);
   if (options.onFrames) {
-    if (const softraster::Status written = options.onFrames(result, *scene, *soft, *reference); !written) {
-      return crash(written.message());
-    }
+    step = Clock::now();
+    const softraster::Status written = options.onFrames(result, *scene, *soft, *reference);
+    result.timings.images = millisecondsSince(step);
+    if (!written) return crash(written.message());
   }
   return result.comparison->passed() ? Outcome::Pass : Outcome::Fail;
 }
@@ -132,7 +146,7 @@ SceneResult runOne(const SceneEntry& entry, const ConformanceOptions& options, V
   // An error message is one line.
   std::replace(result.error.begin(), result.error.end(), '\n', ' ');
   result.outcome = applyExpectation(result.actual, expected);
-  result.milliseconds = std::chrono::duration<double, std::milli>(Clock::now() - start).count();
+  result.milliseconds = millisecondsSince(start);
   return result;
 }
 

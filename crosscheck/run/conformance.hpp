@@ -9,7 +9,8 @@
 // with a new worker.
 // Isolation::Threads runs the same scenes on threads of the calling process instead, for tests
 // that watch a renderer from the caller: no timeout, no memory limit, and a crash ends it all.
-// Its scenes' records are RunResults::scenes (results/results.hpp).
+// Its scenes' records are RunResults::scenes (results/results.hpp), each with the wall time of
+// its steps (SceneTimings: load, each renderer, compare, the FrameSink's images).
 // Deliberately no retry: a scene that crashed once is a Crash, not a flake to run again.
 #pragma once
 

@@ -243,6 +243,99 @@ case $case_name in
       [ -z "$(sort "$artifacts/union.txt" | uniq -d)" ] || fail "with $n shards a scene ran twice: $(sort "$artifacts/union.txt" | uniq -d)"
       sort "$artifacts/union.txt" | diff - "$artifacts/all.txt" || fail "the union of $n shards is not the whole suite"
     done
+    # Test identity does not depend on the shard: one suite name and classname everywhere, the
+    # shard a property.
+    for xml in "$artifacts"/shard*-of-3.xml "$artifacts/all.xml"; do
+      [ "$(xmllint --xpath 'string(/testsuites/testsuite/@name)' "$xml")" = crosscheck.conformance ] || fail "$xml: suite name"
+      [ "$(xpath_number "$xml" 'count(//testcase[@classname!="crosscheck.conformance"])')" = 0 ] || fail "$xml: a classname differs"
+    done
+    [ "$(xmllint --xpath 'string(//property[@name="shard"]/@value)' "$artifacts/shard2-of-3.xml")" = 2/3 ] || fail "no shard property"
+    [ "$(xpath_number "$artifacts/all.xml" 'count(//property)')" = 0 ] || fail "an unsharded run has a shard property"
+    ;;
+  results_json)
+    # conformance -o DIR and report -o DIR write DIR/results.json: every scene, paths relative to DIR.
+    run conformance "$fixtures" tests/data/bad_enum.json --softraster-fma "$other_fma" \
+      --expectations "$expectations/unknown_scene.txt" --junit "$artifacts/run.xml" --out "$artifacts/images"
+    expect_status 1
+    expect_out "^results: $artifacts/images/results.json$"
+    file=$artifacts/images/results.json
+    [ -s "$file" ] || fail "no results.json"
+    grep -qx ' "format": 1,' "$file" || fail "no format version"
+    grep -qx ' "junit_file": "../run.xml",' "$file" || fail "the JUnit path is not relative to the folder"
+    [ "$(grep -c '"image_root": "."' "$file")" = 1 ] || fail "not one scene (depth_slope) with images in this folder"
+    [ "$(grep -c '"step_milliseconds": {' "$file")" = 5 ] || fail "not five scenes with their step timings"
+    [ "$(grep -c '"outcome": "Crash"' "$file")" = 3 ] || fail "not three crashes"
+    grep -q '"outcome": "Skip"' "$file" || fail "no skipped scene"
+    grep -q '"file": "depth_slope/diff.png"' "$file" || fail "image paths are not relative to the image root"
+    grep -q '"error": "tests/data/bad_enum.json: ' "$file" || fail "no error line"
+    run report "$fixtures/flat_triangle.json" -o "$artifacts/report"
+    expect_status 0
+    grep -q '"file": "flat_triangle/preview.png"' "$artifacts/report/results.json" || fail "report wrote no results.json"
+    # A results.json that cannot be written is an error naming it, exit 2.
+    mkdir -p "$artifacts/blocked/results.json"
+    run conformance "$fixtures/flat_triangle.json" -o "$artifacts/blocked"
+    expect_status 2
+    expect_err "^crosscheck: $artifacts/blocked/results.json: cannot write results file: "
+    ;;
+  slowest_steps)
+    # The slowest scenes say where their time went.
+    run conformance "$fixtures/flat_triangle.json" "$fixtures/malformed.json" -o "$artifacts/images"
+    expect_status 1
+    expect_out '^  flat_triangle +[0-9.]+ ms: load [0-9.]+, softraster [0-9.]+ \(draw [0-9.]+\), vulkan [0-9.]+ \(submit [0-9.]+\), compare [0-9.]+, images [0-9.]+$'
+    expect_out '^  malformed +[0-9.]+ ms: load [0-9.]+, softraster 0.00, vulkan 0.00, compare 0.00, images 0.00$'
+    ;;
+  merge_errors)
+    # merge: one error line naming the file and the scene, exit 2, for shards that do not make up
+    # one suite; the merged outputs otherwise (exit status as conformance), usable without the shards.
+    for i in 1 2 3; do
+      run conformance "$fixtures" --shard "$i/3" -o "$artifacts/s$i"
+      run conformance "$fixtures" --shard "$i/3" -o "$artifacts/known$i" --softraster-fma "$other_fma" \
+        --expectations "$expectations/all_known.txt"
+      expect_status 0
+    done
+    check_merge() {
+      local pattern=$1
+      shift
+      run merge "$@"
+      expect_status 2
+      expect_err "$pattern"
+      expect_one_error_line
+    }
+    s=$artifacts/s
+    check_merge "^crosscheck: ${s}1/results.json: scene 'flat_triangle' of the suite is in none of the 2 files \(missing\)$" \
+      "${s}1" "${s}2/results.json" -o "$artifacts/m"
+    check_merge "^crosscheck: ${s}2/results.json: scene 'depth_slope' is also in ${s}2/results.json \(duplicated\)$" \
+      "${s}1" "${s}2" "${s}3" "${s}2" -o "$artifacts/m"
+    run conformance "$fixtures/flat_triangle.json" -o "$artifacts/other"
+    check_merge "^crosscheck: $artifacts/other/results.json: another suite than ${s}1/results.json: 1 scene, not 4$" \
+      "${s}1" "$artifacts/other" -o "$artifacts/m"
+    check_merge "^crosscheck: $artifacts/known3/results.json: other rendering options than ${s}1/results.json: '--softraster-fma $other_fma', not ''$" \
+      "${s}1" "${s}2" "$artifacts/known3" -o "$artifacts/m"
+    check_merge "^crosscheck: $artifacts/nothing.json: cannot read results file: file not found$" "$artifacts/nothing.json" -o "$artifacts/m"
+    check_merge "^crosscheck: $expectations/report.txt: not JSON: " "$expectations/report.txt" -o "$artifacts/m"
+    sed 's/^ "format": 1,$/ "format": 7,/' "${s}1/results.json" >"$artifacts/format7.json"
+    check_merge "^crosscheck: $artifacts/format7.json: results JSON: /format: version 7, but this crosscheck reads version 1$" \
+      "$artifacts/format7.json" "${s}2" "${s}3" -o "$artifacts/m"
+    run merge "${s}1"
+    expect_status 2
+    expect_err 'usage: crosscheck'
+    [ ! -e "$artifacts/m" ] || fail "a failed merge wrote $artifacts/m"
+    # Two crashes (broken_obj, malformed): exit 1, the outputs, and the images copied.
+    run merge "${s}3" "${s}1" "${s}2" -o "$artifacts/m"
+    expect_status 1
+    expect_out '^crosscheck merge: 4 scenes from 3 files$'
+    expect_out "^report: $artifacts/m/index.html$"
+    expect_last_line "2 passed, 2 failed"
+    rm -rf "${s}1" "${s}2" "${s}3"
+    for f in index.html junit.xml results.json depth_slope/diff.png flat_triangle/vulkan.depth.png; do
+      [ -s "$artifacts/m/$f" ] || fail "merge wrote no $f"
+    done
+    grep -q "image diff: $artifacts/m/depth_slope/diff.png" "$artifacts/m/junit.xml" || fail "JUnit does not name the copied images"
+    # Every failure known: exit 0, and --junit puts JUnit elsewhere.
+    run merge "$artifacts/known1" "$artifacts/known2" "$artifacts/known3" -o "$artifacts/mk" --junit "$artifacts/mk.xml"
+    expect_status 0
+    expect_last_line "3 passed, 0 failed, 1 skipped"
+    [ -s "$artifacts/mk.xml" ] && [ ! -e "$artifacts/mk/junit.xml" ] || fail "--junit did not move the JUnit file"
     ;;
   junit)
     # Well-formed JUnit with the right counts; Fail/UnexpectedPass as <failure>, Crash as <error>,

@@ -4,8 +4,9 @@
 # loaded, that the pixel data for the value readout (written for the failing scene only) loaded
 # and decoded, that the readout shows values under the pointer, that the summary table has a row
 # per scene, sorts on a header click and filters by "only unexpected" and by name, that the
-# expectations lines for the unexpected results are there to copy, and that the flicker toggle
-# swaps the render. Keeps screenshots:
+# expectations lines for the unexpected results are there to copy, that the flicker toggle
+# swaps the render, and that the marks against a baseline (an earlier run, --baseline) show the
+# new failure, the fixed scene and the changed metrics. Keeps screenshots:
 #   ARTIFACTS/report/report.png        the page as it opens (1400x1000)
 #   ARTIFACTS/report/report-check.png  every scene opened (?check, 1400x3000)
 # Usage: report_chromium_test.sh CROSSCHECK SOURCE_DIR ARTIFACTS_DIR
@@ -24,15 +25,24 @@ fail() {
   exit 1
 }
 
+# The baseline: the fixtures with lavapipe's own fmuladd rounding (depth_slope passes) and
+# flat_triangle expected to fail (an UnexpectedPass there).
+"$crosscheck" report tests/data/conformance -o "$artifacts/baseline" --jobs 2 \
+  --expectations tests/data/expectations/baseline.txt >"$artifacts/baseline.txt" 2>&1
+status=$?
+[ "$status" -eq 1 ] || { cat "$artifacts/baseline.txt"; fail "baseline report exit status $status, expected 1"; }
+[ -s "$artifacts/baseline/results.json" ] || fail "the baseline wrote no results.json"
+
 # A suite of the fixtures with Pass (flat_triangle), Fail (depth_slope under the fmuladd rounding
-# lavapipe does not use here), Crash (broken_obj) and Skip (malformed, through expectations).
+# lavapipe does not use here), Crash (broken_obj) and Skip (malformed, through expectations),
+# against the baseline: depth_slope a new failure with changed metrics, flat_triangle fixed.
 case "$(uname -m)" in
   x86_64 | i?86) if grep -qw fma /proc/cpuinfo; then other_fma=separate; else other_fma=fused; fi ;;
   aarch64 | arm64) other_fma=separate ;;
   *) other_fma=fused ;;
 esac
 "$crosscheck" report tests/data/conformance -o "$artifacts/site" --jobs 2 --softraster-fma "$other_fma" \
-  --expectations tests/data/expectations/report.txt >"$artifacts/report.txt" 2>&1
+  --expectations tests/data/expectations/report.txt --baseline "$artifacts/baseline" >"$artifacts/report.txt" 2>&1
 status=$?
 cat "$artifacts/report.txt"
 [ "$status" -eq 1 ] || fail "report exit status $status, expected 1 (depth_slope fails, broken_obj crashes)"
@@ -82,6 +92,14 @@ grep -q '<table id="summary"' "$artifacts/dom.html" || fail "no summary table"
 [ "$(attr data-sort-probe)" = "malformed,flat_triangle,depth_slope,broken_obj" ] ||
   fail "sorting by scene name, Z to A, gave '$(attr data-sort-probe)'"
 [ "$(attr data-flicker-probe)" = "depth_slope/vulkan.png" ] || fail "the flicker swap showed '$(attr data-flicker-probe)'"
+# Baseline marks, worst first: depth_slope newly fails (its depth metrics changed), flat_triangle is
+# fixed, broken_obj crashed in both (no mark), malformed was skipped in both.
+[ "$(attr data-baseline-marks)" = "depth_slope:new failure+metrics changed,flat_triangle:fixed" ] ||
+  fail "baseline marks: '$(attr data-baseline-marks)'"
+attr data-baseline-summary | grep -qE '^Against the baseline .*/baseline/results\.json \([0-9 :-]+ UTC\): 1 new failure · 1 fixed · 1 scene with changed metrics$' ||
+  fail "baseline summary line: '$(attr data-baseline-summary)'"
+[ "$(attr data-baseline-changed-cells)" -ge 2 ] || fail "changed cells: '$(attr data-baseline-changed-cells)', expected depth pixels over and depth max at least"
+[ "$(attr data-baseline-filter)" = 2 ] || fail "'only changed against the baseline' left $(attr data-baseline-filter) rows, expected 2"
 attr data-readout | grep -qE '^x [0-9]+, y [0-9]+  \|  softraster RGBA [0-9 ]+  \|  Vulkan RGBA [0-9 ]+  \|' ||
   fail "the value readout shows no values: '$(attr data-readout)'"
 

@@ -141,6 +141,34 @@ TEST(Report, WorstFirstOrdersByStatusThenMetrics) {
   EXPECT_EQ(worstFirst(results), (std::vector<std::size_t>{4, 3, 1, 0, 2}));
 }
 
+TEST(Report, MarksChangesAgainstABaseline) {
+  const auto scene = [](const std::string& name, Outcome outcome, std::uint64_t mismatches) {
+    SceneResult r;
+    r.entry = {name, name + ".json"};
+    r.outcome = r.actual = outcome;
+    r.comparison = Comparison{};
+    r.comparison->coverageMismatches = mismatches;
+    return r;
+  };
+  RunResults before, now;
+  before.scenes = {scene("broke", Outcome::Pass, 0), scene("mended", Outcome::Fail, 3), scene("same", Outcome::Pass, 0)};
+  now.scenes = {scene("broke", Outcome::Fail, 12), scene("mended", Outcome::Pass, 0), scene("same", Outcome::Pass, 0)};
+  ReportBaseline baseline;
+  baseline.file = "old/results.json";
+  baseline.versus = compareWithBaseline(now, before);
+  const std::string html = reportHtml(now, {}, &baseline);
+  EXPECT_NE(html.find("1 new failure</b> \xC2\xB7 1 fixed \xC2\xB7 2 scenes with changed metrics</p>"), std::string::npos) << html;
+  EXPECT_EQ(count(html, "<span class=\"mark mark-new-failure\""), 3u) << "table, list at the top, section";
+  EXPECT_EQ(count(html, "<span class=\"mark mark-fixed\""), 2u) << "table, section";
+  EXPECT_EQ(count(html, "<td class=\"num over changed\""), 1u) << "broke's coverage, over its limit";
+  EXPECT_NE(html.find("title=\"allowed 0; baseline 0\">12</td>"), std::string::npos);
+  EXPECT_NE(html.find("against the baseline: Pass \xE2\x86\x92 Fail; coverage mismatches 0 \xE2\x86\x92 12"), std::string::npos);
+  EXPECT_NE(html.find("data-name=\"same\" data-baseline=\"\""), std::string::npos);
+  EXPECT_NE(html.find("id=\"filter-baseline\""), std::string::npos);
+  EXPECT_EQ(reportHtml(now).find("id=\"filter-baseline\""), std::string::npos) << "no baseline, no filter";
+  EXPECT_EQ(reportHtml(now).find("baseline-summary\""), std::string::npos);
+}
+
 TEST(Report, PixelDataDecodesToTheFramesExactly) {
   Frame soft, vulkan;
   soft.width = vulkan.width = 3;

@@ -44,6 +44,7 @@ SceneResult everyFieldSet() {
   r.softMilliseconds = 1.25;
   r.vulkanMilliseconds = 2.5e-3;
   r.milliseconds = 123.456789012345;
+  r.timings = {0.5, 1.5, 2.5, 0.125, 99.75};
   r.imageRoot = "out/images";
   r.images = {{"soft", "room/soft.png"}, {"diff", "room/diff.png"}};
   r.pixelData = "room/pixels.js";
@@ -90,6 +91,11 @@ void expectSame(const SceneResult& a, const SceneResult& b) {
   EXPECT_TRUE(same(a.softMilliseconds, b.softMilliseconds));
   EXPECT_TRUE(same(a.vulkanMilliseconds, b.vulkanMilliseconds));
   EXPECT_TRUE(same(a.milliseconds, b.milliseconds));
+  EXPECT_TRUE(same(a.timings.load, b.timings.load));
+  EXPECT_TRUE(same(a.timings.soft, b.timings.soft));
+  EXPECT_TRUE(same(a.timings.vulkan, b.timings.vulkan));
+  EXPECT_TRUE(same(a.timings.compare, b.timings.compare));
+  EXPECT_TRUE(same(a.timings.images, b.timings.images));
   EXPECT_EQ(a.imageRoot, b.imageRoot);
   ASSERT_EQ(a.images.size(), b.images.size());
   for (std::size_t i = 0; i < a.images.size(); ++i) {
@@ -146,8 +152,11 @@ TEST(ResultsJson, RunResultsRoundTrip) {
   RunResults run;
   run.scenes = {everyFieldSet(), SceneResult{}};
   run.scenes[1].entry = {"second", "s/second.json"};
-  run.suiteName = "crosscheck.conformance.shard2of3";
-  run.commandLine = "crosscheck conformance --jobs 2";
+  run.suite = {{"room", "scenes/room.json"}, {"other", "scenes/other.json"}, {"second", "s/second.json"}};
+  run.shard = {2, 3};
+  run.suiteName = "crosscheck.conformance";
+  run.renderArguments = "--softraster-fma separate --set camera.yaw=90";
+  run.commandLine = "crosscheck conformance --jobs 2";  // not part of the record
   run.junitFile = "out/conformance.junit.xml";
   run.seconds = 12.5;
   run.jobs = 2;
@@ -155,7 +164,16 @@ TEST(ResultsJson, RunResultsRoundTrip) {
   const auto back = runResultsFromJson(json::parse(runResultsToJson(run).dump()));
   ASSERT_TRUE(back) << back.error();
   EXPECT_EQ(back->suiteName, run.suiteName);
-  EXPECT_EQ(back->commandLine, run.commandLine);
+  ASSERT_EQ(back->suite.size(), 3u);
+  for (std::size_t i = 0; i < 3; ++i) {
+    EXPECT_EQ(back->suite[i].name, run.suite[i].name);
+    EXPECT_EQ(back->suite[i].path, run.suite[i].path);
+  }
+  EXPECT_EQ(back->shard.index, 2u);
+  EXPECT_EQ(back->shard.count, 3u);
+  EXPECT_EQ(back->renderArguments, run.renderArguments);
+  EXPECT_EQ(back->commandLine, "");
+  EXPECT_EQ(runResultsToJson(run)["format"], kResultsFormat);
   EXPECT_EQ(back->junitFile, run.junitFile);
   EXPECT_EQ(back->seconds, run.seconds);
   EXPECT_EQ(back->jobs, run.jobs);
@@ -194,7 +212,12 @@ TEST(ResultsJson, MalformedValuesNameTheField) {
   EXPECT_EQ(errorOf(json::array()), "results JSON: /: expected an object");
   const auto run = runResultsFromJson(json{{"suite_name", "x"}});
   ASSERT_FALSE(run);
-  EXPECT_EQ(run.error(), "results JSON: /command_line: missing");
+  EXPECT_EQ(run.error(), "results JSON: /format: missing");
+  json badShard = runResultsToJson(RunResults{});
+  badShard["shard"]["index"] = 4;
+  const auto shard = runResultsFromJson(badShard);
+  ASSERT_FALSE(shard);
+  EXPECT_EQ(shard.error(), "results JSON: /shard: expected 1 <= index <= count");
 }
 
 }  // namespace

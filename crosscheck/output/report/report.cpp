@@ -86,11 +86,33 @@ const SceneImage* imageOf(const SceneResult& r, std::string_view kind) {
   return nullptr;
 }
 
-// One numeric table cell: data-v for sorting, the shown text, and "over" when past its limit.
-std::string numberCell(double sortValue, const std::string& shown, bool over, const std::string& title = "") {
+// A metric's value as the baseline marks show it: whole numbers as such, PSNR of identical images
+// "inf" (as psnrText spells it, metric_text.hpp), anything else with six significant digits.
+std::string metricValue(double value) {
+  if (std::isinf(value)) return value > 0 ? "inf" : "-inf";
+  if (value == std::floor(value) && std::fabs(value) < 1e15) return fixed("%.0f", value);
+  return fixed("%.6g", value);
+}
+
+// The change of one summary table column against the baseline, or null.
+const MetricChange* changeOf(const SceneVersusBaseline* versus, std::string_view metric) {
+  if (!versus) return nullptr;
+  for (const MetricChange& change : versus->changes) {
+    if (change.metric == metric) return &change;
+  }
+  return nullptr;
+}
+
+// One numeric table cell: data-v for sorting, the shown text, "over" when past its limit and
+// "changed" (with the baseline's value in its title) when it differs from the baseline.
+std::string numberCell(double sortValue, const std::string& shown, bool over, const std::string& title = "",
+                       const MetricChange* change = nullptr) {
   std::string v = std::isinf(sortValue) ? (sortValue > 0 ? "Infinity" : "-Infinity") : fixed("%.9g", sortValue);
-  std::string cell = "<td class=\"num" + std::string(over ? " over" : "") + "\" data-v=\"" + v + "\"";
-  if (!title.empty()) cell += " title=\"" + e(title) + "\"";
+  std::string cell =
+      "<td class=\"num" + std::string(over ? " over" : "") + (change ? " changed" : "") + "\" data-v=\"" + v + "\"";
+  std::string tip = title;
+  if (change) tip += (tip.empty() ? "" : "; ") + std::string("baseline ") + metricValue(change->before);
+  if (!tip.empty()) cell += " title=\"" + e(tip) + "\"";
   return cell + ">" + e(shown) + "</td>";
 }
 
@@ -130,18 +152,61 @@ std::string thumbnail(const SceneResult& r, std::string_view kind, const std::st
          e(title + " of " + r.entry.name) + "\" title=\"" + e(title) + "\">";
 }
 
-// The attributes the page's filters read: the status and the name.
-std::string filterAttributes(const SceneResult& r) {
-  return " data-status=\"" + std::string(outcomeName(r.outcome)) + "\" data-unexpected=\"" +
-         (isUnexpected(r.outcome) ? "1" : "0") + "\" data-name=\"" + e(r.entry.name) + "\"";
+// The marks of a scene against the baseline, as words: "new-failure", "fixed", "changed", "added".
+std::string baselineMarks(const SceneVersusBaseline* versus) {
+  if (!versus) return "";
+  std::string marks;
+  const auto add = [&](bool on, const char* mark) {
+    if (on) marks += (marks.empty() ? "" : " ") + std::string(mark);
+  };
+  add(versus->newFailure, "new-failure");
+  add(versus->fixed, "fixed");
+  add(!versus->changes.empty(), "changed");
+  add(!versus->inBaseline, "added");
+  return marks;
 }
 
-std::string summaryRow(const SceneResult& r, std::size_t rank) {
+// The attributes the page's filters read: the status, the name and the marks against a baseline.
+std::string filterAttributes(const SceneResult& r, const SceneVersusBaseline* versus = nullptr) {
+  std::string a = " data-status=\"" + std::string(outcomeName(r.outcome)) + "\" data-unexpected=\"" +
+                  (isUnexpected(r.outcome) ? "1" : "0") + "\" data-name=\"" + e(r.entry.name) + "\"";
+  if (versus) a += " data-baseline=\"" + baselineMarks(versus) + "\"";
+  return a;
+}
+
+// What changed against the baseline, one line: "Pass → Fail; coverage mismatches 0 → 12".
+std::string baselineText(const SceneVersusBaseline& versus, Outcome now) {
+  if (!versus.inBaseline) return "not in the baseline";
+  std::string text = std::string(outcomeName(versus.before)) + " \xE2\x86\x92 " + std::string(outcomeName(now));
+  if (versus.before == now) text = "baseline " + std::string(outcomeName(now));
+  for (const MetricChange& change : versus.changes) {
+    text += "; " + change.metric + " " + metricValue(change.before) + " \xE2\x86\x92 " + metricValue(change.after);
+  }
+  return text;
+}
+
+// The badges beside a scene's name.
+std::string baselineBadges(const SceneVersusBaseline* versus, Outcome now) {
+  if (!versus) return "";
+  const std::string title = e(baselineText(*versus, now));
+  std::string badges;
+  const auto add = [&](bool on, const char* mark, const char* text) {
+    if (on) badges += " <span class=\"mark mark-" + std::string(mark) + "\" title=\"" + title + "\">" + text + "</span>";
+  };
+  add(versus->newFailure, "new-failure", "new failure");
+  add(versus->fixed, "fixed", "fixed");
+  add(!versus->changes.empty(), "changed", "metrics changed");
+  add(!versus->inBaseline, "added", "new scene");
+  return badges;
+}
+
+std::string summaryRow(const SceneResult& r, std::size_t rank, const SceneVersusBaseline* versus) {
   std::string row = "<tr class=\"st-" + std::string(outcomeName(r.outcome)) + "\" data-rank=\"" + std::to_string(rank) + "\"" +
-                    filterAttributes(r) + ">";
+                    filterAttributes(r, versus) + ">";
   row += "<td data-v=\"" + std::to_string(outcomeRank(r.outcome)) + "\">" + badge(r.outcome) + "</td>";
   row += "<td class=\"thumbs\">" + thumbnail(r, "soft", "softraster") + "</td>";
-  row += "<td data-v=\"" + e(r.entry.name) + "\"><a href=\"" + anchorOf(r) + "\">" + e(r.entry.name) + "</a>";
+  row += "<td data-v=\"" + e(r.entry.name) + "\"><a href=\"" + anchorOf(r) + "\">" + e(r.entry.name) + "</a>" +
+         baselineBadges(versus, r.outcome);
   if (!r.error.empty()) row += "<div class=\"row-error\">" + e(r.error) + "</div>";
   row += "</td>";
   if (r.comparison) {
@@ -149,20 +214,26 @@ std::string summaryRow(const SceneResult& r, std::size_t rank) {
     const Tolerance& t = r.tolerance;
     const int colourMax = *std::max_element(c.colourMaxDelta.begin(), c.colourMaxDelta.end());
     const double colourMean = *std::max_element(c.colourMeanDelta.begin(), c.colourMeanDelta.end());
+    // The metric names are baseline.hpp's (the columns' headings).
     row += numberCell(double(c.coverageMismatches), std::to_string(c.coverageMismatches),
-                      c.coverageMismatches > t.maxCoverageMismatches, "allowed " + std::to_string(t.maxCoverageMismatches));
+                      c.coverageMismatches > t.maxCoverageMismatches, "allowed " + std::to_string(t.maxCoverageMismatches),
+                      changeOf(versus, "coverage mismatches"));
     row += numberCell(double(c.colourPixelsOver), std::to_string(c.colourPixelsOver), c.colourPixelsOver > t.maxColourPixelsOver,
                       "pixels with a channel |\xCE\x94| over " + std::to_string(t.colourThreshold) +
-                          "; allowed " + std::to_string(t.maxColourPixelsOver));
+                          "; allowed " + std::to_string(t.maxColourPixelsOver),
+                      changeOf(versus, "colour pixels over"));
     row += numberCell(colourMax, std::to_string(colourMax), colourMax > t.colourThreshold,
-                      "RGBA " + rgbaText(c.colourMaxDelta) + "; threshold " + std::to_string(t.colourThreshold));
-    row += numberCell(colourMean, fixed("%.4f", colourMean), false, "RGBA " + meanText(c.colourMeanDelta));
-    row += numberCell(c.psnr, psnrText(c.psnr), false);
+                      "RGBA " + rgbaText(c.colourMaxDelta) + "; threshold " + std::to_string(t.colourThreshold),
+                      changeOf(versus, "colour max |\xCE\x94|"));
+    row += numberCell(colourMean, fixed("%.4f", colourMean), false, "RGBA " + meanText(c.colourMeanDelta),
+                      changeOf(versus, "colour mean |\xCE\x94|"));
+    row += numberCell(c.psnr, psnrText(c.psnr), false, "", changeOf(versus, "PSNR"));
     row += numberCell(double(c.depthPixelsOver), std::to_string(c.depthPixelsOver), c.depthPixelsOver > t.maxDepthPixelsOver,
                       "pixels with depth |\xCE\x94| over " + depthText(t.depthThreshold) +
-                          "; allowed " + std::to_string(t.maxDepthPixelsOver));
+                          "; allowed " + std::to_string(t.maxDepthPixelsOver),
+                      changeOf(versus, "depth pixels over"));
     row += numberCell(c.depthMaxDelta, depthText(c.depthMaxDelta), c.depthMaxDelta > t.depthThreshold,
-                      "threshold " + depthText(t.depthThreshold));
+                      "threshold " + depthText(t.depthThreshold), changeOf(versus, "depth max |\xCE\x94|"));
     row += numberCell(r.softMilliseconds, fixed("%.2f", r.softMilliseconds), false);
     row += numberCell(r.vulkanMilliseconds, fixed("%.2f", r.vulkanMilliseconds), false);
   } else {
@@ -193,17 +264,7 @@ std::string expectationsLines(const RunResults& run) {
 // The command that reproduces one scene: compare with the run's options that change a render.
 std::string reproduceCommand(const RunResults& run, const SceneResult& r) {
   std::string command = "crosscheck compare " + r.entry.path.generic_string();
-  std::istringstream words(run.commandLine);
-  std::vector<std::string> tokens{std::istream_iterator<std::string>(words), std::istream_iterator<std::string>()};
-  for (std::size_t i = 0; i < tokens.size(); ++i) {
-    const std::string& t = tokens[i];
-    if (t == "--validation") command += " " + t;
-    const bool takesValue = t == "--softraster-fma" || t == "--device" || t == "--set";
-    if (takesValue && i + 1 < tokens.size()) command += " " + t + " " + tokens[++i];
-    for (const char* option : {"--softraster-fma=", "--device=", "--set="}) {
-      if (t.rfind(option, 0) == 0) command += " " + t;
-    }
-  }
+  if (!run.renderArguments.empty()) command += " " + run.renderArguments;
   return command + " --out out/" + r.entry.name;
 }
 
@@ -279,15 +340,15 @@ std::string depthLegend(double threshold) {
 }
 
 std::string sceneSection(const RunResults& run, const SceneResult& r, std::size_t position, bool open,
-                         const std::filesystem::path& reportDir) {
+                         const std::filesystem::path& reportDir, const SceneVersusBaseline* versus) {
   std::string s = "<details class=\"scene st-" + std::string(outcomeName(r.outcome)) + "\" id=\"s-" + std::to_string(position) +
-                  "\"" + filterAttributes(r) + " data-w=\"" + std::to_string(r.width) + "\" data-h=\"" +
+                  "\"" + filterAttributes(r, versus) + " data-w=\"" + std::to_string(r.width) + "\" data-h=\"" +
                   std::to_string(r.height) + "\"";
   if (!r.pixelData.empty()) s += " data-pixels=\"" + url(r.pixelData) + "\"";
   s += open ? " open>" : ">";
   const std::string detail = resultDetail(r);
   s += "<summary>" + badge(r.outcome) + "<span class=\"name\">" + e(r.entry.name) + "</span><span class=\"path\">" +
-       e(r.entry.path.string()) + "</span>";
+       e(r.entry.path.string()) + "</span>" + baselineBadges(versus, r.outcome);
   if (!detail.empty() && r.actual != Outcome::Crash && r.actual != Outcome::Timeout) {
     s += "<span class=\"brief\">" + e(detail) + "</span>";
   }
@@ -302,6 +363,7 @@ std::string sceneSection(const RunResults& run, const SceneResult& r, std::size_
          "</p>\n";
   }
   if (!r.error.empty()) s += "<p class=\"error\">" + e(r.error) + "</p>\n";
+  if (versus) s += "<p class=\"baseline\">against the baseline: " + e(baselineText(*versus, r.outcome)) + "</p>\n";
   s += metricsTable(r);
   if (const SceneImage* preview = imageOf(r, "preview")) {
     // Compact (artifacts.hpp): both frames bit-identical, so a preview and nothing to compare.
@@ -358,6 +420,26 @@ std::string sceneSection(const RunResults& run, const SceneResult& r, std::size_
 
 }  // namespace
 
+std::string renderArgumentsOf(const std::string& commandLine) {
+  std::string arguments;
+  const auto add = [&](const std::string& text) { arguments += (arguments.empty() ? "" : " ") + text; };
+  std::istringstream words(commandLine);
+  std::vector<std::string> tokens{std::istream_iterator<std::string>(words), std::istream_iterator<std::string>()};
+  for (std::size_t i = 0; i < tokens.size(); ++i) {
+    const std::string& t = tokens[i];
+    if (t == "--validation") add(t);
+    const bool takesValue = t == "--softraster-fma" || t == "--device" || t == "--set";
+    if (takesValue && i + 1 < tokens.size()) {
+      add(t + " " + tokens[i + 1]);
+      ++i;
+    }
+    for (const char* option : {"--softraster-fma=", "--device=", "--set="}) {
+      if (t.rfind(option, 0) == 0) add(t);
+    }
+  }
+  return arguments;
+}
+
 std::string pixelDataScript(const std::string& sceneName, const Frame& soft, const Frame& vulkan) {
   using nlohmann::json;
   const json data = {{"w", soft.width},
@@ -392,8 +474,11 @@ std::vector<std::size_t> worstFirst(const std::vector<SceneResult>& results) {
   return order;
 }
 
-std::string reportHtml(const RunResults& run, const std::filesystem::path& reportDir) {
+std::string reportHtml(const RunResults& run, const std::filesystem::path& reportDir, const ReportBaseline* baseline) {
   const std::vector<SceneResult>& results = run.scenes;
+  const auto versusOf = [&](std::size_t i) -> const SceneVersusBaseline* {
+    return baseline && i < baseline->versus.scenes.size() ? &baseline->versus.scenes[i] : nullptr;
+  };
   const Counts counts = countResults(results);
   const std::vector<std::size_t> order = worstFirst(results);
   std::string html =
@@ -419,6 +504,25 @@ std::string reportHtml(const RunResults& run, const std::filesystem::path& repor
     html += "<br>JUnit: <a href=\"" + url(linkFrom(reportDir, run.junitFile)) + "\">" + e(run.junitFile.generic_string()) + "</a>";
   }
   html += "</p>\n";
+  if (baseline) {
+    const BaselineComparison& v = baseline->versus;
+    const auto counted = [](std::size_t n, const char* one, const char* many) {
+      return std::to_string(n) + " " + (n == 1 ? one : many);
+    };
+    html += "<p class=\"baseline-summary\" id=\"baseline-summary\">Against the baseline <a href=\"" +
+            url(linkFrom(reportDir, baseline->file)) + "\">" + e(baseline->file.generic_string()) + "</a>";
+    if (baseline->finished != 0) html += " (" + e(utcTime(baseline->finished, "%Y-%m-%d %H:%M:%S UTC")) + ")";
+    html += ": <b>" + counted(v.newFailures, "new failure", "new failures") + "</b> \xC2\xB7 " +
+            counted(v.fixed, "fixed", "fixed") + " \xC2\xB7 " +
+            counted(v.changed, "scene with changed metrics", "scenes with changed metrics");
+    if (v.added) html += " \xC2\xB7 " + counted(v.added, "new scene", "new scenes");
+    if (!v.gone.empty()) {
+      std::string names;
+      for (const std::string& name : v.gone) names += (names.empty() ? "" : ", ") + name;
+      html += " \xC2\xB7 " + counted(v.gone.size(), "scene", "scenes") + " of the baseline not run: " + e(names);
+    }
+    html += "</p>\n";
+  }
 
   // Everything unexpected, at the top, with its renders and what went wrong.
   std::string attention;
@@ -428,9 +532,10 @@ std::string reportHtml(const RunResults& run, const std::filesystem::path& repor
     if (!isUnexpected(r.outcome)) continue;
     ++unexpected;
     const std::string detail = resultDetail(r);
-    attention += "<li" + filterAttributes(r) + ">" + badge(r.outcome) + " <a href=\"" + anchorOf(r) + "\">" + e(r.entry.name) +
-                 "</a> <span class=\"thumbs\">" + thumbnail(r, "soft", "softraster") + thumbnail(r, "vulkan", "Vulkan") +
-                 thumbnail(r, "diff", "difference") + "</span><div class=\"brief\">" + e(detail) + "</div></li>\n";
+    attention += "<li" + filterAttributes(r, versusOf(i)) + ">" + badge(r.outcome) + " <a href=\"" + anchorOf(r) + "\">" +
+                 e(r.entry.name) + "</a>" + baselineBadges(versusOf(i), r.outcome) + " <span class=\"thumbs\">" +
+                 thumbnail(r, "soft", "softraster") + thumbnail(r, "vulkan", "Vulkan") + thumbnail(r, "diff", "difference") +
+                 "</span><div class=\"brief\">" + e(detail) + "</div></li>\n";
   }
   if (unexpected) {
     html += "<h2>Unexpected results (" + std::to_string(unexpected) + ")</h2>\n<ul id=\"attention\" class=\"attention\">\n" +
@@ -443,8 +548,11 @@ std::string reportHtml(const RunResults& run, const std::filesystem::path& repor
   }
 
   html += "<h2>Summary</h2>\n<div class=\"filters\" id=\"filters\"><label>find <input type=\"search\" id=\"filter-name\" "
-          "placeholder=\"scene name\"></label><label><input type=\"checkbox\" id=\"filter-unexpected\"> only unexpected</label>"
-          "<span class=\"status-filters\">";
+          "placeholder=\"scene name\"></label><label><input type=\"checkbox\" id=\"filter-unexpected\"> only unexpected</label>";
+  if (baseline) {
+    html += "<label><input type=\"checkbox\" id=\"filter-baseline\"> only changed against the baseline</label>";
+  }
+  html += "<span class=\"status-filters\">";
   for (Outcome s : kAllOutcomes) {
     if (!counts.of(s)) continue;
     html += "<label><input type=\"checkbox\" class=\"filter-status\" value=\"" + std::string(outcomeName(s)) + "\" checked> " +
@@ -465,7 +573,9 @@ std::string reportHtml(const RunResults& run, const std::filesystem::path& repor
           "<th data-type=\"number\">softraster ms</th>"
           "<th data-type=\"number\">Vulkan ms</th>"
           "</tr></thead>\n<tbody>\n";
-  for (std::size_t rank = 0; rank < order.size(); ++rank) html += summaryRow(results[order[rank]], rank);
+  for (std::size_t rank = 0; rank < order.size(); ++rank) {
+    html += summaryRow(results[order[rank]], rank, versusOf(order[rank]));
+  }
   html += "</tbody>\n</table>\n";
   html += "<h2>Difference heatmaps</h2>\n" + colourLegend("T") +
           "<p class=\"run\">T is the scene's colour threshold (8-bit steps); each scene's section shows its own. "
@@ -477,14 +587,14 @@ std::string reportHtml(const RunResults& run, const std::filesystem::path& repor
     const SceneResult& r = results[position];
     const bool open = isUnexpected(r.outcome) && !r.images.empty() && opened < 3;
     opened += open;
-    html += sceneSection(run, r, position, open, reportDir);
+    html += sceneSection(run, r, position, open, reportDir, versusOf(position));
   }
   html += "<script>\n" + std::string(report_assets::kScript) + "</script>\n</body>\n</html>\n";
   return html;
 }
 
-softraster::Status writeReport(const std::filesystem::path& dir, const RunResults& run) {
-  return writeDocument(dir / "index.html", reportHtml(run, dir), "report");
+softraster::Status writeReport(const std::filesystem::path& dir, const RunResults& run, const ReportBaseline* baseline) {
+  return writeDocument(dir / "index.html", reportHtml(run, dir, baseline), "report");
 }
 
 }  // namespace crosscheck

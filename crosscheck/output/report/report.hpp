@@ -11,17 +11,22 @@
 // The value readout reads DIR/<scene>/pixels.js (writePixelData): raw RGBA8 and float depth of
 // both frames, zlib-compressed and base64-encoded, loaded with a <script> element because a canvas
 // cannot read PNGs back on a page opened from file://.
+// With a baseline (an earlier run's results.json, results/baseline.hpp), a line at the top counts
+// new failures, fixed scenes and scenes whose metrics changed, each marked in the summary table
+// (the changed values too, with the baseline's in their tooltip), in the list at the top and in its
+// section, and a filter shows only the scenes that changed.
 // The page reads a run's results (results.hpp) only; the pixel data is written from the frames
 // while they exist, during the run.
-// Deliberately no charts, no history across runs (a baseline comparison needs results.json) and
-// no server.
+// Deliberately no charts, no history beyond one baseline and no server.
 #pragma once
 
 #include "render/render.hpp"
+#include "results/baseline.hpp"
 #include "results/results.hpp"
 
 #include <softraster/status.hpp>
 
+#include <ctime>
 #include <filesystem>
 #include <string>
 #include <vector>
@@ -42,13 +47,27 @@ softraster::Status writePixelData(const std::filesystem::path& root, const std::
 // (lowest first) and name.
 std::vector<std::size_t> worstFirst(const std::vector<SceneResult>& results);
 
+// The run to compare with: where its results.json was read, the run, and this run against it.
+struct ReportBaseline {
+  std::filesystem::path file;
+  std::time_t finished = 0;
+  RunResults run;
+  BaselineComparison versus;  // compareWithBaseline(this run, run)
+};
+
+// The arguments of a suite command line that change a render, as `crosscheck compare` takes them
+// (--softraster-fma, --device, --set, --validation; RunResults::renderArguments), in their order.
+std::string renderArgumentsOf(const std::string& commandLine);
+
 // The header shows the counts, the run's time and jobs, when it finished (UTC), its command line
 // and the JUnit file; then every unexpected result with thumbnails and the expectations lines
 // that would accept them, the filters, and the summary table. Links to scene files and the JUnit
 // file are relative to `reportDir` (the folder index.html is written to; empty: absolute).
-std::string reportHtml(const RunResults& run, const std::filesystem::path& reportDir = {});
+std::string reportHtml(const RunResults& run, const std::filesystem::path& reportDir = {},
+                       const ReportBaseline* baseline = nullptr);
 
 // Writes dir/index.html; the error is "FILE: cannot write report: reason".
-softraster::Status writeReport(const std::filesystem::path& dir, const RunResults& run);
+softraster::Status writeReport(const std::filesystem::path& dir, const RunResults& run,
+                               const ReportBaseline* baseline = nullptr);
 
 }  // namespace crosscheck

@@ -1,4 +1,5 @@
-/* crosscheck report: sorts and filters the summary table (status, name, only unexpected), opens
+/* crosscheck report: sorts and filters the summary table (status, name, only unexpected, only
+   changed against a baseline), opens
    scene sections, zoom, flicker, onion skin and wipe, the pixel value readout, copying the
    expectations lines, and the self-check that index.html?check runs (used by the Chromium test).
    Embedded inline into index.html by report.cpp. No network and no libraries: the readout's pixel
@@ -49,15 +50,18 @@
   //      the list of unexpected results and the scene sections alike ----
   var nameFilter = document.getElementById('filter-name');
   var unexpectedFilter = document.getElementById('filter-unexpected');
+  var baselineFilter = document.getElementById('filter-baseline');  // only with a baseline
   function applyFilters() {
     var statuses = {};
     forEach(document.querySelectorAll('input.filter-status'), function (box) { statuses[box.value] = box.checked; });
     var needle = nameFilter ? nameFilter.value.trim().toLowerCase() : '';
     var onlyUnexpected = unexpectedFilter && unexpectedFilter.checked;
+    var onlyChanged = baselineFilter && baselineFilter.checked;
     var shown = 0, total = 0;
     forEach(document.querySelectorAll('[data-status][data-name]'), function (el) {
       var visible = statuses[el.getAttribute('data-status')] !== false &&
                     (!onlyUnexpected || el.getAttribute('data-unexpected') === '1') &&
+                    (!onlyChanged || !!el.getAttribute('data-baseline')) &&
                     el.getAttribute('data-name').toLowerCase().indexOf(needle) !== -1;
       el.hidden = !visible;
       if (el.tagName === 'TR') { ++total; if (visible) ++shown; }
@@ -321,6 +325,26 @@
     nameFilter.value = ''; applyFilters();
     return counts.join(',');
   }
+  // The marks against the baseline in the table's default order ("name:mark mark,..."), the summary
+  // line, and how many rows "only changed against the baseline" leaves.
+  function baselineProbe() {
+    if (!table) return;
+    var marks = [];
+    forEach(table.tBodies[0].rows, function (row) {
+      var shown = Array.prototype.map.call(row.querySelectorAll('.mark'), function (m) { return m.textContent; });
+      if (shown.length) marks.push(row.getAttribute('data-name') + ':' + shown.join('+'));
+    });
+    body.setAttribute('data-baseline-marks', marks.join(','));
+    var summary = document.getElementById('baseline-summary');
+    body.setAttribute('data-baseline-summary', summary ? summary.textContent : '');
+    body.setAttribute('data-baseline-changed-cells', String(table.querySelectorAll('td.changed').length));
+    if (baselineFilter) {
+      baselineFilter.checked = true; applyFilters();
+      body.setAttribute('data-baseline-filter', String(Array.prototype.filter.call(table.tBodies[0].rows,
+                                                                                 function (row) { return !row.hidden; }).length));
+      baselineFilter.checked = false; applyFilters();
+    }
+  }
   function selfCheck() {
     body.setAttribute('data-check', 'running');
     forEach(document.querySelectorAll('details.scene'), function (d) { d.open = true; setUpSection(d); });
@@ -346,6 +370,7 @@
       body.setAttribute('data-sort-probe', sortProbe());
       body.setAttribute('data-flicker-probe', flickerProbe());
       body.setAttribute('data-filter-probe', filterProbe());
+      baselineProbe();
       var lines = document.getElementById('expectations-lines');
       body.setAttribute('data-expectations-lines', lines ? lines.value.replace(/\n/g, ' | ') : '');
       body.setAttribute('data-thumbnails', String(document.querySelectorAll('img.thumb').length));
