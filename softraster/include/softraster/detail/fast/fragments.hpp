@@ -188,6 +188,7 @@ class FastFragmentStage {
   [[SOFTRASTER_FAST_TARGET, gnu::flatten, gnu::noinline]] void walk(const EdgeFunction (&edges)[3], const PixelRect& box,
                                                                    const BlockPlanes& planes) const {
     const BlockEdges lanes = blockEdges(edges);
+    const DepthState depthState = target_.depth;  // a local, which no store to the framebuffer can change
     std::int64_t lowest[3], highest[3];  // of a block's lane offsets, -dcdx * column + dcdy * row
     for (int i = 0; i < 3; ++i) {
       const std::int64_t dx = edges[i].dcdx, dy = edges[i].dcdy;
@@ -197,7 +198,7 @@ class FastFragmentStage {
     walkBlocks(edges, box, lowest, highest,
                [&](int px, int py, unsigned inBox, bool inside, const std::int64_t (&value)[3]) {
                  const unsigned covered = inside ? inBox : insideBits(lanes, value) & inBox;
-                 if (covered != 0) shadeBlock(px, py, covered, inBox == 0xffu, planes);
+                 if (covered != 0) shadeBlock(px, py, covered, inBox == 0xffu, planes, depthState);
                });
   }
 
@@ -224,26 +225,27 @@ class FastFragmentStage {
 
   // Depth test, shading and writes of the lanes `covered` of the block whose lane 0 is (px, py);
   // `whole`: all eight lanes are inside the box (so inside the image), read and written plainly.
-  [[SOFTRASTER_FAST_TARGET]] void shadeBlock(int px, int py, unsigned covered, bool whole, const BlockPlanes& t) const {
+  [[SOFTRASTER_FAST_TARGET]] void shadeBlock(int px, int py, unsigned covered, bool whole, const BlockPlanes& t,
+                                             const DepthState depthState) const {
     const Floats fx = broadcast(static_cast<float>(px)) + kLaneX;
     const Floats fy = broadcast(static_cast<float>(py)) + kLaneY;
     const std::size_t first = static_cast<std::size_t>(py) * target_.width + static_cast<std::size_t>(px);
     Words stored{}, current{};
     Mask passes = ~Mask{};
-    if (target_.depth.testEnable) {
-      if (target_.depth.compareOp != CompareOp::Always || target_.depth.writeEnable) {
+    if (depthState.testEnable) {
+      if (depthState.compareOp != CompareOp::Always || depthState.writeEnable) {
         current = whole ? loadFullBlock(target_.depthStorage + first, target_.width)
                         : loadBlock(target_.depthStorage + first, target_.width, covered);
       }
       if (target_.inverseZ) {  // the course's 1/z buffer: larger is nearer, so compare the other way round
         stored = reinterpret_cast<Words>(evaluatePlane(t.oneOverW, fx, fy));
-        passes = depthTestPasses<Format>(target_.depth.compareOp, current, stored);
+        passes = depthTestPasses<Format>(depthState.compareOp, current, stored);
       } else {
         const Floats z = evaluatePlane(t.depth, fx, fy) + t.depthOffset;
         stored = depthToStorage<Format>(clampDepth(z, target_.depthRange));
-        passes = depthTestPasses<Format>(target_.depth.compareOp, stored, current);
+        passes = depthTestPasses<Format>(depthState.compareOp, stored, current);
       }
-      if (target_.depth.compareOp != CompareOp::Always) {
+      if (depthState.compareOp != CompareOp::Always) {
         covered &= maskBits(passes);
         if (covered == 0) return;
       }
@@ -257,7 +259,7 @@ class FastFragmentStage {
     } else {
       storeBlock(colour_ + first, target_.width, covered, colour);
     }
-    if (target_.depth.testEnable && target_.depth.writeEnable) {
+    if (depthState.testEnable && depthState.writeEnable) {
       if (whole) {  // lanes that fail keep the value just read: one plain store
         const Words written = reinterpret_cast<Words>(laneMask(covered));
         storeFullBlock(target_.depthStorage + first, target_.width, (stored & written) | (current & ~written));
@@ -344,12 +346,13 @@ class FastFragmentStage {
                                                                           const PixelRect& box,
                                                                           const BlockPlanes& planes) const {
     const SampleEdges samples = sampleEdges(edges);
+    const DepthState depthState = target_.depth;  // as in walk()
     walkBlocks(edges, box, samples.lowest, samples.highest,
                [&](int px, int py, unsigned inBox, bool inside, const std::int64_t (&value)[3]) {
                  const std::uint32_t inBoxSamples = kSpreadToSamples[inBox];
                  const std::uint32_t covered = (inside ? inBoxSamples : sampleInsideBits(samples, value) & inBoxSamples) &
                                                allowedBlockSamples(px, py);
-                 if (covered != 0) shadeSampleBlock(px, py, covered, inBox == 0xffu, planes);
+                 if (covered != 0) shadeSampleBlock(px, py, covered, inBox == 0xffu, planes, depthState);
                });
   }
 
@@ -370,7 +373,7 @@ class FastFragmentStage {
   // Depth test per sample, shading once per pixel and the writes of the samples `covered` (bit
   // 4 * lane + s) of the block whose lane 0 is (px, py), as the scalar shadeSamples does them.
   [[SOFTRASTER_FAST_TARGET]] void shadeSampleBlock(int px, int py, std::uint32_t covered, bool whole,
-                                                   const BlockPlanes& t) const {
+                                                   const BlockPlanes& t, const DepthState depthState) const {
     static constexpr Floats kSampleX = {kSamplePositions4x[0][0], kSamplePositions4x[1][0], kSamplePositions4x[2][0],
                                         kSamplePositions4x[3][0], kSamplePositions4x[0][0], kSamplePositions4x[1][0],
                                         kSamplePositions4x[2][0], kSamplePositions4x[3][0]};
@@ -383,20 +386,20 @@ class FastFragmentStage {
     const Floats x0 = broadcast(static_cast<float>(px)), y0 = broadcast(static_cast<float>(py));
     std::uint32_t passed = covered;
     Words stored[4]{}, current[4]{};
-    if (target_.depth.testEnable) {
+    if (depthState.testEnable) {
       passed = 0;
       for (int pair = 0; pair < 4; ++pair) {
         const unsigned bits = (covered >> (8 * pair)) & 0xffu;
         if (bits == 0) continue;
         const int row = pair >> 1, column = 2 * (pair & 1);
         const std::uint32_t* depth = target_.depthStorage + 4 * (firstPixel + static_cast<std::size_t>(row) * width + column);
-        if (target_.depth.compareOp != CompareOp::Always || target_.depth.writeEnable) current[pair] = whole ? loadWords(depth) : loadWords(depth, bits);
+        if (depthState.compareOp != CompareOp::Always || depthState.writeEnable) current[pair] = whole ? loadWords(depth) : loadWords(depth, bits);
         // The sample's position as the scalar path forms it: float(pixel) + sample offset.
         const Floats fx = (x0 + broadcast(static_cast<float>(column)) + kHalfX) + kSampleX;
         const Floats fy = (y0 + broadcast(static_cast<float>(row))) + kSampleY;
         const Floats z = evaluatePlane(t.depth, fx, fy) + t.depthOffset;
         stored[pair] = depthToStorage<Format>(clampDepth(z, target_.depthRange));
-        passed |= (bits & maskBits(depthTestPasses<Format>(target_.depth.compareOp, stored[pair], current[pair]))) << (8 * pair);
+        passed |= (bits & maskBits(depthTestPasses<Format>(depthState.compareOp, stored[pair], current[pair]))) << (8 * pair);
       }
       if (passed == 0) return;
     }
@@ -417,7 +420,7 @@ class FastFragmentStage {
           _mm256_permutevar8x32_epi32(colour, _mm256_setr_epi32(lane, lane, lane, lane, lane + 1, lane + 1, lane + 1, lane + 1)));
       if (target_.blend.readsDestination) c = blendColour(c, loadWords(colour_ + first, bits), target_.blend);
       storeWords(colour_ + first, bits, c);
-      if (target_.depth.testEnable && target_.depth.writeEnable) {
+      if (depthState.testEnable && depthState.writeEnable) {
         if (whole) {  // samples that fail keep the value just read: one plain store
           const Words written = reinterpret_cast<Words>(laneMask(bits));
           storeWords(target_.depthStorage + first, 0xffu, (stored[pair] & written) | (current[pair] & ~written));
