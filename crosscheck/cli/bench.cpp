@@ -17,24 +17,16 @@
 #include <fstream>
 
 namespace crosscheck::cli {
-namespace {
-
-int usageError(const std::string& message) {
-  std::fprintf(stderr, "crosscheck: %s\n", message.c_str());
-  return 2;
-}
-
-}  // namespace
 
 int benchCommand(const BenchCommand& command) {
-  if (command.frames < 1) return usageError("--frames must be at least 1");
+  if (command.frames < 1) return failWith("--frames must be at least 1");
   const auto suite = collectScenes(command.inputs.empty() ? std::vector<std::string>{std::string(kDefaultBenchDir)}
                                                           : command.inputs);
-  if (!suite) return usageError(suite.error());
+  if (!suite) return failWith(suite.error());
   std::vector<Scene> scenes;
   for (const SceneEntry& entry : *suite) {
     auto scene = loadScene(entry.path);
-    if (!scene) return usageError(scene.error());
+    if (!scene) return failWith(scene.error());
     scenes.push_back(std::move(*scene));
   }
   if (!command.jsonFile.empty()) {  // proven writable before the run (opened to append: not emptied yet)
@@ -42,7 +34,7 @@ int benchCommand(const BenchCommand& command) {
     std::error_code ec;
     if (path.has_parent_path()) std::filesystem::create_directories(path.parent_path(), ec);
     if (std::filesystem::is_directory(path, ec) || !std::ofstream(path, std::ios::app)) {
-      return usageError(command.jsonFile + ": cannot write this file");
+      return failWith(command.jsonFile + ": cannot write this file");
     }
   }
 

@@ -1,18 +1,19 @@
 // The subcommands behind the command line, one file each in cli/: what each was asked for
 // (filled by main.cpp from the arguments) and the function that does it, prints its output and
 // returns the exit status.
-//   render       one scene, one renderer, PNGs                  0 written, 1 an error
-//   compare      one scene, both renderers, text or JSON        0 within tolerance, 1 outside or an error
+//   render       one scene, one renderer, PNGs                  0 written
+//   compare      one scene, both renderers, text or JSON        0 within tolerance, 1 outside
 //   conformance  a suite of scenes, one line each, JUnit, PNGs  0 nothing unexpected, 1 something
 //   report       the conformance run plus DIR/index.html        as conformance
 //   merge        N shards' results.json into one report, JUnit  as conformance
 //                and results.json
 //   bench        frame times of every renderer, table and JSON  0 every method agrees with lavapipe,
 //                                                               1 a renderer failed or disagrees
-// 2 is bad usage everywhere (main.cpp's parse errors; the suite commands' unreadable
+// 2 is bad usage or a failure to finish everywhere (main.cpp's parse errors; a scene that cannot
+// be loaded, rendered or written; the suite commands' unreadable
 // expectations, shards, folders or output paths; merge's unreadable results or shards that do not
 // make up one suite).
-// Errors print as one line, "crosscheck: ..." on stderr.
+// Errors print as one line, "crosscheck: ..." on stderr (failWith, failIn below).
 // Deliberately no argument parsing here (main.cpp does that with CLI11) and no rendering or
 // formatting of their own: each command strings together scene/, render/, compare/, run/ and
 // output/.
@@ -26,12 +27,27 @@
 #include <vkref/renderer.hpp>
 
 #include <cstddef>
+#include <cstdio>
+#include <filesystem>
 #include <functional>
 #include <string>
 #include <string_view>
 #include <vector>
 
 namespace crosscheck::cli {
+
+// Anything that kept a command from finishing: one error line, "crosscheck: MESSAGE" on stderr,
+// and exit status 2.
+inline int failWith(const std::string& message) {
+  std::fprintf(stderr, "crosscheck: %s\n", message.c_str());
+  return 2;
+}
+inline int failWith(const softraster::Status& status) { return failWith(status.message()); }
+
+// A renderer's error about the scene ("vulkan: draw 0: ..."), with the scene file named first.
+inline int failIn(const std::filesystem::path& scene, const softraster::Status& status) {
+  return failWith(scene.string() + ": " + status.message());
+}
 
 // Options the single-scene commands share.
 struct SceneOptions {

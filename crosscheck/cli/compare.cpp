@@ -15,17 +15,6 @@
 namespace crosscheck::cli {
 namespace {
 
-// Anything that kept the command from finishing is one error line and exit status 2.
-int fail(const softraster::Status& status) {
-  std::fprintf(stderr, "crosscheck: %s\n", status.message().c_str());
-  return 2;
-}
-
-// A renderer's error about the scene ("vulkan: draw 0: ..."), with the scene file named first.
-int failIn(const std::filesystem::path& scene, const softraster::Status& status) {
-  return fail(softraster::Status::error(scene.string() + ": " + status.message()));
-}
-
 // The one-scene run the writers read.
 RunResults resultsOf(const Scene& scene, const Comparison& comparison, const Frame& soft, const Frame& vulkan) {
   RunResults run;
@@ -48,16 +37,16 @@ RunResults resultsOf(const Scene& scene, const Comparison& comparison, const Fra
 int compareCommand(const CompareCommand& command) {
   const SceneOptions& options = command.options;
   const auto scene = loadScene(options.scene, options.overrides);
-  if (!scene) return fail(scene.status());
+  if (!scene) return failWith(scene.status());
   const auto soft = renderSoftraster(*scene, options.softraster);
   if (!soft) return failIn(scene->path, soft.status());
   const auto vulkan = openVulkan(options.device);
-  if (!vulkan) return fail(vulkan.status());
+  if (!vulkan) return failWith(vulkan.status());
   const auto reference = renderVulkan(*scene, **vulkan);
   if (!reference) return failIn(scene->path, reference.status());
   const Comparison comparison = compareFrames(*soft, *reference, *scene);
   if (!command.outDir.empty()) {
-    if (const auto written = writeCompareImages(command.outDir, *scene, *soft, *reference); !written) return fail(written);
+    if (const auto written = writeCompareImages(command.outDir, *scene, *soft, *reference); !written) return failWith(written);
   }
   const RunResults run = resultsOf(*scene, comparison, *soft, *reference);
   std::fputs((command.json ? compareJson(run) : compareText(run)).c_str(), stdout);

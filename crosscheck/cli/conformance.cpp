@@ -30,10 +30,6 @@ namespace {
 using Clock = std::chrono::steady_clock;
 using softraster::Status;
 
-int usageError(const std::string& message) {
-  std::fprintf(stderr, "crosscheck: %s\n", message.c_str());
-  return 2;
-}
 
 // Creates the folder and proves a file can be created in it, so a run does not end in an error.
 Status prepareOutputDir(const std::string& dir) {
@@ -96,29 +92,29 @@ class Printer {
 }  // namespace
 
 int runSuite(const SuiteCommand& command, const SuiteOutputs& outputs) {
-  if (command.jobs < 1) return usageError("--jobs must be at least 1");
+  if (command.jobs < 1) return failWith("--jobs must be at least 1");
   Shard shard;
   if (!command.shard.empty()) {
     const auto parsed = parseShard(command.shard);
-    if (!parsed) return usageError(parsed.error());
+    if (!parsed) return failWith(parsed.error());
     shard = *parsed;
   }
   for (const std::string& assignment : command.overrides) {
-    if (const Status form = checkOverride(assignment); !form) return usageError(form.message());
+    if (const Status form = checkOverride(assignment); !form) return failWith(form.message());
   }
   std::optional<Expectations> expectations;
   if (!command.expectationsFile.empty()) {
     auto loaded = loadExpectations(command.expectationsFile);
-    if (!loaded) return usageError(loaded.error());
+    if (!loaded) return failWith(loaded.error());
     expectations = std::move(*loaded);
   }
   const auto suite = collectScenes(command.inputs);
-  if (!suite) return usageError(suite.error());
+  if (!suite) return failWith(suite.error());
   if (!outputs.imageDir.empty()) {
-    if (const Status prepared = prepareOutputDir(outputs.imageDir); !prepared) return usageError(prepared.message());
+    if (const Status prepared = prepareOutputDir(outputs.imageDir); !prepared) return failWith(prepared.message());
   }
   if (!command.junitFile.empty()) {
-    if (const Status prepared = prepareOutputFile(command.junitFile); !prepared) return usageError(prepared.message());
+    if (const Status prepared = prepareOutputFile(command.junitFile); !prepared) return failWith(prepared.message());
   }
 
   if (expectations) {

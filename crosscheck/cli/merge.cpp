@@ -20,24 +20,16 @@
 #include <filesystem>
 
 namespace crosscheck::cli {
-namespace {
-
-int error(const std::string& message) {
-  std::fprintf(stderr, "crosscheck: %s\n", message.c_str());
-  return 2;
-}
-
-}  // namespace
 
 int mergeCommand(const MergeCommand& command) {
   std::vector<ShardResults> shards;
   for (const std::string& input : command.inputs) {
     auto run = readResultsFile(input);
-    if (!run) return error(run.error());
+    if (!run) return failWith(run.error());
     shards.push_back({resultsFileOf(input), std::move(*run)});
   }
   auto merged = mergeShards(shards);
-  if (!merged) return error(merged.error());
+  if (!merged) return failWith(merged.error());
   RunResults& run = *merged;
   const std::filesystem::path dir = command.outDir;
   run.commandLine = command.commandLine;
@@ -45,9 +37,9 @@ int mergeCommand(const MergeCommand& command) {
 
   std::error_code ec;
   std::filesystem::create_directories(dir, ec);
-  if (ec || !std::filesystem::is_directory(dir)) return error(dir.string() + ": cannot create output directory");
+  if (ec || !std::filesystem::is_directory(dir)) return failWith(dir.string() + ": cannot create output directory");
   for (SceneResult& r : run.scenes) {
-    if (const softraster::Status copied = copySceneFiles(&r, dir); !copied) return error(copied.message());
+    if (const softraster::Status copied = copySceneFiles(&r, dir); !copied) return failWith(copied.message());
   }
   std::printf("crosscheck merge: %zu scene%s from %zu file%s\n", run.scenes.size(), run.scenes.size() == 1 ? "" : "s",
               shards.size(), shards.size() == 1 ? "" : "s");
@@ -56,7 +48,7 @@ int mergeCommand(const MergeCommand& command) {
 
   const softraster::Status written[] = {writeJUnit(run.junitFile, run), writeResultsFile(dir, run), writeReport(dir, run)};
   for (const softraster::Status& status : written) {
-    if (!status) return error(status.message());
+    if (!status) return failWith(status.message());
   }
   const Counts counts = countResults(run.scenes);
   const std::string summary = summaryText(run);

@@ -10,40 +10,26 @@
 #include <cstdio>
 
 namespace crosscheck::cli {
-namespace {
-
-// Anything that kept the command from finishing is one error line and exit status 2.
-int fail(const softraster::Status& status) {
-  std::fprintf(stderr, "crosscheck: %s\n", status.message().c_str());
-  return 2;
-}
-
-// A renderer's error about the scene ("vulkan: draw 0: ..."), with the scene file named first.
-int failIn(const std::filesystem::path& scene, const softraster::Status& status) {
-  return fail(softraster::Status::error(scene.string() + ": " + status.message()));
-}
-
-}  // namespace
 
 int renderCommand(const RenderCommand& command) {
   const auto scene = loadScene(command.options.scene, command.options.overrides);
-  if (!scene) return fail(scene.status());
+  if (!scene) return failWith(scene.status());
   softraster::Result<std::unique_ptr<vkref::Renderer>> vulkan = std::unique_ptr<vkref::Renderer>();
   if (command.renderer == "vulkan") {
     vulkan = openVulkan(command.options.device);
-    if (!vulkan) return fail(vulkan.status());  // no driver: not about the scene
+    if (!vulkan) return failWith(vulkan.status());  // no driver: not about the scene
   }
   const auto frame = command.renderer == "vulkan" ? renderVulkan(*scene, **vulkan)
                                                   : renderSoftraster(*scene, command.options.softraster);
   if (!frame) return failIn(scene->path, frame.status());
   if (const auto written = writePng(command.output, frame->width, frame->height, frame->rgba); !written) {
-    return fail(written);
+    return failWith(written);
   }
   if (!command.depthOutput.empty()) {
     const bool ranged = command.depthRange.size() == 2;
     const float lo = ranged ? command.depthRange[0] : 0.0f, hi = ranged ? command.depthRange[1] : 0.0f;
     if (const auto written = writeDepthView(command.depthOutput, *frame, scene->clearDepth, lo, hi); !written) {
-      return fail(written);
+      return failWith(written);
     }
   }
   // What was used and what was written, one line on stdout.

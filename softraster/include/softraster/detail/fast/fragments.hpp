@@ -6,8 +6,9 @@
 //     division) into the blocks wholly outside an edge (skipped) and those wholly inside all
 //     three (every lane covered, no per-lane test); other blocks take their coverage from the
 //     64-bit edge functions at their eight pixel centres;
-//   - the depth state (test, compare op, write) is read per block, a branch the predictor
-//     learns (one block loop per stage, not one per state, keeps a shader's compile time down);
+//   - the depth state (test, compare op, write) is copied once per triangle and branched on per
+//     block, branches the predictor learns (one block loop per stage, not one per state, keeps a
+//     shader's compile time down);
 //     a block wholly inside the box reads and writes with plain loads and stores;
 //   - depth per lane at the integer pixel coordinates (no incremental stepping: the plane is
 //     evaluated per pixel exactly as the scalar path does), the depth test before shading;

@@ -26,8 +26,6 @@
 
 namespace softraster::detail {
 
-// The instructions a fragment stage's code is compiled for (where the draw loop runs it on
-// other threads, fast/bands.hpp compiles it the same way there).
 // What a fragment stage tests against and writes to, for one draw (or one band of it): derived
 // once from the state and the framebuffer, shared by the scalar and the fast stage.
 struct FragmentTarget {
