@@ -284,6 +284,20 @@ case $case_name in
     expect_out '^  flat_triangle +[0-9.]+ ms: load [0-9.]+, softraster [0-9.]+ \(draw [0-9.]+\), vulkan [0-9.]+ \(submit [0-9.]+\), compare [0-9.]+, images [0-9.]+$'
     expect_out '^  malformed +[0-9.]+ ms: load [0-9.]+, softraster 0.00, vulkan 0.00, compare 0.00, images 0.00$'
     ;;
+  bad_baseline)
+    # report --baseline DIR that holds no readable results.json: one error line naming the file,
+    # exit 2, before any scene runs.
+    run report "$fixtures/flat_triangle.json" --baseline "$artifacts/none" -o "$artifacts/r1"
+    expect_status 2
+    expect_one_error_line
+    expect_err "^crosscheck: --baseline: $artifacts/none: cannot read results file: file not found$"
+    mkdir -p "$artifacts/broken"
+    echo '{"format": 1, "scenes": [' >"$artifacts/broken/results.json"
+    run report "$fixtures/flat_triangle.json" --baseline "$artifacts/broken" -o "$artifacts/r2"
+    expect_status 2
+    expect_one_error_line
+    expect_err "^crosscheck: --baseline: $artifacts/broken/results.json: "
+    ;;
   merge_errors)
     # merge: one error line naming the file and the scene, exit 2, for shards that do not make up
     # one suite; the merged outputs otherwise (exit status as conformance), usable without the shards.
