@@ -8,7 +8,7 @@
 //                     [--junit FILE] [--timeout SECONDS] [--memory-limit MB] [--set KEY.PATH=VALUE ...]
 //   crosscheck merge RESULTS.json|DIR ... -o DIR [--junit FILE]
 //   crosscheck bench [SCENE|DIR ...] [--frames N] [--warmup N] [--threads N] [-o FILE.json]
-// render and compare also take --method exact|exact-scalar and --threads N (softraster's).
+// render and compare also take --method NAME (options.hpp kMethods: exact, exact-scalar, ...) and --threads N (softraster's).
 // Exit status (README, "Exit status"): 0 success / within tolerance / nothing unexpected; 1
 // outside tolerance or an unexpected conformance result; 2 anything that kept the comparison from
 // happening: bad usage, a scene or file that cannot be loaded, a renderer's error, an unwritable
@@ -68,6 +68,13 @@ constexpr const char* kUsage =
     "       crosscheck bench [SCENE|DIR ...] [--frames N] [--warmup N] [--threads N] [-o FILE.json]\n"
     "       (crosscheck SUBCOMMAND --help for every option)";
 
+// softraster's method names, "exact, exact-scalar, ...", for usage and errors.
+std::string methodList() {
+  std::string list;
+  for (softraster::Method m : softraster::kMethods) list += (list.empty() ? "" : ", ") + std::string(softraster::methodName(m));
+  return list;
+}
+
 // Flags several subcommands share, as typed.
 struct CommonFlags {
   std::vector<std::string> overrides;
@@ -81,8 +88,8 @@ struct CommonFlags {
 
   // Checks method and threads; false after printing one error line.
   bool checked() {
-    if (method != "exact" && method != "exact-scalar") {
-      std::fprintf(stderr, "crosscheck: --method %s: expected exact or exact-scalar\n", method.c_str());
+    if (!softraster::methodFromName(method)) {
+      std::fprintf(stderr, "crosscheck: --method %s: expected one of %s\n", method.c_str(), methodList().c_str());
       return false;
     }
     const auto parsed = wholeNumber("--threads", threadsText, 0, kMaxThreads);
@@ -93,7 +100,7 @@ struct CommonFlags {
 
   softraster::ContextOptions softraster() const {
     softraster::ContextOptions options;
-    options.method = method == "exact-scalar" ? softraster::Method::ExactScalar : softraster::Method::Exact;
+    options.method = *softraster::methodFromName(method);
     options.threads = threads;
     if (fma != "auto") options.fusedMultiplyAdd = fma == "fused";
     if (softrasterDepth == "inverse-z") options.depthMode = softraster::DepthMode::InverseZ;

@@ -38,7 +38,7 @@ int renderCommand(const RenderCommand& command) {
     used = "Vulkan (" + (*vulkan)->deviceName() + ")";
   } else {
     const softraster::ContextOptions& o = command.options.softraster;
-    used += std::string(" (") + (o.method == softraster::Method::ExactScalar ? "exact-scalar" : "exact") + ", " +
+    used += std::string(" (") + std::string(softraster::methodName(o.method)) + ", " +
             (o.threads == 0 ? std::string("every core") : std::to_string(o.threads) + (o.threads == 1 ? " thread" : " threads")) +
             (o.depthMode == softraster::DepthMode::InverseZ ? ", 1/z depth" : "") + ")";
   }

@@ -113,7 +113,7 @@ std::unique_ptr<Contender> makeSoftraster(const Scene& scene, const BenchOptions
   const softraster::Status first = contender->frame();
   contender->run.setupMilliseconds = millisecondsSince(start);
   contender->run.renderer = "softraster";
-  contender->run.method = method == softraster::Method::Exact ? "exact" : "exact-scalar";
+  contender->run.method = softraster::methodName(method);
   // The scalar method draws on the calling thread alone, whatever the Context's thread count.
   contender->run.threads = method == softraster::Method::Exact ? contender->threads() : 1;
   if (!first) contender->run.error = first.message();

@@ -53,7 +53,7 @@ case $case_name in
       bench tests/data/bench/no_such_scene.json
     check_usage '^crosscheck: scenez/: no such file or directory$' bench scenez/
     check_usage '^crosscheck: tests/data/malformed_syntax.json: parse error at line 3' bench tests/data/malformed_syntax.json
-    check_usage '^crosscheck: --method fast: expected exact or exact-scalar$' \
+    check_usage '^crosscheck: --method fast: expected one of exact, exact-scalar$' \
       render "$tiny" --method fast -o "$artifacts/x.png"
     check_usage '^crosscheck: --threads many: expected a whole number from 0 to 1024$' compare "$tiny" --threads many
     check_usage '^crosscheck: --threads 5000: expected a whole number from 0 to 1024$' compare "$tiny" --threads 5000

@@ -6,7 +6,10 @@
 
 #include <softraster/detail/fused_multiply_add.hpp>
 
+#include <array>
 #include <cstdint>
+#include <optional>
+#include <string_view>
 
 namespace softraster {
 
@@ -27,6 +30,26 @@ enum class DepthMode : std::uint8_t { Vulkan, InverseZ };
 //                everything else takes the scalar path.
 //   ExactScalar: lavapipe's rules, one pixel at a time.
 enum class Method : std::uint8_t { Exact, ExactScalar };
+
+// Every method, in the order the CLI, the bench and the chart list them.
+inline constexpr std::array kMethods{Method::Exact, Method::ExactScalar};
+
+// A method's name on the command line and in results ("exact", "exact-scalar").
+constexpr std::string_view methodName(Method method) {
+  switch (method) {
+    case Method::Exact: return "exact";
+    case Method::ExactScalar: return "exact-scalar";
+  }
+  return "unknown";
+}
+
+// The method a name stands for, or nothing for an unknown name.
+constexpr std::optional<Method> methodFromName(std::string_view name) {
+  for (Method m : kMethods) {
+    if (methodName(m) == name) return m;
+  }
+  return std::nullopt;
+}
 
 struct ContextOptions {
   Method method = Method::Exact;
