@@ -16,6 +16,8 @@
 // both give the same bits. A shader whose fragment function takes only `const float*` (not a
 // template) still draws, on the scalar path.
 // and optionally
+//   static constexpr bool S::kQuads = true;   the fragment function samples textures (texture.hpp):
+//                                             written for FloatBatch only, shaded in 2x2 quads
 //   static constexpr std::array<Interpolation, kVaryings> S::kInterpolation;    default: all perspective
 //   static float S::pointSize(const Uniforms&, const Vertex&);                  gl_PointSize; default 1
 // Anything else a shader declares (the project's twins declare kAttributes, VertexAttribute
@@ -70,7 +72,8 @@ concept HasShaderVaryingCount = requires {
 template <class S>
 concept HasShaderVertexMember = requires { &S::vertex; };
 template <class S>
-concept HasShaderFragmentMember = requires { &S::fragment; } || requires { &S::template fragment<float>; };
+concept HasShaderFragmentMember = requires { &S::fragment; } || requires { &S::template fragment<float>; } ||
+                                  requires { &S::template fragment<FloatBatch>; };
 // The member is a non-static member function (the commonest slip: a shader is never an object).
 template <class S>
 concept HasNonStaticShaderVertex = requires { requires std::is_member_function_pointer_v<decltype(&S::vertex)>; };
@@ -82,8 +85,17 @@ template <class S>
 concept HasStaticShaderVertex = requires(const typename S::Uniforms& u, const typename S::Vertex& v, float* out) {
   S::vertex(u, v, out);
 };
+// A shader that samples textures (texture.hpp) declares kQuads: its fragment function is written
+// for FloatBatch only (a batch of two 2x2 quads, the derivatives' source) and every path shades
+// it in quads.
 template <class S>
-concept HasStaticShaderFragment = requires(const typename S::Uniforms& u, const float* in) {
+concept ShadesQuads = requires {
+  { S::kQuads } -> std::convertible_to<bool>;
+} && S::kQuads && requires(const typename S::Uniforms& u, const FloatBatch* in) {
+  { S::template fragment<FloatBatch>(u, in) } -> std::same_as<Vec4T<FloatBatch>>;
+};
+template <class S>
+concept HasStaticShaderFragment = ShadesQuads<S> || requires(const typename S::Uniforms& u, const float* in) {
   S::fragment(u, in);
 } || requires(const typename S::Uniforms& u, const float* in) { S::template fragment<float>(u, in); };
 template <class S>
@@ -91,7 +103,7 @@ concept HasShaderVertexSignature = requires(const typename S::Uniforms& u, const
   { S::vertex(u, v, out) } -> std::same_as<Vec4>;
 };
 template <class S>
-concept HasShaderFragmentSignature = requires(const typename S::Uniforms& u, const float* in) {
+concept HasShaderFragmentSignature = ShadesQuads<S> || requires(const typename S::Uniforms& u, const float* in) {
   { S::fragment(u, in) } -> std::same_as<Vec4>;
 } || requires(const typename S::Uniforms& u, const float* in) {
   { S::template fragment<float>(u, in) } -> std::same_as<Vec4>;

@@ -50,6 +50,7 @@ template <class Shader, DepthFormat Format>
 class FastFragmentStage {
  public:
   static constexpr int N = Shader::kVaryings;
+  static constexpr bool kQuads = ShadesQuads<Shader>;  // shaded in aligned 2x2 quads (a shader that samples textures)
   static constexpr InstructionSet kInstructionSet = InstructionSet::Avx2Fma;
 
   FastFragmentStage(const PipelineState& state, const typename Shader::Uniforms& uniforms, Framebuffer& framebuffer,
@@ -150,17 +151,22 @@ class FastFragmentStage {
   [[SOFTRASTER_FAST_TARGET]] static void walkBlocks(const EdgeFunction (&edges)[3], const PixelRect& box,
                                                     const std::int64_t (&lowest)[3], const std::int64_t (&highest)[3],
                                                     Block&& block) {
+    // A shader that samples textures is shaded in whole 2x2 quads at even coordinates (as
+    // lavapipe's are): the walk starts at the quad-aligned corner, and lanes outside the box are
+    // helpers (shaded for the derivatives, never written).
+    const PixelRect keep = box;
+    const PixelRect walked = kQuads ? PixelRect{box.x0 & ~1, box.y0 & ~1, box.x1, box.y1} : box;
     std::int64_t rowStart[3], stepX[3];
     for (int i = 0; i < 3; ++i) {
-      rowStart[i] = edges[i].c + edges[i].dcdy * box.y0 - edges[i].dcdx * box.x0;
+      rowStart[i] = edges[i].c + edges[i].dcdy * walked.y0 - edges[i].dcdx * walked.x0;
       stepX[i] = kBatchWidth * edges[i].dcdx;
     }
-    const bool corners = cornersDecide(edges, box);
-    const std::int64_t blocks = (box.x1 - box.x0) / kBatchWidth + 1;
+    const bool corners = cornersDecide(edges, walked);
+    const std::int64_t blocks = (walked.x1 - walked.x0) / kBatchWidth + 1;
     // Six divisions per row pay off over a wide row; a narrow one tests each block's corners.
     const bool cut = corners && blocks > kCutBlocks;
-    for (int py = box.y0; py <= box.y1; py += kBatchHeight) {
-      const unsigned rows = py + 1 <= box.y1 ? 0xffu : 0x0fu;
+    for (int py = walked.y0; py <= walked.y1; py += kBatchHeight) {
+      const unsigned rows = (py >= keep.y0 ? 0x0fu : 0u) | (py + 1 <= keep.y1 ? 0xf0u : 0u);
       std::int64_t first = 0, last = blocks - 1, innerFirst = 1, innerLast = 0;
       if (cut) {
         innerFirst = 0, innerLast = blocks - 1;
@@ -172,9 +178,10 @@ class FastFragmentStage {
       std::int64_t value[3];
       for (int i = 0; i < 3; ++i) value[i] = rowStart[i] - first * stepX[i];
       for (std::int64_t k = first; k <= last; ++k, value[0] -= stepX[0], value[1] -= stepX[1], value[2] -= stepX[2]) {
-        const int px = box.x0 + static_cast<int>(k) * kBatchWidth;
-        const int columns = std::min(kBatchWidth, box.x1 - px + 1);
-        const unsigned inBox = rows & (((1u << columns) - 1u) * 0x11u);
+        const int px = walked.x0 + static_cast<int>(k) * kBatchWidth;
+        const int columns = std::min(kBatchWidth, keep.x1 - px + 1);
+        const unsigned left = px < keep.x0 ? (1u << (keep.x0 - px)) - 1u : 0u;  // helper columns left of the box
+        const unsigned inBox = rows & ((((1u << columns) - 1u) & ~left) * 0x11u);
         bool inside = k >= innerFirst && k <= innerLast;
         if (corners && !cut) {
           if (value[0] + highest[0] <= 0 || value[1] + highest[1] <= 0 || value[2] + highest[2] <= 0) continue;

@@ -17,6 +17,7 @@
 #include <softraster/detail/instruction_set.hpp>
 #include <softraster/framebuffer.hpp>
 #include <softraster/shader.hpp>
+#include <softraster/simd.hpp>
 #include <softraster/state.hpp>
 
 #include <array>
@@ -98,8 +99,7 @@ class FragmentStage {
         }
         if (!passes) return;
       }
-      interpolateVaryings<Fused>(t, kInterpolation, fx, fy, varyings.data());
-      blendColour(target_.colour + 4 * pixel, shadeFragment<Shader>(uniforms_, varyings.data()), target_.blend);
+      blendColour(target_.colour + 4 * pixel, shadeAt(t, px, py, 0.0f, varyings.data()), target_.blend);
       if (target_.depth.testEnable && target_.depth.writeEnable) target_.depthStorage[pixel] = stored;
     });
   }
@@ -124,8 +124,7 @@ class FragmentStage {
         }
       }
       if (passed == 0) return;
-      interpolateVaryings<Fused>(t, kInterpolation, fx + 0.5f, fy + 0.5f, varyings.data());
-      const Vec4 c = shadeFragment<Shader>(uniforms_, varyings.data());
+      const Vec4 c = shadeAt(t, px, py, 0.5f, varyings.data());
       for (int s = 0; s < 4; ++s) {
         if (!(passed & (1u << s))) continue;
         const std::size_t sample = pixel * 4 + static_cast<std::size_t>(s);
@@ -133,6 +132,31 @@ class FragmentStage {
         if (target_.depth.testEnable && target_.depth.writeEnable) target_.depthStorage[sample] = stored[s];
       }
     });
+  }
+
+  // The shader's colour for pixel (px, py), its varyings at (px + offset, py + offset) (the plane
+  // origin: 0 for single-sample planes, 0.5 for the MSAA ones). A shader that samples textures
+  // is shaded with the 4x2 block whose left 2x2 quad holds the pixel (lanes as in simd.hpp), the
+  // quad's other pixels as helpers, and this pixel's lane taken: its derivatives are the quad's.
+  Vec4 shadeAt(const TriangleInterpolants<N>& t, int px, int py, float offset, float* varyings) const {
+    if constexpr (ShadesQuads<Shader>) {
+      const int qx = px & ~1, qy = py & ~1;
+      alignas(32) float lanes[N == 0 ? 1 : N][kBatchLanes] = {};
+      for (int lane = 0; lane < kBatchLanes; ++lane) {
+        interpolateVaryings<Fused>(t, kInterpolation, static_cast<float>(qx + lane % 4) + offset,
+                                   static_cast<float>(qy + lane / 4) + offset, varyings);
+        for (int i = 0; i < N; ++i) lanes[i][lane] = varyings[i];
+      }
+      std::array<FloatBatch, (N == 0 ? 1 : N)> batch{};
+      for (int i = 0; i < N; ++i) batch[static_cast<std::size_t>(i)] = FloatBatch::load(lanes[i]);
+      const Vec4T<FloatBatch> c = Shader::template fragment<FloatBatch>(uniforms_, batch.data());
+      const int lane = (px - qx) + 4 * (py - qy);
+      return {c.x[lane], c.y[lane], c.z[lane], c.w[lane]};
+    } else {
+      interpolateVaryings<Fused>(t, kInterpolation, static_cast<float>(px) + offset, static_cast<float>(py) + offset,
+                                 varyings);  // + 0 changes no pixel coordinate (none is -0)
+      return shadeFragment<Shader>(uniforms_, varyings);
+    }
   }
 
   static constexpr InterpolationSet<N> kInterpolation = interpolationOf<Shader>();

@@ -1,0 +1,164 @@
+// Textures: creation and its errors, the mip chain both renderers upload, the sampler states
+// softraster refuses, and the pieces of lavapipe's 8-bit sampling path on values worked out by
+// hand from gallivm's instructions (pmulhrsw lerp, cvtps2dq rounding, wrap arithmetic, the LOD).
+// Whole images are cross-checked against lavapipe by the texture_*.json scenes.
+#include <softraster/texture.hpp>
+
+#include <gtest/gtest.h>
+
+#include <cstdint>
+#include <vector>
+
+namespace {
+
+using namespace softraster;
+namespace t = softraster::detail::texture;
+
+std::vector<std::uint8_t> texels(std::uint32_t w, std::uint32_t h, std::uint8_t value = 0) {
+  return std::vector<std::uint8_t>(std::size_t{w} * h * 4, value);
+}
+
+TEST(Texture, CreateRefusesBadSizesAndData) {
+  EXPECT_FALSE(Texture::create(TextureFormat::R8G8B8A8Unorm, 0, 4, {}, false));
+  EXPECT_FALSE(Texture::create(TextureFormat::R8G8B8A8Unorm, 16385, 1, texels(16385, 1), false));
+  const auto shortData = texels(4, 4);
+  const auto r = Texture::create(TextureFormat::R8G8B8A8Unorm, 4, 5, shortData, false);
+  ASSERT_FALSE(r);
+  EXPECT_EQ(r.error(), "texture data has 64 bytes where 4x5 RGBA8 needs 80");
+}
+
+TEST(Texture, MipChainHalvesDownToOneTexel) {
+  const auto data = texels(48, 40, 7);
+  const auto r = Texture::create(TextureFormat::R8G8B8A8Unorm, 48, 40, data, true);
+  ASSERT_TRUE(r) << r.error();
+  const std::vector<std::pair<std::uint32_t, std::uint32_t>> sizes{{48, 40}, {24, 20}, {12, 10}, {6, 5}, {3, 2}, {1, 1}};
+  ASSERT_EQ(r->levels(), sizes.size());
+  for (std::uint32_t i = 0; i < r->levels(); ++i) {
+    EXPECT_EQ(r->level(i).width, sizes[i].first);
+    EXPECT_EQ(r->level(i).height, sizes[i].second);
+    EXPECT_EQ(r->level(i).rgba.size(), std::size_t{sizes[i].first} * sizes[i].second * 4);
+    EXPECT_EQ(r->level(i).rgba[0], 7);  // a constant image stays constant
+  }
+}
+
+TEST(Texture, MipLevelIsTheRoundedAverageWithOddEdgesRepeated) {
+  TextureLevel level{3, 1, {}};
+  level.rgba = {0, 0, 0, 0, 1, 2, 255, 255, 10, 20, 30, 40};
+  const TextureLevel next = Texture::generateMipLevel(level);
+  ASSERT_EQ(next.width, 1u);
+  ASSERT_EQ(next.height, 1u);
+  // texels (0,0) and (1,0), and the missing row read as row 0 again:
+  EXPECT_EQ(next.rgba[0], 1);    // (0 + 1 + 0 + 1 + 2) / 4 = 1
+  EXPECT_EQ(next.rgba[1], 1);    // (0 + 2 + 0 + 2 + 2) / 4 = 1
+  EXPECT_EQ(next.rgba[2], 128);  // (0 + 255 + 0 + 255 + 2) / 4 = 128
+}
+
+TEST(Sampler, ValidateRefusesWhatIsNotMatchedYet) {
+  const auto data = texels(4, 4);
+  const auto tex = Texture::create(TextureFormat::R8G8B8A8Unorm, 4, 4, data, false);
+  const auto srgb = Texture::create(TextureFormat::R8G8B8A8Srgb, 4, 4, data, false);
+  ASSERT_TRUE(tex && srgb);
+  EXPECT_TRUE(Sampler2D{&*tex, {}}.validate());
+  EXPECT_EQ(Sampler2D{}.validate().message(), "the sampler has no texture");
+  EXPECT_FALSE(Sampler2D{&*srgb, {}}.validate());
+  SamplerState mirrored;
+  mirrored.addressModeV = AddressMode::MirroredRepeat;
+  EXPECT_NE(Sampler2D{&*tex, mirrored}.validate().message().find("mirrored repeat"), std::string::npos);
+  SamplerState border;
+  border.addressModeU = AddressMode::ClampToBorder;
+  EXPECT_NE(Sampler2D{&*tex, border}.validate().message().find("clamp to border"), std::string::npos);
+  SamplerState lod;
+  lod.minLod = 3;
+  lod.maxLod = 2;
+  EXPECT_FALSE(Sampler2D{&*tex, lod}.validate());
+  lod.minLod = 0;
+  lod.mipLodBias = 17;
+  EXPECT_FALSE(Sampler2D{&*tex, lod}.validate());
+}
+
+TEST(Sampling, LerpIsPmulhrswOnPrescaledWeights) {
+  EXPECT_EQ(t::lerpUnorm8(0, 10, 200), 10);
+  EXPECT_EQ(t::lerpUnorm8(255, 0, 255), 254);  // (255 * 255 * 128 + 2^14) >> 15 = 254: weight 255 is not 1
+  EXPECT_EQ(t::lerpUnorm8(128, 0, 255), 128);
+  EXPECT_EQ(t::lerpUnorm8(128, 255, 0), 127);  // 255 + ((128 * -255 * 128 + 2^14) >> 15) = 255 - 128
+  EXPECT_EQ(t::lerpUnorm8(1, 0, 255), 1);      // (32640 + 16384) >> 15 = 1
+  EXPECT_EQ(t::lerpUnorm8(1, 0, 127), 0);      // (16256 + 16384) >> 15 = 0
+}
+
+TEST(Sampling, RoundingAndTruncationAreTheSseConversions) {
+  EXPECT_EQ(t::roundToInt(2.5f), 2);
+  EXPECT_EQ(t::roundToInt(3.5f), 4);
+  EXPECT_EQ(t::roundToInt(-0.5f), 0);
+  EXPECT_EQ(t::roundToInt(3e9f), INT32_MIN);
+  EXPECT_EQ(t::truncateToInt(-1.75f), -1);
+  EXPECT_EQ(t::floorToInt(-0.25f), -1);
+  EXPECT_EQ(t::floorToInt(std::numeric_limits<float>::quiet_NaN()), INT32_MIN);
+}
+
+TEST(Sampling, LinearAxisIsEightPointEightFixedPoint) {
+  // u = 0.3 on 16 texels: 0.3 * 4096 = 1228.8 -> 1229, - 128 = 1101: texel 4, weight 77.
+  const t::AxisTexels a = t::linearTexels(0.3f, 16, true, AddressMode::Repeat);
+  EXPECT_EQ(a.i0, 4u);
+  EXPECT_EQ(a.i1, 5u);
+  EXPECT_EQ(a.weight, 77);
+  // Below 0: repeat wraps to the last texel, clamp holds the first.
+  const t::AxisTexels r = t::linearTexels(0.0f, 16, true, AddressMode::Repeat);
+  EXPECT_EQ(r.i0, 15u);
+  EXPECT_EQ(r.i1, 0u);
+  EXPECT_EQ(r.weight, 128);
+  const t::AxisTexels c = t::linearTexels(0.0f, 16, true, AddressMode::ClampToEdge);
+  EXPECT_EQ(c.i0, 0u);
+  EXPECT_EQ(c.i1, 0u);
+  // Not a power of two: the fraction first (1.25 -> 0.25), 0.25 * 6 * 256 = 384, - 128: texel 1, weight 0.
+  const t::AxisTexels n = t::linearTexels(1.25f, 6, false, AddressMode::Repeat);
+  EXPECT_EQ(n.i0, 1u);
+  EXPECT_EQ(n.i1, 2u);
+  EXPECT_EQ(n.weight, 0);
+}
+
+TEST(Sampling, NearestAxisWrapsAndClamps) {
+  EXPECT_EQ(t::nearestTexel(-0.01f, 16, true, AddressMode::Repeat), 15u);
+  EXPECT_EQ(t::nearestTexel(-0.01f, 16, true, AddressMode::ClampToEdge), 0u);
+  EXPECT_EQ(t::nearestTexel(1.0f, 16, true, AddressMode::ClampToEdge), 15u);
+  EXPECT_EQ(t::nearestTexel(2.5f, 6, false, AddressMode::Repeat), 3u);  // fract 0.5 * 6
+  EXPECT_EQ(t::nearestTexel(-1e-9f, 6, false, AddressMode::Repeat), 5u);  // fract rounds to 1, clamped below it
+}
+
+TEST(Sampling, LodFollowsFastLog2AndTheSpecialCases) {
+  EXPECT_EQ(t::fastLog2(1.0f), 0.0f);
+  EXPECT_EQ(t::fastLog2(8.0f), 3.0f);
+  EXPECT_EQ(t::fastLog2(3.0f), 1.5f);  // piecewise linear: 1 + (1.5 - 1)
+  EXPECT_EQ(t::ilog2Sqrt(16.0f), 2);   // iround(log2(sqrt(16)))
+  EXPECT_EQ(t::ilog2Sqrt(8.0f), 2);    // log2(sqrt(8)) = 1.5 rounds up
+  SamplerState s;
+  s.mipmapMode = MipmapMode::Linear;
+  const t::StaticSampler d = t::staticSampler(s, 7);
+  // rho^2 = 12: lod = 0.5 * (3 + 0.5) = 1.75: levels 1 and 2, weight trunc(0.75 * 256) = 192.
+  const t::QuadLod q = t::quadLod(d, 12.0f, 7);
+  EXPECT_TRUE(q.minified);
+  EXPECT_EQ(q.level0, 1u);
+  EXPECT_EQ(q.level1, 2u);
+  EXPECT_EQ(q.mipWeight, 192);
+  // One level and maxLod > 0: no mip filter, no LOD at all (min == mag).
+  const t::StaticSampler single = t::staticSampler(SamplerState{}, 1);
+  EXPECT_EQ(single.mip, t::StaticSampler::Mip::None);
+  EXPECT_EQ(t::quadLod(single, 1e6f, 1).level0, 0u);
+}
+
+TEST(Sampling, MagnifiedQuadFiltersEachLane) {
+  // A 2x1 texture, black then white, linear: lanes across u from 0.25 to 0.75.
+  const std::vector<std::uint8_t> data{0, 0, 0, 255, 255, 255, 255, 255};
+  const auto tex = Texture::create(TextureFormat::R8G8B8A8Unorm, 2, 1, data, false);
+  ASSERT_TRUE(tex);
+  SamplerState s;
+  s.addressModeU = s.addressModeV = AddressMode::ClampToEdge;
+  alignas(32) float u[8] = {0.25f, 0.5f, 0.5f, 0.75f, 0.25f, 0.5f, 0.5f, 0.75f};
+  alignas(32) float v[8] = {0.5f, 0.5f, 0.5f, 0.5f, 0.5f, 0.5f, 0.5f, 0.5f};
+  const Vec4T<FloatBatch> c = texture(Sampler2D{&*tex, s}, FloatBatch::load(u), FloatBatch::load(v));
+  EXPECT_EQ(c.x[0], 0.0f);                           // at texel 0's centre
+  EXPECT_EQ(c.x[1], 128.0f * static_cast<float>(1.0 / 255.0));  // halfway: weight 128 of 255
+  EXPECT_EQ(c.x[3], 255.0f * static_cast<float>(1.0 / 255.0));  // texel 1's centre: weight 0 from texel 1
+  EXPECT_EQ(c.w[0], 1.0f);
+}
+
+}  // namespace
