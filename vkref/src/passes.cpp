@@ -80,6 +80,7 @@ void recordDraws(VkCommandBuffer cmd, const FramePass& pass) {
   std::span<const std::byte> pushed;
   bool uniformsBound = false;
   std::uint32_t boundOffset = 0;
+  VkDescriptorSet boundTextures = VK_NULL_HANDLE;
   for (const PassDraw& d : pass.draws) {
     if (d.pipeline != bound) {
       vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, d.pipeline);
@@ -98,6 +99,10 @@ void recordDraws(VkCommandBuffer cmd, const FramePass& pass) {
                               &d.uniformOffset);
       uniformsBound = true;
       boundOffset = d.uniformOffset;
+    }
+    if (d.textures != VK_NULL_HANDLE && d.textures != boundTextures) {
+      vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pass.layout, 1, 1, &d.textures, 0, nullptr);
+      boundTextures = d.textures;
     }
     if (d.indexed)
       vkCmdDrawIndexed(cmd, d.count, 1, d.firstIndex, 0, 0);

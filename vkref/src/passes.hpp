@@ -33,6 +33,7 @@ struct PassDraw {
   std::span<const std::byte> pushConstants;  // empty: the previous draw's stay
   bool bindUniforms = false;       // the draw has a uniform block...
   std::uint32_t uniformOffset = 0;  // ...at this dynamic offset in the frame's uniform buffer
+  VkDescriptorSet textures = VK_NULL_HANDLE;  // set 1 (the draw's textures), or null when it samples none
 };
 
 // Everything the render pass of a frame reads.

@@ -3,6 +3,7 @@
 
 #include "errors.hpp"
 
+#include <array>
 #include <bit>
 #include <cmath>
 #include <cstring>
@@ -99,6 +100,17 @@ Status checkDraw(const DrawCall& d, std::uint32_t width, std::uint32_t height, c
     return Status::error(std::to_string(d.uniformData.size()) + " bytes of uniform block (need a multiple of 4, at most " +
                          std::to_string(limits.maxUniformBufferRange) + ")");
 
+  if (d.textures.size() > kMaxTextures)
+    return Status::error(std::to_string(d.textures.size()) + " textures (at most " + std::to_string(kMaxTextures) + ")");
+  for (std::size_t i = 0; i < d.textures.size(); ++i) {
+    const softraster::Texture* t = d.textures[i].texture;
+    if (t == nullptr || t->levels() == 0) return Status::error("texture " + std::to_string(i) + " has no texels");
+    if (t->width() > limits.maxImageDimension2D || t->height() > limits.maxImageDimension2D)
+      return Status::error("texture " + std::to_string(i) + " is larger than maxImageDimension2D");
+    if (std::fabs(d.textures[i].sampler.mipLodBias) > limits.maxSamplerLodBias)
+      return Status::error("texture " + std::to_string(i) + ": mipLodBias beyond maxSamplerLodBias");
+  }
+
   const softraster::PipelineState& s = d.state;
   if (s.topology > softraster::Topology::TriangleFan) return Status::error("unsupported topology");
   if (s.rasterization.depthClampEnable && !features.depthClamp)
@@ -160,10 +172,22 @@ softraster::Result<std::unique_ptr<PipelineCache>> PipelineCache::create(const D
                        "vkCreateDescriptorSetLayout");
       !s)
     return s;
+  std::array<VkDescriptorSetLayoutBinding, kMaxTextures> textureBindings{};
+  for (std::uint32_t i = 0; i < kMaxTextures; ++i) {
+    textureBindings[i] = {i, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 1, VK_SHADER_STAGE_FRAGMENT_BIT, nullptr};
+  }
+  const VkDescriptorSetLayoutCreateInfo textureSetInfo{.sType = VK_STRUCTURE_TYPE_DESCRIPTOR_SET_LAYOUT_CREATE_INFO,
+                                                       .bindingCount = kMaxTextures,
+                                                       .pBindings = textureBindings.data()};
+  if (Status s = check(vkCreateDescriptorSetLayout(device.device, &textureSetInfo, nullptr, &cache->textureSetLayout_),
+                       "vkCreateDescriptorSetLayout");
+      !s)
+    return s;
+  const std::array<VkDescriptorSetLayout, 2> setLayouts{cache->setLayout_, cache->textureSetLayout_};
   const VkPushConstantRange pushRange{kPushConstantStages, 0, kPushConstantBytes};
   const VkPipelineLayoutCreateInfo layoutInfo{.sType = VK_STRUCTURE_TYPE_PIPELINE_LAYOUT_CREATE_INFO,
-                                              .setLayoutCount = 1,
-                                              .pSetLayouts = &cache->setLayout_,
+                                              .setLayoutCount = 2,
+                                              .pSetLayouts = setLayouts.data(),
                                               .pushConstantRangeCount = 1,
                                               .pPushConstantRanges = &pushRange};
   if (Status s = check(vkCreatePipelineLayout(device.device, &layoutInfo, nullptr, &cache->layout_),
@@ -177,6 +201,7 @@ PipelineCache::~PipelineCache() {
   for (const auto& [key, pipeline] : pipelines_) vkDestroyPipeline(device_, pipeline, nullptr);
   vkDestroyPipelineLayout(device_, layout_, nullptr);
   vkDestroyDescriptorSetLayout(device_, setLayout_, nullptr);
+  vkDestroyDescriptorSetLayout(device_, textureSetLayout_, nullptr);
 }
 
 std::uint32_t PipelineCache::programIndex(const ShaderProgram& p, FrameMemo& memo) {

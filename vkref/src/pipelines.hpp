@@ -70,10 +70,12 @@ class PipelineCache {
     std::vector<Entry> entries_;
   };
 
-  // The one layout of every pipeline: kPushConstantBytes of push constants and set 0, whose
-  // binding 0 is a dynamic uniform buffer (a draw's uniform block) for both stages.
+  // The one layout of every pipeline: kPushConstantBytes of push constants; set 0, whose
+  // binding 0 is a dynamic uniform buffer (a draw's uniform block) for both stages; set 1, whose
+  // bindings 0..kMaxTextures-1 are combined image samplers (a draw's textures) for the fragment stage.
   VkPipelineLayout layout() const { return layout_; }
   VkDescriptorSetLayout uniformSetLayout() const { return setLayout_; }
+  VkDescriptorSetLayout textureSetLayout() const { return textureSetLayout_; }
   // The pipeline for a checked draw (see checkDraw), compiled on its first use.
   softraster::Result<VkPipeline> get(const DrawCall& draw, const TargetFormat& target, FrameMemo& memo);
   std::size_t size() const { return pipelines_.size(); }
@@ -115,6 +117,7 @@ class PipelineCache {
 
   VkDevice device_;
   VkDescriptorSetLayout setLayout_ = VK_NULL_HANDLE;
+  VkDescriptorSetLayout textureSetLayout_ = VK_NULL_HANDLE;
   VkPipelineLayout layout_ = VK_NULL_HANDLE;
   std::vector<Program> programs_;
   std::unordered_multimap<std::size_t, std::uint32_t> programsByHash_;

@@ -1,7 +1,8 @@
 // vkref::Renderer on the plain Vulkan C API (1.3: dynamic rendering, synchronization2): only the
 // orchestration. create() opens the device (device.cpp) and the pipeline cache (pipelines.cpp);
 // prepare() checks the request, creates its images (resources.cpp), uploads its vertices,
-// indices and uniform blocks into one buffer each, takes its pipelines from the cache and records its two command
+// indices and uniform blocks into one buffer each, uploads its textures (textures.cpp), takes its
+// pipelines from the cache and records its two command
 // buffers: the render pass (passes.cpp) and the copies to the host (readback.cpp); submit() runs
 // the first, readBack() the second and unpacks the images.
 // Deliberately synchronous: every submission is waited for before the call returns, so a frame
@@ -14,6 +15,7 @@
 #include "pipelines.hpp"
 #include "readback.hpp"
 #include "resources.hpp"
+#include "textures.hpp"
 
 #include <utility>
 
@@ -34,6 +36,7 @@ struct PreparedFrame::Impl {
   detail::Targets targets;
   detail::Geometry geometry;
   detail::UniformSet uniforms;
+  detail::FrameTextures textures;
   detail::HostImages host;
   std::unique_ptr<detail::Commands> commands;
   bool submitted = false;
@@ -103,6 +106,9 @@ Result<PreparedFrame> Renderer::prepare(const FrameRequest& request) {
   auto uniforms = detail::UniformSet::create(device, impl_->pipelines->uniformSetLayout(), frame->geometry);
   if (!uniforms) return uniforms.status();
   frame->uniforms = std::move(*uniforms);
+  auto textures = detail::FrameTextures::create(device, impl_->pipelines->textureSetLayout(), drawn);
+  if (!textures) return textures.status();
+  frame->textures = std::move(*textures);
 
   std::vector<detail::PassDraw> passDraws(drawn.size());
   detail::PipelineCache::FrameMemo memo;
@@ -121,6 +127,7 @@ Result<PreparedFrame> Renderer::prepare(const FrameRequest& request) {
     p.pushConstants = d.pushConstants;
     p.bindUniforms = !d.uniformData.empty();
     p.uniformOffset = frame->geometry.ranges[i].uniformOffset;
+    p.textures = frame->textures.setOf(i);
   }
 
   auto commands = detail::Commands::create(device);

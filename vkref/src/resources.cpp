@@ -88,14 +88,14 @@ void Buffer::destroy() {
 
 softraster::Result<Image> Image::create(const Device& device, VkFormat format, VkImageUsageFlags usage,
                                         VkImageAspectFlags aspect, std::uint32_t width, std::uint32_t height,
-                                        VkSampleCountFlagBits samples) {
+                                        VkSampleCountFlagBits samples, std::uint32_t levels) {
   Image i;
   i.device_ = device.device;
   const VkImageCreateInfo info{.sType = VK_STRUCTURE_TYPE_IMAGE_CREATE_INFO,
                                .imageType = VK_IMAGE_TYPE_2D,
                                .format = format,
                                .extent = {width, height, 1},
-                               .mipLevels = 1,
+                               .mipLevels = levels,
                                .arrayLayers = 1,
                                .samples = samples,
                                .tiling = VK_IMAGE_TILING_OPTIMAL,
@@ -111,7 +111,7 @@ softraster::Result<Image> Image::create(const Device& device, VkFormat format, V
                                        .image = i.image_,
                                        .viewType = VK_IMAGE_VIEW_TYPE_2D,
                                        .format = format,
-                                       .subresourceRange = {aspect, 0, 1, 0, 1}};
+                                       .subresourceRange = {aspect, 0, levels, 0, 1}};
   if (Status s = check(vkCreateImageView(device.device, &viewInfo, nullptr, &i.view_), "vkCreateImageView"); !s)
     return s;
   return i;

@@ -3,8 +3,9 @@
 // descriptor set of its uniform blocks.
 // Deliberately simple: buffers are host-visible, coherent and mapped for their whole life (on
 // lavapipe all memory is host memory, so there are no staging copies), images are 2D with one
-// level and one layer, and every object has its own allocation (a frame has a handful of them,
-// however many draws it holds), so there is no sub-allocator. No command is recorded here.
+// layer (and one level, or a texture's chain), and every object has its own allocation (a frame
+// has a handful of them, however many draws it holds), so there is no sub-allocator. No command
+// is recorded here.
 #pragma once
 
 #include "device.hpp"
@@ -47,7 +48,7 @@ class Image {
  public:
   static softraster::Result<Image> create(const Device& device, VkFormat format, VkImageUsageFlags usage,
                                           VkImageAspectFlags aspect, std::uint32_t width, std::uint32_t height,
-                                          VkSampleCountFlagBits samples);
+                                          VkSampleCountFlagBits samples, std::uint32_t levels = 1);
   Image() = default;  // no image
   Image(Image&& other) noexcept;
   Image& operator=(Image&& other) noexcept;

@@ -8,6 +8,7 @@
 #include <softraster/framebuffer.hpp>
 #include <softraster/shader.hpp>
 #include <softraster/state.hpp>
+#include <softraster/texture.hpp>
 
 #include <array>
 #include <cstddef>
@@ -29,6 +30,17 @@ struct ShaderProgram {
   std::uint32_t vertexStride = 0;  // bytes
 };
 
+// A texture a draw samples: a combined image sampler at set 1, binding i (i its place in
+// DrawCall::textures), visible to the fragment stage. Every level is uploaded by prepare, once per
+// texture however many draws sample it; nothing of it is kept after prepare returns.
+struct TextureBinding {
+  const softraster::Texture* texture = nullptr;
+  softraster::SamplerState sampler;
+};
+
+// Combined image samplers a draw may bind (set 1, bindings 0..kMaxTextures-1).
+inline constexpr std::size_t kMaxTextures = 2;
+
 struct DrawCall {
   const ShaderProgram* program = nullptr;
   softraster::PipelineState state;
@@ -40,6 +52,7 @@ struct DrawCall {
   // uniforms that do not fit the push constants; at most maxUniformBufferRange bytes. Empty: the
   // program reads none.
   std::vector<std::byte> uniformData;
+  std::vector<TextureBinding> textures;     // at most kMaxTextures
 };
 
 struct FrameRequest {
