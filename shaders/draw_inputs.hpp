@@ -3,11 +3,13 @@
 // them it reads (vertexFrom, uniformsFrom, kMeshInputs); the table (shading_models.hpp) turns
 // them into the twin's vertices and uniforms for both renderers.
 // Matrices and positions arrive rounded to float once from the scene's double-precision values.
-// Deliberately only what a model reads today: texture coordinates join the mesh here, and the
-// scene parser fills them, when a model reads them.
+// Deliberately only what a model reads today.
 #pragma once
 
 #include <softraster/math.hpp>
+#include <softraster/texture.hpp>
+
+#include <array>
 
 #include <cstddef>
 #include <vector>
@@ -17,11 +19,16 @@ namespace shaders {
 // Mesh attributes a model reads beyond positions and colours (a twin's kMeshInputs); the scene
 // parser computes them only for a model that reads them.
 inline constexpr unsigned kReadsNormals = 1u;
+inline constexpr unsigned kReadsTexcoords = 2u;
+
+// Textures a draw may give its model (the first is the surface's colour, the second a normal map).
+inline constexpr std::size_t kMaxDrawTextures = 2;
 
 struct Mesh {
   std::vector<softraster::Vec3> positions;  // object space
   std::vector<softraster::Vec4> colours;    // RGBA in [0, 1], one per position
   std::vector<softraster::Vec3> normals;    // object space, one per position; empty unless read
+  std::vector<softraster::Vec2> texcoords;  // (u, v), one per position; empty unless read
   std::size_t vertexCount() const { return positions.size(); }
 };
 
@@ -50,6 +57,9 @@ struct DrawParameters {
   Light light;
   Material material;
   float pointSize = 1.0f;  // gl_PointSize of point primitives
+  // The draw's textures and samplers, in the order its model binds them (set 1, binding i);
+  // textures the model does not sample are null.
+  std::array<softraster::Sampler2D, kMaxDrawTextures> textures{};
 };
 
 }  // namespace shaders

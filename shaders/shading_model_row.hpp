@@ -26,6 +26,26 @@ constexpr unsigned meshInputsOf() {
 }
 
 template <class Shader>
+constexpr unsigned texturesOf() {
+  if constexpr (requires { Shader::kTextures; }) return Shader::kTextures;
+  return 0;
+}
+
+// What vkref uploads of a twin's uniforms: all of them, or the `gpu` block of a twin whose
+// uniforms also carry samplers (those are bound as textures, not copied).
+template <class Shader>
+struct GpuUniforms {
+  using Type = typename Shader::Uniforms;
+  static const Type& of(const typename Shader::Uniforms& u) { return u; }
+};
+template <class Shader>
+  requires requires(const typename Shader::Uniforms& u) { u.gpu; }
+struct GpuUniforms<Shader> {
+  using Type = decltype(Shader::Uniforms::gpu);
+  static const Type& of(const typename Shader::Uniforms& u) { return u.gpu; }
+};
+
+template <class Shader>
 std::vector<typename Shader::Vertex> verticesOf(const Mesh& mesh) {
   std::vector<typename Shader::Vertex> vertices;
   vertices.reserve(mesh.vertexCount());
@@ -49,7 +69,7 @@ std::vector<std::byte> vertexBytes(const Mesh& mesh) {
 template <class Shader>
 std::vector<std::byte> uniformBytes(const DrawParameters& draw) {
   const typename Shader::Uniforms uniforms = Shader::uniformsFrom(draw);
-  return bytesOf(&uniforms, 1);
+  return bytesOf(&GpuUniforms<Shader>::of(uniforms), 1);
 }
 
 template <class Shader>
@@ -82,9 +102,10 @@ constexpr ShadingModel model(std::string_view name, const std::uint32_t (&vertex
           fragmentSpirv,
           Shader::kAttributes,
           sizeof(typename Shader::Vertex),
-          sizeof(typename Shader::Uniforms),
+          sizeof(typename GpuUniforms<Shader>::Type),
           uniformBufferOf<Shader>(),
           meshInputsOf<Shader>(),
+          texturesOf<Shader>(),
           &vertexBytes<Shader>,
           &uniformBytes<Shader>,
           &prepareSoftraster<Shader>};

@@ -11,13 +11,14 @@ std::span<const ShadingModel> vertexColorModels();
 std::span<const ShadingModel> courseLightModels();
 std::span<const ShadingModel> phongModels();
 std::span<const ShadingModel> blinnPhongModels();
+std::span<const ShadingModel> texturedModels();
 }  // namespace rows
 
 std::span<const ShadingModel> shadingModels() {
   static const std::vector<ShadingModel> kModels = [] {
     std::vector<ShadingModel> all;
     for (auto family : {rows::vertexColorModels(), rows::courseLightModels(), rows::phongModels(),
-                        rows::blinnPhongModels()}) {
+                        rows::blinnPhongModels(), rows::texturedModels()}) {
       all.insert(all.end(), family.begin(), family.end());
     }
     return all;

@@ -64,9 +64,10 @@ struct ShadingModel {
   std::span<const std::uint32_t> fragmentSpirv;       // NAME.frag
   std::span<const softraster::VertexAttribute> attributes;  // the twin's kAttributes
   std::uint32_t vertexStride = 0;                     // sizeof(twin::Vertex), bytes
-  std::uint32_t uniformSize = 0;                      // sizeof(twin::Uniforms), bytes
+  std::uint32_t uniformSize = 0;                      // sizeof(twin::Uniforms) (or its `gpu` block), bytes
   bool uniformBuffer = false;  // the uniforms are a uniform block (set 0, binding 0), not push constants
   unsigned meshInputs = 0;     // kReadsNormals...: what the mesh must hold beyond positions and colours
+  unsigned textures = 0;       // textures it samples: DrawParameters::textures[0..n-1], set 1 bindings 0..n-1
   // Vulkan: the mesh as twin::Vertex, vertexStride bytes per vertex; the uniforms as twin::Uniforms.
   std::vector<std::byte> (*vertexBytes)(const Mesh& mesh) = nullptr;
   std::vector<std::byte> (*uniformBytes)(const DrawParameters& draw) = nullptr;

@@ -124,6 +124,7 @@ softraster::Result<vkref::PreparedFrame> prepareVulkan(const Scene& scene, vkref
     call.indices = draw.indices;
     (draw.shading->uniformBuffer ? call.uniformData : call.pushConstants) =
         draw.shading->uniformBytes(drawParameters(scene, draw));
+    for (const Draw::Texture& t : draw.textures) call.textures.push_back({t.texture.get(), t.sampler});
     request.draws.push_back(std::move(call));
   }
   auto prepared = renderer.prepare(request);

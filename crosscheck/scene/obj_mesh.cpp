@@ -168,6 +168,17 @@ softraster::Result<ObjMesh> loadObjMesh(const std::filesystem::path& path, softr
       if (index.normal_index < 0 || static_cast<std::size_t>(index.normal_index) >= normalCount) everyCornerHasNormal = false;
     }
   }
+  // Texture coordinates (vt) likewise: kept only when every face corner names one (u, v; a third
+  // component is ignored: tinyobjloader keeps two).
+  const std::size_t texcoordCount = attrib.texcoords.size() / 2;
+  bool everyCornerHasTexcoord = texcoordCount > 0;
+  for (const tinyobj::shape_t& shape : reader.GetShapes()) {
+    for (const tinyobj::index_t& index : shape.mesh.indices) {
+      if (index.texcoord_index < 0 || static_cast<std::size_t>(index.texcoord_index) >= texcoordCount) {
+        everyCornerHasTexcoord = false;
+      }
+    }
+  }
   ObjMesh mesh;
   for (const tinyobj::shape_t& shape : reader.GetShapes()) {
     std::size_t offset = 0;
@@ -194,6 +205,14 @@ softraster::Result<ObjMesh> loadObjMesh(const std::filesystem::path& path, softr
         if (everyCornerHasNormal) {
           const auto n = static_cast<std::size_t>(shape.mesh.indices[offset + c].normal_index);
           mesh.vertices.normals.push_back({attrib.normals[3 * n], attrib.normals[3 * n + 1], attrib.normals[3 * n + 2]});
+        }
+        if (everyCornerHasTexcoord) {
+          const auto t = static_cast<std::size_t>(shape.mesh.indices[offset + c].texcoord_index);
+          const softraster::Vec2 uv{attrib.texcoords[2 * t], attrib.texcoords[2 * t + 1]};
+          if (!std::isfinite(uv.x) || !std::isfinite(uv.y)) {
+            return Status::error(path.string() + ": a texture coordinate (vt) is not finite in float");
+          }
+          mesh.vertices.texcoords.push_back(uv);
         }
       }
       for (std::size_t c = 2; c < corners; ++c) {

@@ -5,6 +5,7 @@
 #include "scene/normals.hpp"
 #include "scene/obj_mesh.hpp"
 #include "scene/input_file.hpp"
+#include "scene/texture_file.hpp"
 
 #include <softraster/limits.hpp>
 
@@ -24,6 +25,7 @@
 #include <sstream>
 #include <stdexcept>
 #include <string_view>
+#include <tuple>
 
 namespace crosscheck {
 namespace {
@@ -576,7 +578,86 @@ void readNormals(const json& d, const std::string& place, Draw& draw, bool haveO
   computeNormals(draw.mesh, draw.indices, draw.indexed, mode == "flat" ? NormalMode::Flat : NormalMode::Smooth);
 }
 
-Draw readDraw(const json& d, const std::string& place, const std::filesystem::path& sceneDir, double time) {
+// Textures loaded by this scene, by file, format and mip choice, so draws share them.
+using TextureCache = std::map<std::tuple<std::filesystem::path, softraster::TextureFormat, bool>,
+                              std::shared_ptr<const softraster::Texture>>;
+
+// "texture": {"file", "format", "mipmaps", the sampler's fields}, as Draw::Texture.
+Draw::Texture readTexture(const json& t, const std::string& place, const std::filesystem::path& sceneDir,
+                          TextureCache& cache) {
+  using namespace softraster;
+  if (!t.is_object()) throw SceneError(place, "expected an object with \"file\" and the sampler's fields");
+  checkKeys(t, place, {"file", "format", "mipmaps", "mag_filter", "min_filter", "mipmap_mode", "address_mode",
+                       "address_mode_u", "address_mode_v", "mip_lod_bias", "min_lod", "max_lod", "border_colour"});
+  if (!t.contains("file")) throw SceneError(place, "needs \"file\" (a PNG, relative to the scene file)");
+  const std::filesystem::path file = sceneDir / readString(t, "file", place, "");
+  const TextureFormat format = readEnum(t, "format", place, TextureFormat::R8G8B8A8Unorm,
+                                        {{"unorm", TextureFormat::R8G8B8A8Unorm}, {"srgb", TextureFormat::R8G8B8A8Srgb}});
+  const bool mipmaps = readBool(t, "mipmaps", place, false);
+  Draw::Texture out;
+  auto& cached = cache[{file, format, mipmaps}];
+  if (!cached) {
+    auto loaded = loadTexture(file, format, mipmaps);
+    if (!loaded) throw SceneError(placeOf(place, "file"), loaded.error());
+    cached = std::make_shared<const softraster::Texture>(std::move(*loaded));
+  }
+  out.texture = cached;
+  const std::vector<std::pair<const char*, Filter>> filters{{"nearest", Filter::Nearest}, {"linear", Filter::Linear}};
+  const std::vector<std::pair<const char*, AddressMode>> modes{{"repeat", AddressMode::Repeat},
+                                                               {"mirrored_repeat", AddressMode::MirroredRepeat},
+                                                               {"clamp_to_edge", AddressMode::ClampToEdge},
+                                                               {"clamp_to_border", AddressMode::ClampToBorder}};
+  SamplerState& s = out.sampler;
+  s.magFilter = readEnum(t, "mag_filter", place, s.magFilter, filters);
+  s.minFilter = readEnum(t, "min_filter", place, s.minFilter, filters);
+  s.mipmapMode = readEnum(t, "mipmap_mode", place, s.mipmapMode,
+                          {{"nearest", MipmapMode::Nearest}, {"linear", MipmapMode::Linear}});
+  if (t.contains("address_mode") && (t.contains("address_mode_u") || t.contains("address_mode_v"))) {
+    throw SceneError(place, "give \"address_mode\" (both directions) or \"address_mode_u\"/\"address_mode_v\", not both");
+  }
+  s.addressModeU = s.addressModeV = readEnum(t, "address_mode", place, s.addressModeU, modes);
+  s.addressModeU = readEnum(t, "address_mode_u", place, s.addressModeU, modes);
+  s.addressModeV = readEnum(t, "address_mode_v", place, s.addressModeV, modes);
+  s.mipLodBias = readFloat(t, "mip_lod_bias", place, s.mipLodBias);
+  s.minLod = readFloat(t, "min_lod", place, s.minLod);
+  s.maxLod = readFloat(t, "max_lod", place, s.maxLod);
+  s.borderColor = readEnum(t, "border_colour", place, s.borderColor,
+                           {{"transparent_black", BorderColor::TransparentBlack},
+                            {"opaque_black", BorderColor::OpaqueBlack},
+                            {"opaque_white", BorderColor::OpaqueWhite}});
+  if (const softraster::Status valid = softraster::Sampler2D{out.texture.get(), s}.validate(); !valid) {
+    throw SceneError(place, valid.message());
+  }
+  return out;
+}
+
+// Texture coordinates for a model that reads them: the OBJ's vt, or "texcoords" (one [u, v] per
+// inline position).
+void readTexcoords(const json& d, const std::string& place, Draw& draw, bool haveOwn) {
+  const std::string at = placeOf(place, "texcoords");
+  if (d.contains("texcoords")) {
+    const json& t = d["texcoords"];
+    if (!d.contains("positions")) throw SceneError(at, "inline texture coordinates need inline positions");
+    if (!t.is_array() || t.size() != draw.mesh.vertexCount()) {
+      throw SceneError(at, "expected one [u, v] per position (" + std::to_string(draw.mesh.vertexCount()) + ")");
+    }
+    draw.mesh.texcoords.clear();
+    for (std::size_t i = 0; i < t.size(); ++i) {
+      const auto v = readNumbers(t[i], placeOf(at, std::to_string(i)), 2, 2);
+      const softraster::Vec2 uv{static_cast<float>(v[0]), static_cast<float>(v[1])};
+      if (!std::isfinite(uv.x) || !std::isfinite(uv.y)) throw SceneError(placeOf(at, std::to_string(i)), "must be finite in float");
+      draw.mesh.texcoords.push_back(uv);
+    }
+    return;
+  }
+  if (!haveOwn) {
+    throw SceneError(place, "shading '" + std::string(draw.shading->name) +
+                                "' reads texture coordinates: give \"texcoords\" or an OBJ whose every face corner has a vt");
+  }
+}
+
+Draw readDraw(const json& d, const std::string& place, const std::filesystem::path& sceneDir, double time,
+              TextureCache& textures) {
   Draw draw = readDrawMesh(d, place, sceneDir);
   if (d.contains("transform")) draw.model = readTransform(d["transform"], placeOf(place, "transform"), time);
   if (d.contains("material")) draw.material = readMaterial(d["material"], placeOf(place, "material"));
@@ -587,11 +668,28 @@ Draw readDraw(const json& d, const std::string& place, const std::filesystem::pa
     if (d.contains("normals")) throw SceneError(placeOf(place, "normals"), "shading '" + std::string(draw.shading->name) + "' reads no normals");
     draw.mesh.normals.clear();
   }
+  if ((draw.shading->meshInputs & shaders::kReadsTexcoords) != 0) {
+    readTexcoords(d, place, draw, !draw.mesh.texcoords.empty());
+  } else {
+    if (d.contains("texcoords")) {
+      throw SceneError(placeOf(place, "texcoords"), "shading '" + std::string(draw.shading->name) + "' reads no texture coordinates");
+    }
+    draw.mesh.texcoords.clear();
+  }
+  if (draw.shading->textures > 0) {
+    if (!d.contains("texture")) {
+      throw SceneError(place, "shading '" + std::string(draw.shading->name) + "' samples a texture: give \"texture\"");
+    }
+    draw.textures.push_back(readTexture(d["texture"], placeOf(place, "texture"), sceneDir, textures));
+  } else if (d.contains("texture")) {
+    throw SceneError(placeOf(place, "texture"), "shading '" + std::string(draw.shading->name) + "' samples no texture");
+  }
   return draw;
 }
 
 Draw readDrawMesh(const json& d, const std::string& place, const std::filesystem::path& sceneDir) {
-  checkKeys(d, place, {"name", "obj", "sphere", "positions", "colours", "colour", "indices", "normals", "shading",
+  checkKeys(d, place, {"name", "obj", "sphere", "positions", "colours", "colour", "indices", "normals", "texcoords",
+                       "texture", "shading",
                        "transform", "material", "topology", "viewport", "scissor", "cull", "front_face", "depth_clamp",
                        "depth_bias", "line_width", "line_rasterization", "point_size", "polygon_mode", "blend",
                        "depth_test", "depth_write", "depth_compare"});
@@ -766,9 +864,10 @@ Scene readScene(json& document, const std::filesystem::path& path, const std::ve
     throw SceneError("/draws", std::to_string(draws.size()) + " draws, more than " + std::to_string(kMaxDraws));
   }
   std::size_t vertices = 0;
+  TextureCache textures;
   for (std::size_t i = 0; i < draws.size(); ++i) {
     const std::string place = "/draws/" + std::to_string(i);
-    scene.draws.push_back(readDraw(draws[i], place, path.parent_path(), scene.time));
+    scene.draws.push_back(readDraw(draws[i], place, path.parent_path(), scene.time, textures));
     const Draw& draw = scene.draws.back();
     vertices += draw.indexed ? draw.indices.size() : draw.mesh.vertexCount();
     if (vertices > kMaxSceneVertices) {
@@ -813,6 +912,9 @@ shaders::DrawParameters drawParameters(const Scene& scene, const Draw& draw) {
   p.light.colour = rgb(scene.light.colour);
   p.material = draw.material;
   p.pointSize = draw.pointSize;
+  for (std::size_t i = 0; i < draw.textures.size() && i < p.textures.size(); ++i) {
+    p.textures[i] = {draw.textures[i].texture.get(), draw.textures[i].sampler};
+  }
   return p;
 }
 

@@ -14,6 +14,7 @@
 #include <softraster/framebuffer.hpp>
 #include <softraster/math.hpp>
 #include <softraster/state.hpp>
+#include <softraster/texture.hpp>
 #include <softraster/status.hpp>
 
 #include <draw_inputs.hpp>
@@ -25,6 +26,7 @@
 #include <cstdint>
 #include <filesystem>
 #include <string>
+#include <memory>
 #include <vector>
 
 namespace crosscheck {
@@ -41,6 +43,13 @@ struct Draw {
   std::vector<std::uint32_t> indices;
   glm::dmat4 model{1.0};                // object -> world: "transform" at the scene's time
   shaders::Material material;           // what the lit models read beyond the vertex colours
+  // What a textured model samples ("texture"): the texture (shared by draws naming the same
+  // file, format and mip choice) and the sampler. Empty for models that sample nothing.
+  struct Texture {
+    std::shared_ptr<const softraster::Texture> texture;
+    softraster::SamplerState sampler;
+  };
+  std::vector<Texture> textures;
 };
 
 // The scene's one point light (world space), read by the lit models.
