@@ -7,11 +7,12 @@
 // `static constexpr bool kQuads = true`; softraster then shades it in quads on every path (the
 // scalar path too), with the quad's uncovered pixels as helpers, so derivatives exist everywhere.
 //
-// Exactness: lavapipe's 8-bit fixed-point filtering (its "AoS" path) for R8G8B8A8_UNORM with
-// repeat or clamp-to-edge in both directions; LOD per quad with its piecewise-linear log2, mip
-// selection, LOD bias and clamps, min/mag switch. Sampler2D's validate() refuses what is not
-// matched yet (sRGB, mirrored repeat, clamp to border: lavapipe filters those in float), so a
-// scene using them is an error, not a silent difference.
+// Exactness: lavapipe's two paths, chosen as it chooses them: 8-bit fixed-point filtering (its
+// "AoS" path) for R8G8B8A8_UNORM with repeat or clamp to edge in both directions, and its float
+// path for sRGB (its polynomial decode), mirrored repeat and clamp to border; LOD per quad with
+// its piecewise-linear log2, mip selection, LOD bias and clamps, the min/mag switch.
+// Sampler2D::validate() refuses the one combination not matched yet (different min and mag
+// filters on the float path), so a scene using it is an error, not a silent difference.
 // Deliberately absent: 1D/3D/cube/array textures, anisotropy, compare samplers (shadow maps),
 // texel offsets, explicit LOD and gradients, unnormalized coordinates.
 #pragma once

@@ -16,14 +16,19 @@
 //   5. to float: byte * (1/255).
 // Integer conversions follow the SSE instructions gallivm emits: cvtps2dq (round half to even)
 // and cvttps2dq (truncate), both giving INT_MIN for NaN and out-of-range values; floor is roundps.
-// Deliberately absent: lavapipe's float filtering path (sRGB, mirrored repeat, clamp to border),
-// which Sampler2D::validate refuses until it is here; denormal flushing of the derivatives.
+//   6. where the 8-bit path does not apply (sRGB; mirrored repeat or clamp to border on an axis),
+//      lavapipe's float path instead: texels to float first (sRGB through its cubic), float
+//      coordinates, fmuladd lerps, the border colour outside the level.
+// Deliberately absent: the float path's per-pixel min/mag switch (lp_build_sample_mipmap_both),
+// which Sampler2D::validate refuses; denormal flushing of the derivatives; a build for CPUs
+// without FMA (the float path's lerps are fused, as lavapipe's are on FMA CPUs).
 #pragma once
 
 #include <softraster/math.hpp>
 #include <softraster/simd.hpp>
 
 #include <algorithm>
+#include <array>
 #include <bit>
 #include <cmath>
 #include <cstdint>
@@ -114,7 +119,9 @@ struct QuadLod {
   std::int32_t mipWeight = 0;   // 0..255: trunc(lod fraction * 256), linear mip filtering only
 };
 
-inline QuadLod quadLod(const StaticSampler& d, float rhoSquared, std::uint32_t levels) {
+// fraction: where the float path wants the mip weight as a float (lp_build_sample_mipmap's
+// lerp), the clamped LOD fraction; the 8-bit path takes mipWeight.
+inline QuadLod quadLod(const StaticSampler& d, float rhoSquared, std::uint32_t levels, float* fraction = nullptr) {
   QuadLod q;
   const bool needsLod = d.minFilter != d.magFilter || d.mip != StaticSampler::Mip::None;
   if (!needsLod) return q;
@@ -157,6 +164,7 @@ inline QuadLod quadLod(const StaticSampler& d, float rhoSquared, std::uint32_t l
       q.level0 = static_cast<std::uint32_t>(l0);
       q.level1 = static_cast<std::uint32_t>(l1);
       q.mipWeight = std::max(truncateToInt(fpart * 256.0f), 0) & 0xff;
+      if (fraction != nullptr) *fraction = sseMax(fpart, 0.0f);
       break;
     }
   }
@@ -241,6 +249,156 @@ inline Texel sampleLevel(const TextureLevel& level, Filter filter, const Sampler
 
 inline constexpr bool isPowerOfTwo(std::uint32_t n) { return (n & (n - 1)) == 0; }
 
+// ---- lavapipe's float path (lp_bld_sample_soa.c): sRGB, mirrored repeat, clamp to border ----
+// Taken where the 8-bit path does not apply (util_format_fits_8unorm is false for sRGB; the AoS
+// path takes only repeat and clamp to edge). Texels become floats first (UNORM: byte * (1/255);
+// sRGB: lp_build_srgb_to_linear's polynomial), wrapping works on float coordinates, and each
+// lerp is fmuladd(w, v1 - v0, v0) (fused, as lavapipe's is on an FMA CPU).
+
+// lp_build_srgb_to_linear for 8 bits: v / (12.6 * 255) up to 15, else a cubic in v (1/255 folded
+// into the coefficients), through lp_build_polynomial's even/odd scheme.
+inline float srgbToLinear(std::uint8_t v) {
+  const float x = static_cast<float>(v);
+  if (x <= 15.0f) return x * (1.0f / (12.6f * 255.0f));
+  const float c0 = 0.0023f, c1 = 0.0030f / 255.0f, c2 = 0.6935f / (255.0f * 255.0f),
+              c3 = 0.3012f / (255.0f * 255.0f * 255.0f);
+  const float x2 = x * x;
+  const float even = std::fma(x2, c2, c0), odd = std::fma(x2, c3, c1);
+  return std::fma(odd, x, even);
+}
+
+// lp_build_coord_mirror(coord, posOnly): the distance to the nearest even integer, in [0, 1].
+inline float mirrorCoordinate(float coord) {
+  const float half = coord * 0.5f;
+  const float fraction = half - std::nearbyint(half);  // lp_build_round: nearest, ties to even
+  const float c = std::fabs(fraction + fraction);
+  return std::isnan(c) ? 0.0f : sseMax(c, 0.0f);      // lp_build_max_ext(c, 0, NaN gives the other)
+}
+
+// lp_build_ifloor_fract: floor (roundps), the fraction a - floor(a), the integer cvttps2dq.
+inline void floorFraction(float a, std::int32_t& whole, float& fraction) {
+  const float f = std::floor(a);
+  fraction = a - f;
+  whole = truncateToInt(f);
+}
+
+// lp_build_sample_wrap_nearest: one axis's texel, possibly outside the level for clamp to border.
+inline std::int32_t nearestTexelFloat(float coord, std::uint32_t size, bool basePowerOfTwo, AddressMode wrap) {
+  const std::int32_t last = static_cast<std::int32_t>(size) - 1;
+  const float length = static_cast<float>(size);
+  switch (wrap) {
+    case AddressMode::Repeat:
+      if (basePowerOfTwo) return floorToInt(coord * length) & last;
+      {
+        float fraction = coord - std::floor(coord);  // lp_build_fract_safe
+        fraction = std::isnan(fraction) ? 0.99999994f : std::min(fraction, 0.99999994f);
+        return truncateToInt(fraction * length);
+      }
+    case AddressMode::ClampToEdge:
+      return std::clamp(truncateToInt(coord * length), 0, last);
+    case AddressMode::ClampToBorder:
+      return floorToInt(coord * length);
+    case AddressMode::MirroredRepeat:
+      return std::min(truncateToInt(mirrorCoordinate(coord) * length), last);
+  }
+  return 0;
+}
+
+// lp_build_sample_wrap_linear: one axis's two texels (possibly outside for clamp to border) and weight.
+struct AxisTexelsFloat {
+  std::int32_t i0 = 0, i1 = 0;
+  float weight = 0.0f;
+};
+
+inline AxisTexelsFloat linearTexelsFloat(float coord, std::uint32_t size, bool basePowerOfTwo, AddressMode wrap) {
+  const std::int32_t last = static_cast<std::int32_t>(size) - 1;
+  const float length = static_cast<float>(size);
+  AxisTexelsFloat a;
+  switch (wrap) {
+    case AddressMode::Repeat:
+      if (basePowerOfTwo) {
+        floorFraction(coord * length - 0.5f, a.i0, a.weight);
+        a.i1 = wrappingAdd(a.i0, 1) & last;
+        a.i0 &= last;
+      } else {  // lp_build_coord_repeat_npot_linear
+        const float c = (coord - std::floor(coord)) * length - 0.5f;
+        const bool below = !(c >= 0.0f);  // an unordered compare: NaN counts as below
+        floorFraction(c, a.i0, a.weight);
+        if (below) a.i0 = last;
+        a.i1 = a.i0 != last ? a.i0 + 1 : 0;
+      }
+      break;
+    case AddressMode::ClampToEdge: {
+      float c = coord * length;
+      c = std::isnan(c) ? length : sseMin(c, length);  // lp_build_min_ext, NaN gives the other
+      c = sseMax(c - 0.5f, 0.0f);
+      floorFraction(c, a.i0, a.weight);
+      a.i1 = std::min(wrappingAdd(a.i0, 1), last);
+      break;
+    }
+    case AddressMode::ClampToBorder:
+      floorFraction(coord * length - 0.5f, a.i0, a.weight);
+      a.i1 = wrappingAdd(a.i0, 1);
+      break;
+    case AddressMode::MirroredRepeat:
+      floorFraction(mirrorCoordinate(coord) * length - 0.5f, a.i0, a.weight);
+      a.i1 = std::min(wrappingAdd(a.i0, 1), last);
+      a.i0 = std::max(a.i0, 0);
+      break;
+  }
+  return a;
+}
+
+using TexelFloat = std::array<float, 4>;
+
+inline TexelFloat borderColour(BorderColor c) {
+  switch (c) {
+    case BorderColor::TransparentBlack: return {0, 0, 0, 0};
+    case BorderColor::OpaqueBlack: return {0, 0, 0, 1};
+    case BorderColor::OpaqueWhite: return {1, 1, 1, 1};
+  }
+  return {0, 0, 0, 0};
+}
+
+// lp_build_sample_texel_soa: the texel at (x, y), or the border colour where a clamp-to-border
+// axis falls outside the level; converted to float.
+inline TexelFloat fetchFloat(const TextureLevel& level, bool srgb, const SamplerState& s, std::int32_t x, std::int32_t y) {
+  const bool outsideU = s.addressModeU == AddressMode::ClampToBorder && (x < 0 || x >= static_cast<std::int32_t>(level.width));
+  const bool outsideV = s.addressModeV == AddressMode::ClampToBorder && (y < 0 || y >= static_cast<std::int32_t>(level.height));
+  if (outsideU || outsideV) return borderColour(s.borderColor);
+  const Texel t = fetch(level, static_cast<std::uint32_t>(x), static_cast<std::uint32_t>(y));
+  constexpr float kUnorm = static_cast<float>(1.0 / 255.0);
+  if (srgb) return {srgbToLinear(t[0]), srgbToLinear(t[1]), srgbToLinear(t[2]), static_cast<float>(t[3]) * kUnorm};
+  return {static_cast<float>(t[0]) * kUnorm, static_cast<float>(t[1]) * kUnorm, static_cast<float>(t[2]) * kUnorm,
+          static_cast<float>(t[3]) * kUnorm};
+}
+
+inline float lerpFloat(float w, float v0, float v1) { return std::fma(w, v1 - v0, v0); }  // lp_build_lerp: fmuladd
+
+// One pixel's colour from one level through the float path.
+inline TexelFloat sampleLevelFloat(const TextureLevel& level, Filter filter, const SamplerState& s, bool srgb,
+                                   bool potWidth, bool potHeight, float u, float v) {
+  if (filter == Filter::Nearest) {
+    return fetchFloat(level, srgb, s, nearestTexelFloat(u, level.width, potWidth, s.addressModeU),
+                      nearestTexelFloat(v, level.height, potHeight, s.addressModeV));
+  }
+  const AxisTexelsFloat x = linearTexelsFloat(u, level.width, potWidth, s.addressModeU);
+  const AxisTexelsFloat y = linearTexelsFloat(v, level.height, potHeight, s.addressModeV);
+  const TexelFloat c00 = fetchFloat(level, srgb, s, x.i0, y.i0), c01 = fetchFloat(level, srgb, s, x.i1, y.i0);
+  const TexelFloat c10 = fetchFloat(level, srgb, s, x.i0, y.i1), c11 = fetchFloat(level, srgb, s, x.i1, y.i1);
+  TexelFloat out;
+  for (int c = 0; c < 4; ++c) {
+    out[c] = lerpFloat(y.weight, lerpFloat(x.weight, c00[c], c01[c]), lerpFloat(x.weight, c10[c], c11[c]));
+  }
+  return out;
+}
+
+// Whether lavapipe samples this in float rather than in 8-bit fixed point (use_aos is false).
+inline bool usesFloatPath(TextureFormat format, const SamplerState& s) {
+  const auto simple = [](AddressMode m) { return m == AddressMode::Repeat || m == AddressMode::ClampToEdge; };
+  return format == TextureFormat::R8G8B8A8Srgb || !simple(s.addressModeU) || !simple(s.addressModeV);
+}
+
 }  // namespace detail::texture
 
 inline Vec4T<FloatBatch> texture(const Sampler2D& sampler, FloatBatch u, FloatBatch v) {
@@ -252,18 +410,31 @@ inline Vec4T<FloatBatch> texture(const Sampler2D& sampler, FloatBatch u, FloatBa
   const t::StaticSampler d = t::staticSampler(s, tex->levels());
   const bool potWidth = t::isPowerOfTwo(tex->width()), potHeight = t::isPowerOfTwo(tex->height());
   const float width = static_cast<float>(tex->width()), height = static_cast<float>(tex->height());
+  const bool floatPath = t::usesFloatPath(tex->format(), s), srgb = tex->format() == TextureFormat::R8G8B8A8Srgb;
   alignas(32) float out[4][kBatchLanes];
   for (int quad = 0; quad < 2; ++quad) {
+    float mipFraction = 0.0f;
     const int tl = 2 * quad, tr = tl + 1, bl = tl + 4;  // lanes of the quad (simd.hpp: lane = 4 * row + column)
     float dsdx = (u[tr] - u[tl]) * width, dsdy = (u[bl] - u[tl]) * width;
     float dtdx = (v[tr] - v[tl]) * height, dtdy = (v[bl] - v[tl]) * height;
     dsdx = dsdx * dsdx, dsdy = dsdy * dsdy, dtdx = dtdx * dtdx, dtdy = dtdy * dtdy;
     const float rhoSquared = sseMax(dsdx + dtdx, dsdy + dtdy);
-    const t::QuadLod lod = t::quadLod(d, rhoSquared, tex->levels());
+    const t::QuadLod lod = t::quadLod(d, rhoSquared, tex->levels(), floatPath ? &mipFraction : nullptr);
     Filter filter = d.minFilter;
     bool mipLinear = d.mip == t::StaticSampler::Mip::Linear;
     if (d.minFilter != d.magFilter && !lod.minified) filter = d.magFilter, mipLinear = false;
     for (int lane : {tl, tr, bl, bl + 1}) {
+      if (floatPath) {
+        t::TexelFloat c =
+            t::sampleLevelFloat(tex->level(lod.level0), filter, s, srgb, potWidth, potHeight, u[lane], v[lane]);
+        if (mipLinear) {
+          const t::TexelFloat c1 =
+              t::sampleLevelFloat(tex->level(lod.level1), filter, s, srgb, potWidth, potHeight, u[lane], v[lane]);
+          for (int ch = 0; ch < 4; ++ch) c[ch] = t::lerpFloat(mipFraction, c[ch], c1[ch]);
+        }
+        for (int ch = 0; ch < 4; ++ch) out[ch][lane] = c[ch];
+        continue;
+      }
       t::Texel c = t::sampleLevel(tex->level(lod.level0), filter, s, potWidth, potHeight, u[lane], v[lane]);
       if (mipLinear) {
         const t::Texel c1 = t::sampleLevel(tex->level(lod.level1), filter, s, potWidth, potHeight, u[lane], v[lane]);
