@@ -20,6 +20,7 @@ namespace shaders {
 // parser computes them only for a model that reads them.
 inline constexpr unsigned kReadsNormals = 1u;
 inline constexpr unsigned kReadsTexcoords = 2u;
+inline constexpr unsigned kReadsTangents = 4u;  // computed from positions, normals and texture coordinates
 
 // Textures a draw may give its model (the first is the surface's colour, the second a normal map).
 inline constexpr std::size_t kMaxDrawTextures = 2;
@@ -29,6 +30,7 @@ struct Mesh {
   std::vector<softraster::Vec4> colours;    // RGBA in [0, 1], one per position
   std::vector<softraster::Vec3> normals;    // object space, one per position; empty unless read
   std::vector<softraster::Vec2> texcoords;  // (u, v), one per position; empty unless read
+  std::vector<softraster::Vec4> tangents;   // object space along +u, w = +-1 the bitangent's side; empty unless read
   std::size_t vertexCount() const { return positions.size(); }
 };
 

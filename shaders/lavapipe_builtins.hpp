@@ -7,6 +7,7 @@
 //   length(v)         sqrt(dot(v, v))
 //   normalize(v)      v / length(v), a real division per component
 //   reflect(i, n)     i - n * (dot(i, n) * 2)
+//   cross(a, b)       a.yzx * b.zxy - a.zxy * b.yzx, each product rounded
 //   maxConstant(x, c) max(x, c) with c a constant: SSE maxps(x, c) (a NaN x gives c)
 //   pow(x, y)         exp2(log2_safe(x) * y), 0 where x == 0 or x is NaN; gallivm's polynomials
 // The polynomials use fmuladd as gallivm does on a CPU with FMA (every x86-64 CPU this project
@@ -96,6 +97,13 @@ F length(const Vec3T<F>& v) {
 template <class F>
 Vec3T<F> normalize(const Vec3T<F>& v) {
   return v / length(v);
+}
+
+// nir_cross3: ffma(a.yzx, b.zxy, -(a.zxy * b.yzx)), the ffma split (lower_ffma32) into a
+// rounded product and an add.
+template <class F>
+Vec3T<F> cross(const Vec3T<F>& a, const Vec3T<F>& b) {
+  return {a.y * b.z - a.z * b.y, a.z * b.x - a.x * b.z, a.x * b.y - a.y * b.x};
 }
 
 template <class F>

@@ -27,6 +27,11 @@ vec3 toLighting(vec3 p) {
   return q;
 }
 
+vec3 directionToLighting(vec3 d) {
+  precise vec3 m = u.modelToLighting[0].xyz * d.x + u.modelToLighting[1].xyz * d.y + u.modelToLighting[2].xyz * d.z;
+  return m;
+}
+
 vec3 normalToLighting(vec3 n) {
   precise vec3 m = u.normalToLighting[0].xyz * n.x + u.normalToLighting[1].xyz * n.y +
                    u.normalToLighting[2].xyz * n.z;

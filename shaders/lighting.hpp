@@ -60,6 +60,11 @@ inline Vec3T<float> toLighting(const LightingUniforms& u, softraster::Vec3 p) {
   return xyz(m[0]) * p.x + xyz(m[1]) * p.y + xyz(m[2]) * p.z + xyz(m[3]);
 }
 
+inline Vec3T<float> directionToLighting(const LightingUniforms& u, softraster::Vec3 d) {
+  const auto& m = u.modelToLighting.columns;
+  return xyz(m[0]) * d.x + xyz(m[1]) * d.y + xyz(m[2]) * d.z;
+}
+
 inline Vec3T<float> normalToLighting(const LightingUniforms& u, softraster::Vec3 n) {
   const auto& m = u.normalToLighting.columns;
   return xyz(m[0]) * n.x + xyz(m[1]) * n.y + xyz(m[2]) * n.z;

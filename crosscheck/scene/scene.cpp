@@ -661,6 +661,14 @@ Draw readDraw(const json& d, const std::string& place, const std::filesystem::pa
   Draw draw = readDrawMesh(d, place, sceneDir);
   if (d.contains("transform")) draw.model = readTransform(d["transform"], placeOf(place, "transform"), time);
   if (d.contains("material")) draw.material = readMaterial(d["material"], placeOf(place, "material"));
+  if ((draw.shading->meshInputs & shaders::kReadsTexcoords) != 0) {  // before normals: flat ones rewrite the mesh
+    readTexcoords(d, place, draw, !draw.mesh.texcoords.empty());
+  } else {
+    if (d.contains("texcoords")) {
+      throw SceneError(placeOf(place, "texcoords"), "shading '" + std::string(draw.shading->name) + "' reads no texture coordinates");
+    }
+    draw.mesh.texcoords.clear();
+  }
   const bool readsNormals = (draw.shading->meshInputs & shaders::kReadsNormals) != 0;
   if (readsNormals) {
     readNormals(d, place, draw, !draw.mesh.normals.empty());
@@ -668,13 +676,11 @@ Draw readDraw(const json& d, const std::string& place, const std::filesystem::pa
     if (d.contains("normals")) throw SceneError(placeOf(place, "normals"), "shading '" + std::string(draw.shading->name) + "' reads no normals");
     draw.mesh.normals.clear();
   }
-  if ((draw.shading->meshInputs & shaders::kReadsTexcoords) != 0) {
-    readTexcoords(d, place, draw, !draw.mesh.texcoords.empty());
-  } else {
-    if (d.contains("texcoords")) {
-      throw SceneError(placeOf(place, "texcoords"), "shading '" + std::string(draw.shading->name) + "' reads no texture coordinates");
+  if ((draw.shading->meshInputs & shaders::kReadsTangents) != 0) {
+    if (draw.state.topology != softraster::Topology::TriangleList) {
+      throw SceneError(placeOf(place, "topology"), "tangents are computed for triangle lists only");
     }
-    draw.mesh.texcoords.clear();
+    computeTangents(draw.mesh, draw.indices, draw.indexed);
   }
   if (draw.shading->textures > 0) {
     if (!d.contains("texture")) {
@@ -684,12 +690,20 @@ Draw readDraw(const json& d, const std::string& place, const std::filesystem::pa
   } else if (d.contains("texture")) {
     throw SceneError(placeOf(place, "texture"), "shading '" + std::string(draw.shading->name) + "' samples no texture");
   }
+  if (draw.shading->textures > 1) {
+    if (!d.contains("normal_map")) {
+      throw SceneError(place, "shading '" + std::string(draw.shading->name) + "' samples a normal map: give \"normal_map\"");
+    }
+    draw.textures.push_back(readTexture(d["normal_map"], placeOf(place, "normal_map"), sceneDir, textures));
+  } else if (d.contains("normal_map")) {
+    throw SceneError(placeOf(place, "normal_map"), "shading '" + std::string(draw.shading->name) + "' samples no normal map");
+  }
   return draw;
 }
 
 Draw readDrawMesh(const json& d, const std::string& place, const std::filesystem::path& sceneDir) {
   checkKeys(d, place, {"name", "obj", "sphere", "positions", "colours", "colour", "indices", "normals", "texcoords",
-                       "texture", "shading",
+                       "texture", "normal_map", "shading",
                        "transform", "material", "topology", "viewport", "scissor", "cull", "front_face", "depth_clamp",
                        "depth_bias", "line_width", "line_rasterization", "point_size", "polygon_mode", "blend",
                        "depth_test", "depth_write", "depth_compare"});

@@ -43,8 +43,8 @@ struct Draw {
   std::vector<std::uint32_t> indices;
   glm::dmat4 model{1.0};                // object -> world: "transform" at the scene's time
   shaders::Material material;           // what the lit models read beyond the vertex colours
-  // What a textured model samples ("texture"): the texture (shared by draws naming the same
-  // file, format and mip choice) and the sampler. Empty for models that sample nothing.
+  // What a textured model samples ("texture", then "normal_map"): the texture (shared by draws
+  // naming the same file, format and mip choice) and the sampler. Empty for models that sample nothing.
   struct Texture {
     std::shared_ptr<const softraster::Texture> texture;
     softraster::SamplerState sampler;

@@ -6,6 +6,7 @@ blur to grey), 8x8 and 48x40 seeded noise with alpha (every texel differs from i
 every filter weight shows), a 16x16 arrow pattern (which way is u, which way is v).
 Run from scenes/:  python3 tools/make_texture_scenes.py"""
 import json
+import math
 import random
 import struct
 import zlib
@@ -64,6 +65,50 @@ def arrows(size=16):
     return rows
 
 
+def bumps(size=64, cells=4):
+    """A tangent-space normal map of round bumps (a cosine hill per cell): the normal of the height
+    h(x, y), encoded as (n + 1) / 2 in RGB; x along +u, y along +v, z out of the surface."""
+    rows = []
+    for y in range(size):
+        row = []
+        for x in range(size):
+            cx = (x + 0.5) / size * cells % 1.0 - 0.5
+            cy = (y + 0.5) / size * cells % 1.0 - 0.5
+            r = math.hypot(cx, cy)
+            # h = cos(pi r / 0.45) bump inside r < 0.45; its gradient in texel units.
+            if r < 0.45 and r > 0:
+                slope = -math.sin(math.pi * r / 0.45) * math.pi / 0.45 * 0.15 * cells
+                gx, gy = slope * cx / r, slope * cy / r
+            else:
+                gx = gy = 0.0
+            n = (-gx, -gy, 1.0)
+            length = math.sqrt(n[0] ** 2 + n[1] ** 2 + n[2] ** 2)
+            row.append(tuple(int(round((c / length * 0.5 + 0.5) * 255)) for c in n) + (255,))
+        rows.append(row)
+    return rows
+
+
+def cube_obj(path):
+    """A unit cube with one texture square per face (vt) and face normals (vn)."""
+    faces = [((0, 0, 1), (1, 0, 0), (0, 1, 0)), ((0, 0, -1), (-1, 0, 0), (0, 1, 0)), ((1, 0, 0), (0, 0, -1), (0, 1, 0)),
+             ((-1, 0, 0), (0, 0, 1), (0, 1, 0)), ((0, 1, 0), (1, 0, 0), (0, 0, -1)), ((0, -1, 0), (1, 0, 0), (0, 0, 1))]
+    lines = ["# A unit cube, one texture square per face, face normals; written by tools/make_texture_scenes.py"]
+    vt = [(0, 0), (1, 0), (1, 1), (0, 1)]
+    for u, v in vt:
+        lines.append(f"vt {u} {v}")
+    corner = 0
+    for f, (n, a, b) in enumerate(faces):
+        lines.append(f"vn {n[0]} {n[1]} {n[2]}")
+        for su, sv in [(-1, -1), (1, -1), (1, 1), (-1, 1)]:
+            p = [0.5 * n[i] + 0.5 * su * a[i] + 0.5 * sv * b[i] for i in range(3)]
+            lines.append(f"v {p[0]:g} {p[1]:g} {p[2]:g}")
+        # counter-clockwise seen from outside (n towards the viewer)
+        lines.append("f " + " ".join(f"{corner + k + 1}/{k + 1}/{f + 1}" for k in (0, 3, 2, 1)))
+        corner += 4
+    with open(path, "w") as out:
+        out.write("\n".join(lines) + "\n")
+
+
 def write(path, scene):
     with open(path, "w") as f:
         json.dump(scene, f, indent=1)
@@ -101,6 +146,8 @@ def main():
     write_png("textures/noise_8.png", 8, 8, noise(8, 8, 8))
     write_png("textures/noise_48x40.png", 48, 40, noise(48, 40, 4840))
     write_png("textures/arrows_16.png", 16, 16, arrows())
+    write_png("textures/bumps_64.png", 64, 64, bumps())
+    cube_obj("meshes/textured_cube.obj")
 
     noise8 = "textures/noise_8.png"
     write("texture_magnify.json", {
@@ -136,7 +183,45 @@ def main():
         "draws": wrap_draws,
         "tolerance": EXACT})
 
+    float_draws = []
+    cells = [("mirrored_repeat", "mirrored_repeat", "transparent_black"), ("clamp_to_border", "clamp_to_border", "opaque_white"),
+             ("mirrored_repeat", "clamp_to_border", "opaque_black"), ("clamp_to_border", "repeat", "transparent_black")]
+    for i, (u, v, border) in enumerate(cells):
+        for j, (file, filt) in enumerate([(arrows16, "nearest"), (arrows16, "linear"), (npot, "nearest"), (npot, "linear")]):
+            x0 = -0.98 + i * 0.49
+            y0 = -0.98 + j * 0.49
+            float_draws.append(quad(x0, y0, x0 + 0.47, y0 + 0.47, [-1.25, -0.75], [1.75, 2.25], f"{u}_{v}_{file[9:-4]}_{filt}",
+                                    {"file": file, "address_mode_u": u, "address_mode_v": v, "mag_filter": filt,
+                                     "min_filter": filt, "border_colour": border}))
+    write("texture_wrap_float.json", {
+        "description": "The wrap modes lavapipe filters in float: columns (left to right) mirrored_repeat both ways, "
+                       "clamp_to_border both ways with an opaque white border, mirrored u with a clamped-to-border v "
+                       "(opaque black), clamped-to-border u (transparent black, the clear colour shows) with repeat v; "
+                       "rows as in texture_wrap.json (arrows nearest and linear, 48x40 noise nearest and linear). "
+                       "Mirrored copies flip at every integer; the border colour fills everything outside [0, 1].",
+        "framebuffer": {"width": 320, "height": 320, "clear_colour": [0.2, 0.3, 0.4, 1]},
+        "camera": {"type": "clip_space"},
+        "draws": float_draws,
+        "tolerance": EXACT})
+
     checker64 = "textures/checker_64.png"
+    write("texture_srgb.json", {
+        "description": "An sRGB texture (R8G8B8A8_SRGB): texels decoded to linear light before filtering (lavapipe's "
+                       "cubic approximation), so it looks darker than the same bytes as UNORM. Left: the 8x8 noise "
+                       "magnified, nearest and linear; right: the mipmapped checker floor with trilinear filtering, the "
+                       "same bytes as UNORM on the far right for comparison.",
+        "framebuffer": {"width": 480, "height": 240, "clear_colour": [0.1, 0.1, 0.1, 1]},
+        "camera": {"type": "clip_space"},
+        "draws": [
+            quad(-0.98, -0.9, -0.68, 0.9, [0, 0], [1, 1], "srgb nearest", {"file": noise8, "format": "srgb",
+                                                                            "mag_filter": "nearest", "min_filter": "nearest"}),
+            quad(-0.66, -0.9, -0.36, 0.9, [0, 0], [1, 1], "srgb linear", {"file": noise8, "format": "srgb"}),
+            quad(-0.3, -0.95, 0.32, 0.95, [0, 0], [6, 6], "srgb trilinear minified",
+                 {"file": checker64, "format": "srgb", "mipmaps": True, "mipmap_mode": "linear"}),
+            quad(0.36, -0.95, 0.98, 0.95, [0, 0], [6, 6], "unorm trilinear minified",
+                 {"file": checker64, "mipmaps": True, "mipmap_mode": "linear"}),
+        ],
+        "tolerance": EXACT})
     for filt in ["nearest", "linear"]:
         for mip in ["nearest", "linear", "none"]:
             texture = {"file": checker64, "mag_filter": filt, "min_filter": filt, "mipmaps": mip != "none"}
@@ -171,6 +256,48 @@ def main():
         "framebuffer": {"width": 480, "height": 240, "clear_colour": [0.5, 0.7, 0.9, 1]},
         "camera": PLANE_CAMERA,
         "draws": lod_draws,
+        "tolerance": EXACT})
+
+
+    write("texture_msaa.json", {
+        "description": "The trilinear checker floor with 4x MSAA: coverage and depth per sample, the texture sampled once "
+                       "per pixel at its centre with the level of detail of its 2x2 quad (as single-sample), then the "
+                       "resolve; the horizon's edge is smoothed.",
+        "framebuffer": {"width": 320, "height": 240, "clear_colour": [0.5, 0.7, 0.9, 1], "samples": 4},
+        "camera": PLANE_CAMERA,
+        "draws": [plane("floor", {"file": checker64, "mipmaps": True, "mipmap_mode": "linear"})],
+        "tolerance": EXACT})
+
+    write("texture_lit_obj.json", {
+        "description": "A textured, lit OBJ: a cube with texture coordinates (vt) and normals (vn) per face, the mipmapped "
+                       "checker on every face (trilinear), lit per pixel with Blinn-Phong (ambient, diffuse, specular) by the "
+                       "scene's light; turned by time (spin), so --set time=T shows other faces at other levels of detail.",
+        "framebuffer": {"width": 320, "height": 240, "clear_colour": [0.05, 0.05, 0.08, 1]},
+        "camera": {"type": "look_at", "eye": [0, -1.2, -2.6], "target": [0, 0, 0], "up": [0, -1, 0], "fov_y": 45},
+        "time": 0.7,
+        "light": {"position": [1.5, -2, -2], "colour": [1, 1, 1]},
+        "draws": [{"name": "cube", "obj": "meshes/textured_cube.obj", "shading": "blinn_phong_textured",
+                   "transform": {"rotate": [20, 0, 0], "spin": [0, 35, 0]},
+                   "material": {"ambient": [0.15, 0.15, 0.15], "specular": [0.4, 0.4, 0.4], "shininess": 40},
+                   "texture": {"file": checker64, "mipmaps": True, "mipmap_mode": "linear"}}],
+        "tolerance": EXACT})
+
+    write("texture_normal_map.json", {
+        "description": "A normal-mapped quad: the checker as its colour and a generated bump map (textures/bumps_64.png, 4x4 "
+                       "round hills) as its tangent-space normals, tangents computed from the texture coordinates. Lit "
+                       "per pixel with Blinn-Phong from the upper left, so each flat quad shows 16 shaded domes, lit on the "
+                       "side facing the light with a highlight; the tests move the light (--set light.position).",
+        "framebuffer": {"width": 320, "height": 240, "clear_colour": [0.05, 0.05, 0.08, 1]},
+        "camera": {"type": "look_at", "eye": [0, 0, -2.2], "target": [0, 0, 0], "up": [0, -1, 0], "fov_y": 50},
+        "light": {"position": [-1.2, -1.2, -1.2], "colour": [1, 1, 1]},
+        "draws": [{"name": "bumpy quad", "shading": "blinn_phong_normal_mapped",
+                   "positions": [[-1, -0.8, 0], [1, -0.8, 0], [1, 0.8, 0], [-1, 0.8, 0]],
+                   "normals": [[0, 0, -1], [0, 0, -1], [0, 0, -1], [0, 0, -1]],
+                   "texcoords": [[0, 0], [1.25, 0], [1.25, 1], [0, 1]],
+                   "indices": [0, 2, 1, 0, 3, 2], "cull": "none",
+                   "material": {"ambient": [0.1, 0.1, 0.1], "specular": [0.5, 0.5, 0.5], "shininess": 30},
+                   "texture": {"file": checker64, "mipmaps": True, "mipmap_mode": "linear"},
+                   "normal_map": {"file": "textures/bumps_64.png", "mipmaps": True, "mipmap_mode": "linear"}}],
         "tolerance": EXACT})
 
 
