@@ -103,7 +103,7 @@ def cube_obj(path):
             p = [0.5 * n[i] + 0.5 * su * a[i] + 0.5 * sv * b[i] for i in range(3)]
             lines.append(f"v {p[0]:g} {p[1]:g} {p[2]:g}")
         # counter-clockwise seen from outside (n towards the viewer)
-        lines.append("f " + " ".join(f"{corner + k + 1}/{k + 1}/{f + 1}" for k in (0, 3, 2, 1)))
+        lines.append("f " + " ".join(f"{corner + k + 1}/{k + 1}/{f + 1}" for k in (0, 1, 2, 3)))
         corner += 4
     with open(path, "w") as out:
         out.write("\n".join(lines) + "\n")

@@ -32,10 +32,9 @@
 #include <bit>
 #include <cmath>
 #include <cstdint>
+#include <iterator>
 
 namespace softraster {
-
-struct Sampler2D;
 
 namespace detail::texture {
 
@@ -401,53 +400,65 @@ inline bool usesFloatPath(TextureFormat format, const SamplerState& s) {
 
 }  // namespace detail::texture
 
-inline Vec4T<FloatBatch> texture(const Sampler2D& sampler, FloatBatch u, FloatBatch v) {
-  namespace t = detail::texture;
-  Vec4T<FloatBatch> result;
+namespace detail::texture {
+
+// The two quads of a batch, lane by lane (lanes as in simd.hpp: lane = 4 * row + column), into
+// out[channel][lane]. Out of line on purpose: each shader's fast path is flattened into one
+// function, and sampling inlined there (twice for a normal map, per depth format and path) made
+// one shader's translation unit take many minutes to compile; one call per batch costs nothing
+// beside the per-lane work. Plain arrays, so no vector crosses the call (no ABI question).
+[[gnu::noinline]] inline void sampleQuads(const Sampler2D& sampler, const float (&u)[kBatchLanes],
+                                          const float (&v)[kBatchLanes], float (&out)[4][kBatchLanes]) {
   const Texture* tex = sampler.texture;
-  if (tex == nullptr || tex->levels() == 0) return result;
+  if (tex == nullptr || tex->levels() == 0) {
+    for (auto& channel : out) std::fill(std::begin(channel), std::end(channel), 0.0f);
+    return;
+  }
   const SamplerState& s = sampler.sampler;
-  const t::StaticSampler d = t::staticSampler(s, tex->levels());
-  const bool potWidth = t::isPowerOfTwo(tex->width()), potHeight = t::isPowerOfTwo(tex->height());
+  const StaticSampler d = staticSampler(s, tex->levels());
+  const bool potWidth = isPowerOfTwo(tex->width()), potHeight = isPowerOfTwo(tex->height());
   const float width = static_cast<float>(tex->width()), height = static_cast<float>(tex->height());
-  const bool floatPath = t::usesFloatPath(tex->format(), s), srgb = tex->format() == TextureFormat::R8G8B8A8Srgb;
-  alignas(32) float out[4][kBatchLanes];
+  const bool floatPath = usesFloatPath(tex->format(), s), srgb = tex->format() == TextureFormat::R8G8B8A8Srgb;
   for (int quad = 0; quad < 2; ++quad) {
     float mipFraction = 0.0f;
-    const int tl = 2 * quad, tr = tl + 1, bl = tl + 4;  // lanes of the quad (simd.hpp: lane = 4 * row + column)
+    const int tl = 2 * quad, tr = tl + 1, bl = tl + 4;
     float dsdx = (u[tr] - u[tl]) * width, dsdy = (u[bl] - u[tl]) * width;
     float dtdx = (v[tr] - v[tl]) * height, dtdy = (v[bl] - v[tl]) * height;
     dsdx = dsdx * dsdx, dsdy = dsdy * dsdy, dtdx = dtdx * dtdx, dtdy = dtdy * dtdy;
     const float rhoSquared = sseMax(dsdx + dtdx, dsdy + dtdy);
-    const t::QuadLod lod = t::quadLod(d, rhoSquared, tex->levels(), floatPath ? &mipFraction : nullptr);
+    const QuadLod lod = quadLod(d, rhoSquared, tex->levels(), floatPath ? &mipFraction : nullptr);
     Filter filter = d.minFilter;
-    bool mipLinear = d.mip == t::StaticSampler::Mip::Linear;
+    bool mipLinear = d.mip == StaticSampler::Mip::Linear;
     if (d.minFilter != d.magFilter && !lod.minified) filter = d.magFilter, mipLinear = false;
     for (int lane : {tl, tr, bl, bl + 1}) {
       if (floatPath) {
-        t::TexelFloat c =
-            t::sampleLevelFloat(tex->level(lod.level0), filter, s, srgb, potWidth, potHeight, u[lane], v[lane]);
+        TexelFloat c = sampleLevelFloat(tex->level(lod.level0), filter, s, srgb, potWidth, potHeight, u[lane], v[lane]);
         if (mipLinear) {
-          const t::TexelFloat c1 =
-              t::sampleLevelFloat(tex->level(lod.level1), filter, s, srgb, potWidth, potHeight, u[lane], v[lane]);
-          for (int ch = 0; ch < 4; ++ch) c[ch] = t::lerpFloat(mipFraction, c[ch], c1[ch]);
+          const TexelFloat c1 =
+              sampleLevelFloat(tex->level(lod.level1), filter, s, srgb, potWidth, potHeight, u[lane], v[lane]);
+          for (int ch = 0; ch < 4; ++ch) c[ch] = lerpFloat(mipFraction, c[ch], c1[ch]);
         }
         for (int ch = 0; ch < 4; ++ch) out[ch][lane] = c[ch];
         continue;
       }
-      t::Texel c = t::sampleLevel(tex->level(lod.level0), filter, s, potWidth, potHeight, u[lane], v[lane]);
+      Texel c = sampleLevel(tex->level(lod.level0), filter, s, potWidth, potHeight, u[lane], v[lane]);
       if (mipLinear) {
-        const t::Texel c1 = t::sampleLevel(tex->level(lod.level1), filter, s, potWidth, potHeight, u[lane], v[lane]);
-        for (int ch = 0; ch < 4; ++ch) c[ch] = t::lerpUnorm8(lod.mipWeight, c[ch], c1[ch]);
+        const Texel c1 = sampleLevel(tex->level(lod.level1), filter, s, potWidth, potHeight, u[lane], v[lane]);
+        for (int ch = 0; ch < 4; ++ch) c[ch] = lerpUnorm8(lod.mipWeight, c[ch], c1[ch]);
       }
       for (int ch = 0; ch < 4; ++ch) out[ch][lane] = static_cast<float>(c[ch]) * static_cast<float>(1.0 / 255.0);
     }
   }
-  result.x = FloatBatch::load(out[0]);
-  result.y = FloatBatch::load(out[1]);
-  result.z = FloatBatch::load(out[2]);
-  result.w = FloatBatch::load(out[3]);
-  return result;
+}
+
+}  // namespace detail::texture
+
+inline Vec4T<FloatBatch> texture(const Sampler2D& sampler, FloatBatch u, FloatBatch v) {
+  alignas(32) float us[kBatchLanes], vs[kBatchLanes], out[4][kBatchLanes];
+  u.store(us);
+  v.store(vs);
+  detail::texture::sampleQuads(sampler, us, vs, out);
+  return {FloatBatch::load(out[0]), FloatBatch::load(out[1]), FloatBatch::load(out[2]), FloatBatch::load(out[3])};
 }
 
 }  // namespace softraster
