@@ -174,10 +174,10 @@ case $case_name in
     done
     ;;
   default_suite)
-    # No argument: every scene in scenes/ of the current directory, all passing.
+    # No argument: every scene in scenes/ and scenes/stability/ of the current directory, all passing.
     run conformance --jobs 2
     expect_status 0
-    expected=$(ls scenes/*.json | wc -l)
+    expected=$(ls scenes/*.json scenes/stability/*.json | wc -l)
     expect_out "^crosscheck conformance: $expected scenes, 2 jobs$"
     expect_last_line "$expected passed, 0 failed"
     ;;
