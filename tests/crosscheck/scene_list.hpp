@@ -12,7 +12,7 @@
 
 inline std::vector<std::string> conformanceSceneNames() {
   std::vector<std::string> names;
-  for (const std::filesystem::path dir : {std::filesystem::path(SCENES_DIR), std::filesystem::path(SCENES_DIR) / "stability"}) {
+  for (const std::filesystem::path& dir : {std::filesystem::path(SCENES_DIR), std::filesystem::path(SCENES_DIR) / "stability"}) {
     for (const auto& entry : std::filesystem::directory_iterator(dir)) {
       if (entry.path().extension() == ".json") names.push_back(entry.path().stem().string());
     }
