@@ -6,7 +6,8 @@
 // and closer) as a line through its points, and a <title> tooltip on every marker with the
 // label and its numbers; plus one overview panel over all scenes: speed relative to lavapipe
 // (lavapipe median / median, log scale, > 1: faster) against coverage mismatches, one marker per
-// scene and variant.
+// scene and variant (scenes without lavapipe's time are left out of it). A point whose median is
+// 0 or that has no agreement numbers is not drawn; it is named under its panel.
 // Input is a ChartSet, made from a bench JSON (crosscheck bench --json: chartFromBenchJson) or
 // from a run's results (the report's variant runs: chartFromResults). The SVG needs no script,
 // font or network: a browser and a paper's toolchain read it alike.
