@@ -4,10 +4,13 @@
 //   crosscheck compare SCENE [-o DIR] [--json]
 //   crosscheck conformance [SCENE|DIR ...] [--expectations FILE] [--jobs N] [--shard I/N] [--junit FILE] [-o DIR]
 //                          [--timeout SECONDS] [--memory-limit MB] [--set KEY.PATH=VALUE ...]
-//   crosscheck report [SCENE|DIR ...] -o DIR [--baseline DIR] [--expectations FILE] [--jobs N] [--shard I/N]
+//   crosscheck report [SCENE|DIR ...] -o DIR [--baseline DIR] [--no-chart] [--chart-frames N]
+//                     [--expectations FILE] [--jobs N] [--shard I/N]
 //                     [--junit FILE] [--timeout SECONDS] [--memory-limit MB] [--set KEY.PATH=VALUE ...]
 //   crosscheck merge RESULTS.json|DIR ... -o DIR [--junit FILE]
 //   crosscheck bench [SCENE|DIR ...] [--frames N] [--warmup N] [--threads N] [-o FILE.json]
+//   crosscheck chart BENCH.json [-o CHART.svg]
+//   crosscheck stability [SCENE|DIR ...] [--frames N] [--threads N] [--json FILE]
 // render and compare also take --method NAME (options.hpp kMethods: exact, exact-scalar, ...) and --threads N (softraster's).
 // Exit status (README, "Exit status"): 0 success / within tolerance / nothing unexpected; 1
 // outside tolerance or an unexpected conformance result; 2 anything that kept the comparison from
@@ -62,10 +65,12 @@ constexpr const char* kUsage =
     "       crosscheck compare SCENE [-o DIR] [--json]\n"
     "       crosscheck conformance [SCENE|DIR ...] [--expectations FILE] [--jobs N] [--shard I/N] [--junit FILE] "
     "[-o DIR] [--timeout SECONDS] [--memory-limit MB] [--set KEY.PATH=VALUE ...]\n"
-    "       crosscheck report [SCENE|DIR ...] -o DIR [--baseline DIR] [--expectations FILE] [--jobs N] [--shard I/N] "
-    "[--junit FILE] [--timeout SECONDS] [--memory-limit MB] [--set KEY.PATH=VALUE ...]\n"
+    "       crosscheck report [SCENE|DIR ...] -o DIR [--baseline DIR] [--no-chart] [--chart-frames N] [--expectations FILE] [--jobs N] "
+    "[--shard I/N] [--junit FILE] [--timeout SECONDS] [--memory-limit MB] [--set KEY.PATH=VALUE ...]\n"
     "       crosscheck merge RESULTS.json|DIR ... -o DIR [--junit FILE]\n"
     "       crosscheck bench [SCENE|DIR ...] [--frames N] [--warmup N] [--threads N] [-o FILE.json]\n"
+    "       crosscheck chart BENCH.json [-o CHART.svg]\n"
+    "       crosscheck stability [SCENE|DIR ...] [--frames N] [--threads N] [--json FILE]\n"
     "       (crosscheck SUBCOMMAND --help for every option)";
 
 // softraster's method names, "exact, exact-scalar, ...", for usage and errors.
@@ -194,6 +199,13 @@ int main(int argc, char** argv) {
       app.add_subcommand("report", "Run the suite like conformance and write an HTML report to DIR/index.html");
   addSuite(reportCommand);
   reportCommand->add_option("-o,--output", reportDir, "Report directory")->required();
+  bool noChart = false;
+  std::string chartFramesText = std::to_string(crosscheck::cli::kDefaultChartFrames);
+  reportCommand->add_flag("--no-chart", noChart,
+                          "Leave out the speed-vs-accuracy chart (every method and option drawn a few timed frames "
+                          "per scene) and the stability table");
+  reportCommand->add_option("--chart-frames", chartFramesText,
+                            "Timed frames per method and option for the chart (default " + chartFramesText + ")");
   reportCommand->add_option("--baseline", baselineDir,
                             "An earlier run's output directory (or its results.json): mark new failures, fixed scenes "
                             "and changed metrics against it");
@@ -222,14 +234,33 @@ int main(int argc, char** argv) {
   benchCommand->add_option("-o,--output,--json", bench.jsonFile, "Write the results as JSON to this file");
   addDevice(benchCommand);
 
+  crosscheck::cli::ChartCommand chart;
+  CLI::App* chartCommand =
+      app.add_subcommand("chart", "Write a bench JSON's speed-vs-accuracy chart as a standalone SVG");
+  chartCommand->add_option("BENCH", chart.benchJson, "A bench JSON (crosscheck bench --json FILE)")->required();
+  chartCommand->add_option("-o,--output", chart.output, "The SVG to write (default: BENCH with .svg)");
+
+  crosscheck::cli::StabilityCommand stability;
+  std::string stabilityFramesText = "3", stabilityThreadsText = "0";
+  CLI::App* stabilityCommand = app.add_subcommand(
+      "stability", "Draw every stability case with every method and option against lavapipe: wrong pixels, cracks, "
+                   "double hits, time; exit 0 when exact passes every case");
+  stabilityCommand->add_option("SCENES", stability.inputs,
+                               "Scene files and directories (their *.json files); default: scenes/stability of the "
+                               "current directory");
+  stabilityCommand->add_option("--frames", stabilityFramesText, "Timed frames per variant (default 3)");
+  stabilityCommand->add_option("--threads", stabilityThreadsText, "softraster's threads; 0 (default) = every core");
+  stabilityCommand->add_option("-o,--output,--json", stability.jsonFile, "Write the results as JSON to this file");
+  addDevice(stabilityCommand);
+
   // CLI11 would call an unknown subcommand "A subcommand is required" or an extra argument.
   if (argc > 1 && argv[1][0] != '-') {
     const std::string name = argv[1];
     bool known = false;
     for (const CLI::App* sub : app.get_subcommands({})) known = known || sub->get_name() == name;
     if (!known) {
-      std::fprintf(stderr, "crosscheck: unknown subcommand '%s' (expected render, compare, conformance, report, merge or "
-                   "bench)\n%s\n",
+      std::fprintf(stderr, "crosscheck: unknown subcommand '%s' (expected render, compare, conformance, report, merge, "
+                   "bench, chart or stability)\n%s\n",
                    name.c_str(), kUsage);
       return 2;
     }
@@ -258,6 +289,18 @@ int main(int argc, char** argv) {
     bench.softraster = common.softraster();
     return crosscheck::cli::benchCommand(bench);
   }
+  if (chartCommand->parsed()) return crosscheck::cli::chartCommand(chart);
+  if (stabilityCommand->parsed()) {
+    const auto frames = wholeNumber("--frames", stabilityFramesText, 1, 1000);
+    if (!frames) return 2;
+    const auto threads = wholeNumber("--threads", stabilityThreadsText, 0, kMaxThreads);
+    if (!threads) return 2;
+    stability.frames = *frames;
+    stability.device = common.deviceOptions();
+    stability.softraster = common.softraster();
+    stability.softraster.threads = *threads;
+    return crosscheck::cli::stabilityCommand(stability);
+  }
   if (render->parsed()) {
     if (depthRange.size() == 2 && !(std::isfinite(depthRange[0]) && std::isfinite(depthRange[1]) && depthRange[0] < depthRange[1])) {
       std::fprintf(stderr, "crosscheck: --depth-range %g %g: expected two finite numbers LO < HI\n", depthRange[0], depthRange[1]);
@@ -280,6 +323,10 @@ int main(int argc, char** argv) {
   suite.device = common.deviceOptions();
   suite.softraster = common.softraster();
   for (int i = 0; i < argc; ++i) suite.commandLine += (i ? " " : "") + std::string(argv[i]);
-  if (reportCommand->parsed()) return crosscheck::cli::reportCommand(suite, reportDir, baselineDir);
+  if (reportCommand->parsed()) {
+    const auto chartFrames = wholeNumber("--chart-frames", chartFramesText, 1, 1000);
+    if (!chartFrames) return 2;
+    return crosscheck::cli::reportCommand(suite, reportDir, baselineDir, noChart ? 0 : *chartFrames);
+  }
   return crosscheck::cli::conformanceCommand(suite, outDir);
 }

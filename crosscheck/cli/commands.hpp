@@ -9,6 +9,8 @@
 //                and results.json
 //   bench        frame times of every renderer, table and JSON  0 every method agrees with lavapipe,
 //                                                               1 a renderer failed or disagrees
+//   chart        a bench JSON as a speed-vs-accuracy SVG        0 written
+//   stability    every stability case x variant, table, JSON    0 exact passes every case, 1 not
 // 2 is bad usage or a failure to finish everywhere (main.cpp's parse errors; a scene that cannot
 // be loaded, rendered or written; the suite commands' unreadable
 // expectations, shards, folders or output paths; merge's unreadable results or shards that do not
@@ -89,9 +91,13 @@ struct SuiteCommand {
 };
 // outDir: conformance --out, per-scene PNGs and results.json; empty: none.
 int conformanceCommand(const SuiteCommand& command, const std::string& outDir);
+// The report's chart by default: 3 timed frames per variant (each variant also draws one untimed).
+inline constexpr unsigned kDefaultChartFrames = 3;
 // reportDir: report -o, index.html with its PNGs, pixel data and results.json; baselineDir:
 // --baseline, an earlier run's folder (or its results.json) to mark changes against; empty: none.
-int reportCommand(const SuiteCommand& command, const std::string& reportDir, const std::string& baselineDir = "");
+// chartFrames: the speed-vs-accuracy chart's timed frames per variant (0: --no-chart).
+int reportCommand(const SuiteCommand& command, const std::string& reportDir, const std::string& baselineDir = "",
+                  unsigned chartFrames = kDefaultChartFrames);
 
 struct MergeCommand {
   std::vector<std::string> inputs;      // results.json files, or the folders that hold them
@@ -109,6 +115,7 @@ struct SuiteOutputs {
   std::string name;                     // "conformance" or "report", in the first line
   std::string imageDir;                 // per-scene PNGs in imageDir/<scene>/; empty: none
   bool pixelData = false;               // and pixels.js beside them (the report's value readout)
+  unsigned chartFrames = 0;             // the report's chart: timed frames per variant; 0: no chart
   std::function<softraster::Status(const RunResults&)> write;  // after the run (the report page); may be empty
   // Printed after the summary's JUnit line: always when `write` is empty, else only when
   // everything was written.
@@ -129,5 +136,20 @@ struct BenchCommand {
   softraster::ContextOptions softraster;
 };
 int benchCommand(const BenchCommand& command);
+
+struct ChartCommand {
+  std::string benchJson;                // crosscheck bench --json FILE
+  std::string output;                   // the SVG; empty: the JSON's path with .svg
+};
+int chartCommand(const ChartCommand& command);
+
+struct StabilityCommand {
+  std::vector<std::string> inputs;      // scene files and directories; empty: scenes/stability
+  unsigned frames = 3;                  // timed frames per variant
+  std::string jsonFile;                 // empty: no JSON
+  vkref::DeviceOptions device;
+  softraster::ContextOptions softraster;
+};
+int stabilityCommand(const StabilityCommand& command);
 
 }  // namespace crosscheck::cli

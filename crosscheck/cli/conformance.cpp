@@ -153,6 +153,7 @@ int runSuite(const SuiteCommand& command, const SuiteOutputs& outputs) {
   };
   options.device = command.device;
   options.softraster = command.softraster;
+  options.chartFrames = outputs.chartFrames;
   options.onFinished = [&](std::size_t position, const SceneResult& result, std::size_t done) {
     printer.finished(position, result, done);
   };

@@ -28,7 +28,8 @@ softraster::Result<std::optional<ReportBaseline>> loadBaseline(const std::string
 
 }  // namespace
 
-int reportCommand(const SuiteCommand& command, const std::string& reportDir, const std::string& baselineDir) {
+int reportCommand(const SuiteCommand& command, const std::string& reportDir, const std::string& baselineDir,
+                  unsigned chartFrames) {
   auto baseline = loadBaseline(baselineDir);
   if (!baseline) {
     std::fprintf(stderr, "crosscheck: --baseline: %s\n", baseline.error().c_str());
@@ -38,6 +39,7 @@ int reportCommand(const SuiteCommand& command, const std::string& reportDir, con
   outputs.name = "report";
   outputs.imageDir = reportDir;
   outputs.pixelData = true;
+  outputs.chartFrames = chartFrames;
   outputs.write = [&](const RunResults& run) {
     std::optional<ReportBaseline>& against = *baseline;
     if (against) against->versus = compareWithBaseline(run, against->run);

@@ -13,6 +13,7 @@
 #include "compare/metrics.hpp"
 #include "run/expectations.hpp"
 #include "run/outcome.hpp"
+#include "results/variant_results.hpp"
 #include "run/suite.hpp"
 #include "scene/tolerance.hpp"
 
@@ -38,6 +39,7 @@ struct SceneImage {
 // data. SceneResult::milliseconds is these plus what surrounds them.
 struct SceneTimings {
   double load = 0, soft = 0, vulkan = 0, compare = 0, images = 0;
+  double variants = 0;  // the report's chart: every variant's frames (0: not drawn)
 };
 
 struct SceneResult {
@@ -62,6 +64,10 @@ struct SceneResult {
   std::vector<SceneImage> images;
   std::filesystem::path pixelData;          // relative to imageRoot: the report's value readout data
   std::pair<float, float> depthViewRange{0, 0};  // depth mapped to black..white in the depth views
+
+  // The report's chart: the scene drawn with every variant (run/variants.hpp), when asked for.
+  std::optional<VariantResults> variants;
+  bool stabilityCase = false;               // a scene of a stability/ folder (hits counted, the report's table)
 };
 
 struct RunResults {

@@ -44,6 +44,8 @@ json comparisonJson(const Comparison& c) {
           {"failures", c.failures}};
 }
 
+json optionalNumber(const std::optional<std::uint64_t>& v) { return v ? json(*v) : json(nullptr); }
+
 // ---- reading: each accessor names the field it failed on ----
 
 struct BadField : std::runtime_error {
@@ -141,6 +143,52 @@ Comparison readComparison(const json& j, const std::string& place) {
   return c;
 }
 
+template <class Integer>
+std::optional<Integer> readOptionalInteger(const json& value, const std::string& place) {
+  if (value.is_null()) return std::nullopt;
+  return readInteger<Integer>(value, place);
+}
+
+VariantResults readVariantResults(const json& j, const std::string& place) {
+  VariantResults v;
+  v.frames = readInteger<unsigned>(field(j, place, "frames"), place + "/frames");
+  v.lavapipeMilliseconds = readNumber(field(j, place, "lavapipe_milliseconds"), place + "/lavapipe_milliseconds");
+  v.lavapipeError = readString(field(j, place, "lavapipe_error"), place + "/lavapipe_error");
+  const json& runs = field(j, place, "runs");
+  if (!runs.is_array()) bad(place + "/runs", "expected an array");
+  for (std::size_t i = 0; i < runs.size(); ++i) {
+    const std::string p = place + "/runs/" + std::to_string(i);
+    const json& r = runs[i];
+    const auto at = [&](const char* key) -> const json& { return field(r, p, key); };
+    const auto where = [&](const char* key) { return p + "/" + key; };
+    VariantRun run;
+    run.label = readString(at("label"), where("label"));
+    run.method = readString(at("method"), where("method"));
+    run.depth = readString(at("depth"), where("depth"));
+    const json& frames = at("frame_milliseconds");
+    if (!frames.is_array()) bad(where("frame_milliseconds"), "expected an array");
+    for (std::size_t k = 0; k < frames.size(); ++k) {
+      run.frameMilliseconds.push_back(readNumber(frames[k], where("frame_milliseconds") + "/" + std::to_string(k)));
+    }
+    run.medianMilliseconds = readNumber(at("median_milliseconds"), where("median_milliseconds"));
+    run.coverageMismatches = readOptionalInteger<std::uint64_t>(at("coverage_mismatches"), where("coverage_mismatches"));
+    run.colourMaxDelta = readOptionalInteger<int>(at("colour_max_delta"), where("colour_max_delta"));
+    run.differingPixels = readOptionalInteger<std::uint64_t>(at("differing_pixels"), where("differing_pixels"));
+    if (const json& w = at("within_tolerance"); !w.is_null()) run.withinTolerance = readBool(w, where("within_tolerance"));
+    if (const json& h = at("hits"); !h.is_null()) {
+      const std::string hp = where("hits");
+      HitCounts hits;
+      hits.cracks = readInteger<std::uint64_t>(field(h, hp, "cracks"), hp + "/cracks");
+      hits.doubleHits = readInteger<std::uint64_t>(field(h, hp, "double_hits"), hp + "/double_hits");
+      hits.referenceCovered = readInteger<std::uint64_t>(field(h, hp, "reference_covered"), hp + "/reference_covered");
+      run.hits = hits;
+    }
+    run.error = readString(at("error"), where("error"));
+    v.runs.push_back(std::move(run));
+  }
+  return v;
+}
+
 SceneResult readSceneResult(const json& j, const std::string& place) {
   const auto at = [&](const char* key) -> const json& { return field(j, place, key); };
   const auto where = [&](const char* key) { return place + "/" + key; };
@@ -175,6 +223,7 @@ SceneResult readSceneResult(const json& j, const std::string& place) {
     r.timings.vulkan = readNumber(field(t, p, "vulkan"), p + "/vulkan");
     r.timings.compare = readNumber(field(t, p, "compare"), p + "/compare");
     r.timings.images = readNumber(field(t, p, "images"), p + "/images");
+    if (t.contains("variants")) r.timings.variants = readNumber(t["variants"], p + "/variants");  // since the chart
   }
   r.imageRoot = readString(at("image_root"), where("image_root"));
   const json& images = at("images");
@@ -188,6 +237,9 @@ SceneResult readSceneResult(const json& j, const std::string& place) {
   const json& range = readArray(at("depth_view_range"), where("depth_view_range"), 2);
   r.depthViewRange = {static_cast<float>(readNumber(range[0], where("depth_view_range") + "/0")),
                       static_cast<float>(readNumber(range[1], where("depth_view_range") + "/1"))};
+  // Added with the chart: absent in older files, read as none.
+  if (j.contains("variants") && !j["variants"].is_null()) r.variants = readVariantResults(j["variants"], where("variants"));
+  if (j.contains("stability_case")) r.stabilityCase = readBool(j["stability_case"], where("stability_case"));
   return r;
 }
 
@@ -228,14 +280,47 @@ json sceneResultToJson(const SceneResult& r) {
                             {"soft", number(r.timings.soft)},
                             {"vulkan", number(r.timings.vulkan)},
                             {"compare", number(r.timings.compare)},
-                            {"images", number(r.timings.images)}};
+                            {"images", number(r.timings.images)},
+                            {"variants", number(r.timings.variants)}};
   j["image_root"] = r.imageRoot.string();
   json images = json::array();
   for (const SceneImage& image : r.images) images.push_back({{"kind", image.kind}, {"file", image.file.string()}});
   j["images"] = images;
   j["pixel_data"] = r.pixelData.string();
   j["depth_view_range"] = {number(r.depthViewRange.first), number(r.depthViewRange.second)};
+  j["variants"] = r.variants ? variantResultsToJson(*r.variants) : json(nullptr);
+  j["stability_case"] = r.stabilityCase;
   return j;
+}
+
+json variantResultsToJson(const VariantResults& v) {
+  json runs = json::array();
+  for (const VariantRun& run : v.runs) {
+    json frames = json::array();
+    for (double ms : run.frameMilliseconds) frames.push_back(number(ms));
+    runs.push_back({{"label", run.label},
+                    {"method", run.method},
+                    {"depth", run.depth},
+                    {"frame_milliseconds", frames},
+                    {"median_milliseconds", number(run.medianMilliseconds)},
+                    {"coverage_mismatches", optionalNumber(run.coverageMismatches)},
+                    {"colour_max_delta", run.colourMaxDelta ? json(*run.colourMaxDelta) : json(nullptr)},
+                    {"differing_pixels", optionalNumber(run.differingPixels)},
+                    {"within_tolerance", run.withinTolerance ? json(*run.withinTolerance) : json(nullptr)},
+                    {"hits", run.hits ? json{{"cracks", run.hits->cracks},
+                                             {"double_hits", run.hits->doubleHits},
+                                             {"reference_covered", run.hits->referenceCovered}}
+                                      : json(nullptr)},
+                    {"error", run.error}});
+  }
+  return {{"frames", v.frames},
+          {"lavapipe_milliseconds", number(v.lavapipeMilliseconds)},
+          {"lavapipe_error", v.lavapipeError},
+          {"runs", runs}};
+}
+
+softraster::Result<VariantResults> variantResultsFromJson(const json& value) {
+  return guarded<VariantResults>([&] { return readVariantResults(value, ""); });
 }
 
 softraster::Result<SceneResult> sceneResultFromJson(const json& value) {

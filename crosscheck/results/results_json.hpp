@@ -28,6 +28,11 @@ nlohmann::json sceneResultToJson(const SceneResult& result);
 // The error is one line: "results JSON: PLACE: what is wrong" (PLACE a JSON pointer).
 softraster::Result<SceneResult> sceneResultFromJson(const nlohmann::json& value);
 
+// A scene's variant runs (the chart's data), as results.json's "variants" and the stability JSON
+// carry them.
+nlohmann::json variantResultsToJson(const VariantResults& variants);
+softraster::Result<VariantResults> variantResultsFromJson(const nlohmann::json& value);
+
 nlohmann::json runResultsToJson(const RunResults& run);
 softraster::Result<RunResults> runResultsFromJson(const nlohmann::json& value);
 

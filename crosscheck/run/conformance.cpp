@@ -5,6 +5,7 @@
 
 #include "compare/compare.hpp"
 #include "results/results_json.hpp"
+#include "run/variants.hpp"
 #include "run/worker_processes.hpp"
 
 #include <nlohmann/json.hpp>
@@ -50,6 +51,7 @@ Outcome runScene(SceneResult& result, const ConformanceOptions& options, VulkanS
   result.timings.load = millisecondsSince(step);
   if (!scene) return crash(scene.error());
   result.loaded = true;
+  result.stabilityCase = isStabilityCase(result.entry);
   result.description = scene->description;
   result.width = scene->width;
   result.height = scene->height;
@@ -87,6 +89,14 @@ Outcome runScene(SceneResult& result, const ConformanceOptions& options, VulkanS
     const softraster::Status written = options.onFrames(result, *scene, *soft, *reference);
     result.timings.images = millisecondsSince(step);
     if (!written) return crash(written.message());
+  }
+  if (options.chartFrames > 0) {
+    step = Clock::now();
+    VariantOptions chart;
+    chart.frames = options.chartFrames;
+    chart.countHits = result.stabilityCase;
+    result.variants = runVariants(*scene, chartVariants(options.softraster), *renderer, chart);
+    result.timings.variants = millisecondsSince(step);
   }
   return result.comparison->passed() ? Outcome::Pass : Outcome::Fail;
 }

@@ -54,6 +54,10 @@ struct ConformanceOptions {
   vkref::DeviceOptions device;
   softraster::ContextOptions softraster;
   FrameSink onFrames;
+  // The report's chart: after the comparison (and onFrames), draw the scene with every variant of
+  // run/variants.hpp, this many timed frames each, into SceneResult::variants; 0: not drawn.
+  // Scenes of a folder named "stability" also count hits (cracks, double hits).
+  unsigned chartFrames = 0;
   // Called once per finished scene, in the calling process (under the runner's lock with
   // Threads), in the order scenes finish: (position in the suite, its result, scenes finished so
   // far). The reference stays valid until runConformance returns.

@@ -27,7 +27,10 @@ bool parseCount(std::string_view text, std::size_t* value) {
 
 softraster::Result<std::vector<SceneEntry>> collectScenes(const std::vector<std::string>& inputs) {
   const bool useDefault = inputs.empty();
-  const std::vector<std::string> roots = useDefault ? std::vector<std::string>{std::string(kDefaultSceneDir)} : inputs;
+  std::vector<std::string> roots = useDefault ? std::vector<std::string>{std::string(kDefaultSceneDir)} : inputs;
+  if (std::error_code ec; useDefault && std::filesystem::is_directory(kDefaultStabilitySceneDir, ec)) {
+    roots.emplace_back(kDefaultStabilitySceneDir);
+  }
   std::vector<std::filesystem::path> files;
   for (const std::string& root : roots) {
     const std::filesystem::path path(root);
@@ -85,6 +88,8 @@ softraster::Result<Shard> parseShard(std::string_view text) {
   }
   return shard;
 }
+
+bool isStabilityCase(const SceneEntry& entry) { return entry.path.parent_path().filename() == "stability"; }
 
 bool inShard(std::size_t position, Shard shard) { return position % shard.count == shard.index - 1; }
 

@@ -1,7 +1,7 @@
 // The suite of a conformance run: which scene files it covers, in a stable order, and the slice
 // of it that one shard runs.
 // Arguments are scene files or directories; a directory contributes the *.json files directly in
-// it (not its subdirectories). A scene's name is its file stem ("scenes/room.json" is "room"):
+// it (not its subdirectories; the default suite names scenes/stability/ besides scenes/). A scene's name is its file stem ("scenes/room.json" is "room"):
 // expectations files, output folders and reports use it, so two scenes in one run may not share
 // a name. The suite is sorted by path; a file named twice (or found twice) runs once.
 // Deliberately no patterns or filters: name the files or folders to run.
@@ -22,8 +22,14 @@ struct SceneEntry {
   std::filesystem::path path;   // as given, or directory as given / file name
 };
 
-// The default suite when no argument is given: the scenes/ directory of the current directory.
+// The default suite when no argument is given: the scenes/ directory of the current directory,
+// and its stability/ folder (the stability cases) when there is one.
 inline constexpr std::string_view kDefaultSceneDir = "scenes";
+inline constexpr std::string_view kDefaultStabilitySceneDir = "scenes/stability";
+
+// Whether a scene is a stability case: its file is in a folder named "stability" (the report
+// counts its hits and lists it in the stability table).
+bool isStabilityCase(const SceneEntry& entry);
 
 // Collects the suite. A *.json path that does not exist is kept (it becomes a Crash when run, so
 // the rest of the suite still runs). Errors (one line, naming the path): any other path that does

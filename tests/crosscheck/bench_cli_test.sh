@@ -84,6 +84,59 @@ for r in s["results"][:2]:
     assert (r["coverage_mismatches"], r["colour_max_delta"], r["depth_max_delta"]) == (0, 0, 0)
 PY
     ;;
+  chart_svg)
+    # A bench JSON charted: the SVG parses as XML, has one marker per softraster result in each of a
+    # scene's two panels and in the overview, each with a tooltip, the lavapipe line and a front.
+    command -v python3 >/dev/null || { echo "SKIPPED: python3 is not installed"; exit 77; }
+    run bench "$tiny" --frames 2 --warmup 1 --threads 1 --json "$artifacts/bench.json"
+    expect_status 0
+    run chart "$artifacts/bench.json"
+    expect_status 0
+    expect_out "^chart: 1 scenes, 2 points: $artifacts/bench.svg\$"
+    run chart "$artifacts/bench.json" -o "$artifacts/sub/chart.svg"
+    expect_status 0
+    python3 - "$artifacts/sub/chart.svg" "$artifacts/bench.json" <<'PY' || fail "the chart's SVG is not as expected"
+import json, sys
+import xml.etree.ElementTree as ET
+ns = {"s": "http://www.w3.org/2000/svg"}
+root = ET.parse(sys.argv[1]).getroot()
+assert root.tag == "{http://www.w3.org/2000/svg}svg", root.tag
+bench = json.load(open(sys.argv[2]))
+soft = [r for s in bench["scenes"] for r in s["results"] if r["renderer"] == "softraster"]
+markers = [g for g in root.iter("{http://www.w3.org/2000/svg}g") if g.get("class") == "marker"]
+# two panels per scene plus the overview
+assert len(markers) == 3 * len(soft), (len(markers), len(soft))
+for m in markers:
+    t = m.find("s:title", ns)
+    assert t is not None and " ms" in t.text and "coverage mismatches" in t.text, ET.tostring(m)
+labels = {m.get("data-label") for m in markers}
+assert labels == {r["method"] for r in soft}, labels
+lines = [g for g in root.iter("{http://www.w3.org/2000/svg}g") if g.get("class") == "lavapipe"]
+assert len(lines) == 3, len(lines)
+fronts = [p for p in root.iter("{http://www.w3.org/2000/svg}polyline") if p.get("class") == "pareto"]
+assert len(fronts) == 2, len(fronts)
+texts = " ".join(t.text or "" for t in root.iter("{http://www.w3.org/2000/svg}text"))
+assert "frame time (median, ms, log scale)" in texts and "coverage mismatches (pixels" in texts
+PY
+    ;;
+  chart_errors)
+    # Each is one error line naming the file, exit 2, nothing written.
+    printf '{"scenes": [' >"$artifacts/truncated.json"
+    printf '{"frames": 3}' >"$artifacts/other.json"
+    printf '{"scenes": [{"scene": "a.json", "results": [{"renderer": "softraster", "median_ms": 1}]}]}' >"$artifacts/ok.json"
+    : >"$artifacts/file"
+    check_usage "^crosscheck: $artifacts/missing.json: file not found\$" chart "$artifacts/missing.json"
+    check_usage "^crosscheck: $artifacts: is a directory" chart "$artifacts"
+    check_usage "^crosscheck: $artifacts/truncated.json: not JSON: " chart "$artifacts/truncated.json"
+    check_usage "^crosscheck: $artifacts/other.json: not a bench JSON: no \"scenes\" array\$" chart "$artifacts/other.json"
+    check_usage "^crosscheck: $artifacts/file/chart.svg: cannot write the chart" chart "$artifacts/ok.json" -o "$artifacts/file/chart.svg"
+    run chart
+    expect_status 2
+    expect_err '^crosscheck: BENCH is required'
+    [ ! -e "$artifacts/truncated.svg" ] && [ ! -e "$artifacts/other.svg" ] || fail "a chart was written for a bad JSON"
+    run chart "$artifacts/ok.json"
+    expect_status 0
+    ;;
   render_methods)
     # Both methods and any thread count give the same bits (and the same as Vulkan).
     run render "$tiny" --renderer vulkan -o "$artifacts/vulkan.png"

@@ -102,6 +102,8 @@ case $case_name in
     check_usage '^crosscheck: --shard 0/3: needs 1 <= I <= N' conformance --shard 0/3 "$fixtures"
     check_usage '^crosscheck: --shard 4/3: needs 1 <= I <= N' conformance --shard 4/3 "$fixtures"
     check_usage '^crosscheck: --shard a/b: expected I/N' conformance --shard a/b "$fixtures"
+    check_usage '^crosscheck: --chart-frames 0: expected a whole number from 1 to 1000$' report --chart-frames 0 -o "$artifacts/r" "$fixtures"
+    check_usage '^crosscheck: --chart-frames x: expected a whole number from 1 to 1000$' report --chart-frames x -o "$artifacts/r" "$fixtures"
     check_usage '^crosscheck: --shard 2: expected I/N' conformance --shard 2 "$fixtures"
     check_usage "^crosscheck: $expectations/missing.txt: cannot read expectations file: file not found$" \
       conformance --expectations "$expectations/missing.txt" "$fixtures"
@@ -174,10 +176,10 @@ case $case_name in
     done
     ;;
   default_suite)
-    # No argument: every scene in scenes/ of the current directory, all passing.
+    # No argument: every scene in scenes/ and scenes/stability/ of the current directory, all passing.
     run conformance --jobs 2
     expect_status 0
-    expected=$(ls scenes/*.json | wc -l)
+    expected=$(ls scenes/*.json scenes/stability/*.json | wc -l)
     expect_out "^crosscheck conformance: $expected scenes, 2 jobs$"
     expect_last_line "$expected passed, 0 failed"
     ;;

@@ -43,7 +43,7 @@ struct RenderedScene {
 
 // Fails the calling test (ASSERT in a void helper) when anything cannot be rendered.
 void renderBoth(const std::string& name, RenderedScene& out, const softraster::ContextOptions& options = {}) {
-  auto scene = crosscheck::loadScene(kScenes / (name + ".json"));
+  auto scene = crosscheck::loadScene(conformanceScenePath(name));
   ASSERT_TRUE(scene) << scene.error();
   out.scene = std::move(*scene);
   vkref::DeviceOptions device;

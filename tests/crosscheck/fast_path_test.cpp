@@ -75,7 +75,7 @@ TEST(FastPath, IsTakenHere) {
 }
 
 TEST_P(SceneDrawn, MatchesScalar) {
-  const auto scene = crosscheck::loadScene(kScenes / (GetParam() + ".json"));
+  const auto scene = crosscheck::loadScene(conformanceScenePath(GetParam()));
   ASSERT_TRUE(scene) << scene.error();
   expectFastMatchesScalar(*scene, {});
   if (scene->depthFormat == softraster::DepthFormat::D32Sfloat && scene->samples == 1) {

@@ -161,7 +161,7 @@ TEST(ResultsFile, PathsAreRelativeToItsFolderAndTheFormatIsChecked) {
   EXPECT_EQ(stored["junit_file"], "../conformance.junit.xml");
   EXPECT_EQ(stored["scenes"][0]["image_root"], ".");
   EXPECT_EQ(stored["scenes"][1]["image_root"], "") << "no images";
-  EXPECT_EQ(stored["scenes"][0]["step_milliseconds"], json({{"load", 1}, {"soft", 2}, {"vulkan", 3}, {"compare", 4}, {"images", 5}}));
+  EXPECT_EQ(stored["scenes"][0]["step_milliseconds"], json({{"load", 1}, {"soft", 2}, {"vulkan", 3}, {"compare", 4}, {"images", 5}, {"variants", 0}}));
   // Moved elsewhere as a whole, the folder's paths still hold.
   const fs::path moved = kArtifacts / "results-file" / "moved";
   fs::rename(dir, moved);

@@ -9,6 +9,10 @@
 # new failure, the fixed scene and the changed metrics. Keeps screenshots:
 #   ARTIFACTS/report/report.png        the page as it opens (1400x1000)
 #   ARTIFACTS/report/report-check.png  every scene opened (?check, 1400x3000)
+#   ARTIFACTS/report/report-chart.png  the speed-vs-accuracy chart (#chart)
+#   ARTIFACTS/report/report-stability.png  a report of two stability cases: its table
+# It also checks the chart (panels as SVG elements, a marker with a tooltip per method and option,
+# the Pareto fronts), --no-chart, and the stability table of a report over two stability cases.
 # Usage: report_chromium_test.sh CROSSCHECK SOURCE_DIR ARTIFACTS_DIR
 # Exit 0: passed, 1: failed, 77: skipped because chromium is not installed.
 set -uo pipefail
@@ -102,6 +106,44 @@ attr data-baseline-summary | grep -qE '^Against the baseline .*/baseline/results
 [ "$(attr data-baseline-filter)" = 2 ] || fail "'only changed against the baseline' left $(attr data-baseline-filter) rows, expected 2"
 attr data-readout | grep -qE '^x [0-9]+, y [0-9]+  \|  softraster RGBA [0-9 ]+  \|  Vulkan RGBA [0-9 ]+  \|' ||
   fail "the value readout shows no values: '$(attr data-readout)'"
+
+# The chart (on by default): two scenes drew (flat_triangle, depth_slope), each with two panels,
+# plus the overview; every method and option of the exact family at least as a marker in each
+# panel (four variants today: exact and exact-scalar, each with z/w and 1/z depth), every marker
+# with a tooltip, a Pareto front per panel; the panels are SVG elements in the page.
+variants=$(python3 -c "import json;d=json.load(open('$artifacts/site/results.json'));print(max(len(s['variants']['runs']) for s in d['scenes'] if s['variants']))") ||
+  fail "results.json has no variants"
+[ "$variants" -ge 4 ] || fail "$variants variants per scene, expected at least 4"
+[ "$(attr data-chart-panels)" = 5 ] || fail "chart panels: '$(attr data-chart-panels)', expected 5 (2 scenes x 2 + the overview)"
+[ "$(attr data-chart-svg)" = true ] || fail "the chart's panels are not SVG elements in the page"
+markers=$(attr data-chart-markers)
+[ "$markers" -ge 8 ] && [ "$markers" -le $((3 * 2 * variants)) ] || fail "chart markers: '$markers'"
+[ "$(attr data-chart-tooltips)" = "$markers" ] || fail "markers with a tooltip: $(attr data-chart-tooltips) of $markers"
+[ "$(attr data-chart-pareto)" = 4 ] || fail "Pareto fronts: '$(attr data-chart-pareto)', expected one per scene panel"
+grep -q '<h2 id="chart">Speed against accuracy</h2>' "$artifacts/dom.html" || fail "no chart section"
+[ "$(attr data-stability-rows)" = 0 ] || fail "a stability table without stability cases"
+
+# --no-chart: no chart, no variants.
+"$crosscheck" report tests/data/conformance/flat_triangle.json -o "$artifacts/nochart" --no-chart >"$artifacts/nochart.txt" 2>&1 ||
+  fail "report --no-chart failed: $(cat "$artifacts/nochart.txt")"
+grep -q 'class="chart-panel' "$artifacts/nochart/index.html" && fail "--no-chart still drew a chart"
+grep -q '"variants": null' "$artifacts/nochart/results.json" || fail "--no-chart wrote variants"
+
+# Two stability cases: the stability table has a row per case and variant, exact passes both.
+"$crosscheck" report scenes/stability/near_plane_crossing.json scenes/stability/closed_mesh_edges.json \
+  -o "$artifacts/stability" >"$artifacts/stability.txt" 2>&1 || fail "stability report failed: $(cat "$artifacts/stability.txt")"
+stability_page="file://$(cd "$artifacts/stability" && pwd)/index.html"
+browse --dump-dom "$stability_page?check" >"$artifacts/stability-dom.html" || fail "chromium failed on the stability report"
+body=$(grep -o '<body[^>]*>' "$artifacts/stability-dom.html" | head -n 1)
+[ "$(attr data-check)" = done ] || fail "the stability report's self-check did not finish: '$(attr data-check)'"
+[ "$(attr data-stability-rows)" = $((2 * variants)) ] || fail "stability rows: '$(attr data-stability-rows)', expected $((2 * variants))"
+for name in near_plane_crossing closed_mesh_edges; do
+  grep -qE "<tr class=\"st-Pass\"><td><a href=\"#scene=$name\">$name</a></td><td>exact</td>" "$artifacts/stability-dom.html" ||
+    fail "exact does not pass $name in the stability table"
+done
+browse --window-size=1400,1600 --screenshot="$artifacts/report-stability.png" "$stability_page#stability" >/dev/null ||
+  fail "no stability screenshot"
+browse --window-size=1400,1400 --screenshot="$artifacts/report-chart.png" "$page#chart" >/dev/null || fail "no chart screenshot"
 
 browse --window-size=1400,1000 --screenshot="$artifacts/report.png" "$page" >/dev/null || fail "no screenshot"
 browse --window-size=1400,3000 --screenshot="$artifacts/report-check.png" "$page?check" >/dev/null || fail "no screenshot"

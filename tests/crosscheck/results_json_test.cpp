@@ -44,7 +44,30 @@ SceneResult everyFieldSet() {
   r.softMilliseconds = 1.25;
   r.vulkanMilliseconds = 2.5e-3;
   r.milliseconds = 123.456789012345;
-  r.timings = {0.5, 1.5, 2.5, 0.125, 99.75};
+  r.timings = {0.5, 1.5, 2.5, 0.125, 99.75, 12.5};
+  VariantResults v;
+  v.frames = 3;
+  v.lavapipeMilliseconds = 0.75;
+  v.lavapipeError = "";
+  VariantRun compared;
+  compared.label = "exact 1/z";
+  compared.method = "exact";
+  compared.depth = "1/z";
+  compared.frameMilliseconds = {0.5, 0.25, 1.0 / 3.0};
+  compared.medianMilliseconds = 0.5;
+  compared.coverageMismatches = 17;
+  compared.colourMaxDelta = 255;
+  compared.differingPixels = 40;
+  compared.withinTolerance = false;
+  compared.hits = HitCounts{2, 3, 1000};
+  VariantRun failed;
+  failed.label = "exact-scalar";
+  failed.method = "exact-scalar";
+  failed.depth = "z";
+  failed.error = "softraster: draw 'x': out of memory";
+  v.runs = {compared, failed};
+  r.variants = v;
+  r.stabilityCase = true;
   r.imageRoot = "out/images";
   r.images = {{"soft", "room/soft.png"}, {"diff", "room/diff.png"}};
   r.pixelData = "room/pixels.js";
@@ -96,6 +119,34 @@ void expectSame(const SceneResult& a, const SceneResult& b) {
   EXPECT_TRUE(same(a.timings.vulkan, b.timings.vulkan));
   EXPECT_TRUE(same(a.timings.compare, b.timings.compare));
   EXPECT_TRUE(same(a.timings.images, b.timings.images));
+  EXPECT_TRUE(same(a.timings.variants, b.timings.variants));
+  EXPECT_EQ(a.stabilityCase, b.stabilityCase);
+  ASSERT_EQ(a.variants.has_value(), b.variants.has_value());
+  if (a.variants) {
+    EXPECT_EQ(a.variants->frames, b.variants->frames);
+    EXPECT_TRUE(same(a.variants->lavapipeMilliseconds, b.variants->lavapipeMilliseconds));
+    EXPECT_EQ(a.variants->lavapipeError, b.variants->lavapipeError);
+    ASSERT_EQ(a.variants->runs.size(), b.variants->runs.size());
+    for (std::size_t i = 0; i < a.variants->runs.size(); ++i) {
+      const VariantRun &x = a.variants->runs[i], &y = b.variants->runs[i];
+      EXPECT_EQ(x.label, y.label);
+      EXPECT_EQ(x.method, y.method);
+      EXPECT_EQ(x.depth, y.depth);
+      EXPECT_EQ(x.frameMilliseconds, y.frameMilliseconds);
+      EXPECT_TRUE(same(x.medianMilliseconds, y.medianMilliseconds));
+      EXPECT_EQ(x.coverageMismatches, y.coverageMismatches);
+      EXPECT_EQ(x.colourMaxDelta, y.colourMaxDelta);
+      EXPECT_EQ(x.differingPixels, y.differingPixels);
+      EXPECT_EQ(x.withinTolerance, y.withinTolerance);
+      ASSERT_EQ(x.hits.has_value(), y.hits.has_value());
+      if (x.hits) {
+        EXPECT_EQ(x.hits->cracks, y.hits->cracks);
+        EXPECT_EQ(x.hits->doubleHits, y.hits->doubleHits);
+        EXPECT_EQ(x.hits->referenceCovered, y.hits->referenceCovered);
+      }
+      EXPECT_EQ(x.error, y.error);
+    }
+  }
   EXPECT_EQ(a.imageRoot, b.imageRoot);
   ASSERT_EQ(a.images.size(), b.images.size());
   for (std::size_t i = 0; i < a.images.size(); ++i) {
@@ -124,6 +175,25 @@ TEST(ResultsJson, EveryFieldSurvivesTextAndCbor) {
   expectSame(r, throughCbor(r));
   // What the writers print is the same too.
   EXPECT_EQ(resultLine(throughCbor(r)), resultLine(r));
+}
+
+// A file written before the chart (no "variants", "stability_case" or step "variants") still
+// reads, as a scene without them: new fields are additions, not a new format.
+TEST(ResultsJson, FieldsAddedWithTheChartAreOptional) {
+  json value = sceneResultToJson(everyFieldSet());
+  value.erase("variants");
+  value.erase("stability_case");
+  value["step_milliseconds"].erase("variants");
+  const auto back = sceneResultFromJson(value);
+  ASSERT_TRUE(back) << back.error();
+  EXPECT_FALSE(back->variants);
+  EXPECT_FALSE(back->stabilityCase);
+  EXPECT_EQ(back->timings.variants, 0);
+  // A malformed one is named.
+  value["variants"] = {{"frames", 3}};
+  const auto bad = sceneResultFromJson(value);
+  ASSERT_FALSE(bad);
+  EXPECT_NE(bad.error().find("/variants/lavapipe_milliseconds: missing"), std::string::npos) << bad.error();
 }
 
 TEST(ResultsJson, DefaultsCrashesTimeoutsAndNonFiniteNumbers) {

@@ -2,6 +2,8 @@
 #include "output/report/report.hpp"
 
 #include "output/artifacts.hpp"  // kPreviewSize
+#include "output/chart_svg.hpp"
+#include "run/stability.hpp"  // variantPasses, kStabilityReference
 #include "output/markup.hpp"
 #include "output/metric_text.hpp"
 #include "output/summary.hpp"
@@ -339,8 +341,66 @@ std::string depthLegend(double threshold) {
          "<span><i class=\"swatch sw-coverage\"></i>NaN in one only</span></div>";
 }
 
+// A scene's two chart panels (coverage, colour), when its variants were drawn.
+std::string sceneChart(const SceneResult& r, const std::vector<std::string>& labels) {
+  if (!r.variants) return "";
+  RunResults one;
+  one.scenes.push_back(r);
+  const ChartSet set = chartFromResults(one);
+  return "<div class=\"chart\" data-scene=\"" + e(r.entry.name) + "\"><p class=\"run\">speed against accuracy: " +
+         std::to_string(r.variants->frames) + " timed frames per method and option, lavapipe's median " +
+         fixed("%.3f", r.variants->lavapipeMilliseconds) + " ms</p>" +
+         scenePanelSvg(set.scenes.front(), ChartMetric::CoverageMismatches, labels) +
+         scenePanelSvg(set.scenes.front(), ChartMetric::ColourMaxDelta, labels) + "</div>\n";
+}
+
+std::string countText(const std::optional<std::uint64_t>& v) { return v ? std::to_string(*v) : "&#8212;"; }
+
+// The overview chart over every scene with variants, and the legend.
+std::string chartSection(const ChartSet& set, const std::vector<std::string>& labels) {
+  std::string s = "<h2 id=\"chart\">Speed against accuracy</h2>\n<p class=\"run\">Every method and option drawn a "
+                  "few timed frames per scene after the comparison (each scene's section has its own two panels: "
+                  "coverage mismatches and colour max |\xCE\x94| against frame time, lavapipe's median as the dashed "
+                  "line, the Pareto front in orange). Below: every scene at once, speed relative to lavapipe against "
+                  "coverage mismatches. Hover a marker for its numbers; <code>--no-chart</code> leaves this out.</p>\n";
+  s += "<div class=\"chart chart-overview-box\">" + overviewPanelSvg(set, labels) + legendSvg(labels) + "</div>\n";
+  return s;
+}
+
+// The stability cases (scenes of a stability/ folder) x variants: pass or fail with the numbers.
+std::string stabilitySection(const RunResults& run) {
+  std::string rows;
+  std::size_t cases = 0, failing = 0;
+  for (const SceneResult& r : run.scenes) {
+    if (!r.stabilityCase || !r.variants) continue;
+    ++cases;
+    for (const VariantRun& v : r.variants->runs) {
+      const bool pass = variantPasses(v);
+      failing += !pass;
+      rows += "<tr class=\"" + std::string(pass ? "st-Pass" : "st-Fail") + "\"><td><a href=\"" + anchorOf(r) + "\">" +
+              e(r.entry.name) + "</a></td><td>" + e(v.label) + "</td><td>" + badge(pass ? Outcome::Pass : Outcome::Fail) +
+              "</td><td class=\"num\">" + countText(v.differingPixels) + "</td><td class=\"num\">" +
+              countText(v.coverageMismatches) + "</td><td class=\"num\">" +
+              (v.colourMaxDelta ? std::to_string(*v.colourMaxDelta) : "&#8212;") + "</td><td class=\"num\">" +
+              (v.hits ? std::to_string(v.hits->cracks) : "&#8212;") + "</td><td class=\"num\">" +
+              (v.hits ? std::to_string(v.hits->doubleHits) : "&#8212;") + "</td><td class=\"num\">" +
+              fixed("%.3f", v.medianMilliseconds) + "</td><td>" + e(v.error) + "</td></tr>\n";
+    }
+  }
+  if (cases == 0) return "";
+  return "<h2 id=\"stability\">Stability</h2>\n<p class=\"run\">" + std::to_string(cases) +
+         " cases (the scenes of a stability/ folder) with every method and option: a row passes when every pixel "
+         "equals lavapipe's and the hit counts match (cracks: pixels lavapipe draws and the method leaves empty; "
+         "double hits: pixels the method draws more often than lavapipe). " +
+         std::to_string(failing) + " rows fail; " + std::string(kStabilityReference) + " must pass every case.</p>\n"
+         "<table id=\"stability-table\" class=\"summary stability\"><thead><tr><th>case</th><th>method</th><th>result</th>"
+         "<th>wrong px</th><th>coverage</th><th>colour max |\xCE\x94|</th><th>cracks</th><th>double hits</th>"
+         "<th>median ms</th><th>error</th></tr></thead>\n<tbody>\n" + rows + "</tbody></table>\n";
+}
+
 std::string sceneSection(const RunResults& run, const SceneResult& r, std::size_t position, bool open,
-                         const std::filesystem::path& reportDir, const SceneVersusBaseline* versus) {
+                         const std::filesystem::path& reportDir, const SceneVersusBaseline* versus,
+                         const std::vector<std::string>& labels) {
   std::string s = "<details class=\"scene st-" + std::string(outcomeName(r.outcome)) + "\" id=\"s-" + std::to_string(position) +
                   "\"" + filterAttributes(r, versus) + " data-w=\"" + std::to_string(r.width) + "\" data-h=\"" +
                   std::to_string(r.height) + "\"";
@@ -357,6 +417,7 @@ std::string sceneSection(const RunResults& run, const SceneResult& r, std::size_
   s += "<p class=\"run\">scene file <a href=\"" + url(linkFrom(reportDir, r.entry.path)) + "\">" +
        e(r.entry.path.generic_string()) + "</a> \xC2\xB7 <a href=\"" + anchorOf(r) + "\">link to this scene</a>"
        " \xC2\xB7 reproduce: <code class=\"reproduce\">" + e(reproduceCommand(run, r)) + "</code></p>\n";
+  s += sceneChart(r, labels);
   if (r.expectation) {
     s += "<p class=\"expect\">expected " + std::string(outcomeName(r.expectation->outcome)) + " (expectations line " +
          std::to_string(r.expectation->line) + ")" + (r.expectation->reason.empty() ? "" : ": " + e(r.expectation->reason)) +
@@ -577,6 +638,10 @@ std::string reportHtml(const RunResults& run, const std::filesystem::path& repor
     html += summaryRow(results[order[rank]], rank, versusOf(order[rank]));
   }
   html += "</tbody>\n</table>\n";
+  const ChartSet chart = chartFromResults(run);
+  const std::vector<std::string> labels = chartLabels(chart);
+  if (!chart.scenes.empty()) html += chartSection(chart, labels);
+  html += stabilitySection(run);
   html += "<h2>Difference heatmaps</h2>\n" + colourLegend("T") +
           "<p class=\"run\">T is the scene's colour threshold (8-bit steps); each scene's section shows its own. "
           "Depth differences use the same colours against the depth threshold.</p>\n";
@@ -587,7 +652,7 @@ std::string reportHtml(const RunResults& run, const std::filesystem::path& repor
     const SceneResult& r = results[position];
     const bool open = isUnexpected(r.outcome) && !r.images.empty() && opened < 3;
     opened += open;
-    html += sceneSection(run, r, position, open, reportDir, versusOf(position));
+    html += sceneSection(run, r, position, open, reportDir, versusOf(position), labels);
   }
   html += "<script>\n" + std::string(report_assets::kScript) + "</script>\n</body>\n</html>\n";
   return html;

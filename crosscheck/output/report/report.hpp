@@ -15,9 +15,14 @@
 // new failures, fixed scenes and scenes whose metrics changed, each marked in the summary table
 // (the changed values too, with the baseline's in their tooltip), in the list at the top and in its
 // section, and a filter shows only the scenes that changed.
+// When the run drew its scenes' variants (SceneResult::variants, report's default), each section
+// has the speed-vs-accuracy panels of output/chart_svg.hpp, a section after the summary the
+// overview over every scene with the legend (#chart), and the stability cases (scenes of a
+// stability/ folder) a table of case x method with pass or fail and the numbers (#stability).
 // The page reads a run's results (results.hpp) only; the pixel data is written from the frames
 // while they exist, during the run.
-// Deliberately no charts, no history beyond one baseline and no server.
+// Deliberately no charting library (inline SVG, no script needed for it), no history beyond one
+// baseline and no server.
 #pragma once
 
 #include "render/render.hpp"

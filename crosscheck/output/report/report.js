@@ -374,6 +374,23 @@
       var lines = document.getElementById('expectations-lines');
       body.setAttribute('data-expectations-lines', lines ? lines.value.replace(/\n/g, ' | ') : '');
       body.setAttribute('data-thumbnails', String(document.querySelectorAll('img.thumb').length));
+      // The chart: inline SVG panels (as SVG elements, so the browser parsed them as SVG), their
+      // markers, the markers' tooltips, the Pareto fronts and the stability table's rows.
+      var panels = document.querySelectorAll('svg.chart-panel');
+      var markers = document.querySelectorAll('svg.chart-panel g.marker');
+      var titled = Array.prototype.filter.call(markers, function (m) {
+        var t = m.querySelector('title');
+        return t && t.textContent.length > 0;
+      });
+      body.setAttribute('data-chart-panels', String(panels.length));
+      body.setAttribute('data-chart-svg', String(Array.prototype.every.call(panels, function (p) {
+        return p instanceof SVGSVGElement;
+      })));
+      body.setAttribute('data-chart-markers', String(markers.length));
+      body.setAttribute('data-chart-tooltips', String(titled.length));
+      body.setAttribute('data-chart-pareto', String(document.querySelectorAll('svg.chart-panel polyline.pareto').length));
+      var stability = document.getElementById('stability-table');
+      body.setAttribute('data-stability-rows', stability ? String(stability.tBodies[0].rows.length) : '0');
       return readoutProbe();
     }).then(function (readout) {
       body.setAttribute('data-readout', readout);
