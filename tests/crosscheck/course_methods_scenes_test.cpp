@@ -4,7 +4,7 @@
 // perspective-correct and with affine varyings, in Vulkan depth and (D32 single-sample scenes) in
 // the course's 1/z buffer; and where the exact method covers a fair number of pixels, a course
 // method covers a comparable number (within a factor of two) — not bit-identity, which these
-// methods do not have. Each scene is its own test case (CourseMethods/SceneDrawn.WithEveryMethod/<name>).
+// methods do not have. Each scene is its own test case (CourseMethods/CourseSceneDrawn.WithEveryMethod/<name>).
 #include "compare/compare.hpp"
 #include "render/render.hpp"
 #include "scene/scene.hpp"
@@ -22,11 +22,11 @@ namespace {
 
 const std::filesystem::path kScenes = SCENES_DIR;
 
-class SceneDrawn : public ::testing::TestWithParam<std::string> {};
+class CourseSceneDrawn : public ::testing::TestWithParam<std::string> {};
 
 }  // namespace
 
-TEST_P(SceneDrawn, WithEveryMethod) {
+TEST_P(CourseSceneDrawn, WithEveryMethod) {
   const auto scene = crosscheck::loadScene(kScenes / (GetParam() + ".json"));
   ASSERT_TRUE(scene) << scene.error();
   softraster::ContextOptions exactOptions;
@@ -58,5 +58,5 @@ TEST_P(SceneDrawn, WithEveryMethod) {
   }
 }
 
-INSTANTIATE_TEST_SUITE_P(CourseMethods, SceneDrawn, ::testing::ValuesIn(conformanceSceneNames()),
+INSTANTIATE_TEST_SUITE_P(CourseMethods, CourseSceneDrawn, ::testing::ValuesIn(conformanceSceneNames()),
                          [](const ::testing::TestParamInfo<std::string>& info) { return info.param; });
