@@ -51,7 +51,7 @@ struct BenchOptions {
   // set (setenv) before each Vulkan renderer is opened.
   unsigned threads = 0;
   vkref::DeviceOptions device;
-  softraster::ContextOptions softraster;  // fmuladd and depth mode; method and threads are the bench's
+  softraster::ContextOptions softraster;  // fmuladd and depth mode; method, affine varyings and threads are the bench's
   // The softraster methods timed, in order (each once, then lavapipe).
   std::vector<BenchMethod> methods{{softraster::Method::Exact}, {softraster::Method::ExactScalar}};
   // Called after each scene (for progress): (its position, the number of scenes, its result).
