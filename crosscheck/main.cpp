@@ -8,10 +8,11 @@
 //                     [--expectations FILE] [--jobs N] [--shard I/N]
 //                     [--junit FILE] [--timeout SECONDS] [--memory-limit MB] [--set KEY.PATH=VALUE ...]
 //   crosscheck merge RESULTS.json|DIR ... -o DIR [--junit FILE]
-//   crosscheck bench [SCENE|DIR ...] [--frames N] [--warmup N] [--threads N] [-o FILE.json]
+//   crosscheck bench [SCENE|DIR ...] [--method all|LIST] [--frames N] [--warmup N] [--threads N] [-o FILE.json]
 //   crosscheck chart BENCH.json [-o CHART.svg]
 //   crosscheck stability [SCENE|DIR ...] [--frames N] [--threads N] [--json FILE]
-// render and compare also take --method NAME (options.hpp kMethods: exact, exact-scalar, ...) and --threads N (softraster's).
+// render and compare also take --method NAME (options.hpp kMethods: exact, exact-scalar, scanline, trapezoid,
+// barycentric), --affine (a course method's varyings interpolated affinely) and --threads N (softraster's).
 // Exit status (README, "Exit status"): 0 success / within tolerance / nothing unexpected; 1
 // outside tolerance or an unexpected conformance result; 2 anything that kept the comparison from
 // happening: bad usage, a scene or file that cannot be loaded, a renderer's error, an unwritable
@@ -68,7 +69,7 @@ constexpr const char* kUsage =
     "       crosscheck report [SCENE|DIR ...] -o DIR [--baseline DIR] [--no-chart] [--chart-frames N] [--expectations FILE] [--jobs N] "
     "[--shard I/N] [--junit FILE] [--timeout SECONDS] [--memory-limit MB] [--set KEY.PATH=VALUE ...]\n"
     "       crosscheck merge RESULTS.json|DIR ... -o DIR [--junit FILE]\n"
-    "       crosscheck bench [SCENE|DIR ...] [--frames N] [--warmup N] [--threads N] [-o FILE.json]\n"
+    "       crosscheck bench [SCENE|DIR ...] [--method all|LIST] [--frames N] [--warmup N] [--threads N] [-o FILE.json]\n"
     "       crosscheck chart BENCH.json [-o CHART.svg]\n"
     "       crosscheck stability [SCENE|DIR ...] [--frames N] [--threads N] [--json FILE]\n"
     "       (crosscheck SUBCOMMAND --help for every option)";
@@ -87,7 +88,8 @@ struct CommonFlags {
   bool validation = false;
   std::string fma = "auto";
   std::string softrasterDepth = "z";  // render only: "inverse-z" is the course's 1/z buffer
-  std::string method = "exact";       // render and compare: exact or exact-scalar
+  std::string method = "exact";       // render and compare: a name of kMethods
+  bool affine = false;                // render and compare: affine varyings (course methods only)
   std::string threadsText = "0";      // render and compare: softraster's threads, 0 = every core
   unsigned threads = 0;               // threadsText, once checked()
 
@@ -95,6 +97,11 @@ struct CommonFlags {
   bool checked() {
     if (!softraster::methodFromName(method)) {
       std::fprintf(stderr, "crosscheck: --method %s: expected one of %s\n", method.c_str(), methodList().c_str());
+      return false;
+    }
+    if (affine && !softraster::isCourseMethod(*softraster::methodFromName(method))) {
+      std::fprintf(stderr, "crosscheck: --affine: applies only to the course's methods (scanline, trapezoid, barycentric), "
+                   "not to --method %s\n", method.c_str());
       return false;
     }
     const auto parsed = wholeNumber("--threads", threadsText, 0, kMaxThreads);
@@ -106,6 +113,7 @@ struct CommonFlags {
   softraster::ContextOptions softraster() const {
     softraster::ContextOptions options;
     options.method = *softraster::methodFromName(method);
+    options.affineVaryings = affine;
     options.threads = threads;
     if (fma != "auto") options.fusedMultiplyAdd = fma == "fused";
     if (softrasterDepth == "inverse-z") options.depthMode = softraster::DepthMode::InverseZ;
@@ -139,7 +147,12 @@ int main(int argc, char** argv) {
   auto addCommon = [&](CLI::App* cmd) {
     cmd->add_option("--set", common.overrides, "Override a scene value, e.g. camera.yaw=90 (repeatable)");
     cmd->add_option("--method", common.method,
-                    "softraster's method: exact (SIMD fast path where possible, default) or exact-scalar");
+                    "softraster's method: exact (lavapipe's rules, SIMD fast path where possible, default), exact-scalar "
+                    "(the same bits, one pixel at a time), or one of the course's: scanline, trapezoid, barycentric "
+                    "(charted against Vulkan, not bit-identical)");
+    cmd->add_flag("--affine", common.affine,
+                  "With a course method: interpolate perspective varyings linearly in screen space (affine) instead of "
+                  "perspective-correct");
     cmd->add_option("--threads", common.threadsText, "softraster's drawing threads; 0 (default) = every core");
     addDevice(cmd);
   };
@@ -221,12 +234,16 @@ int main(int argc, char** argv) {
   mergeCommand->add_option("--junit", merge.junitFile, "Write the JUnit XML here instead of DIR/junit.xml");
 
   crosscheck::cli::BenchCommand bench;
-  std::string framesText = "15", warmupText = "3", benchThreadsText = "0";
+  std::string framesText = "15", warmupText = "3", benchThreadsText = "0", benchMethods = "exact,exact-scalar";
   CLI::App* benchCommand = app.add_subcommand(
-      "bench", "Time steady-state frames of softraster (exact, exact-scalar) and lavapipe, and their agreement");
+      "bench", "Time steady-state frames of softraster (its methods) and lavapipe, and their agreement");
   benchCommand->add_option("SCENES", bench.inputs,
                            "Scene files and directories (their *.json files); default: scenes/bench of the current "
                            "directory");
+  benchCommand->add_option("--method", benchMethods,
+                           "softraster's methods to time: all (" + methodList() +
+                               ") or a comma-separated list of them, a course method optionally as NAME+affine "
+                               "(affine varyings); default exact,exact-scalar");
   benchCommand->add_option("--frames", framesText, "Timed frames per renderer (default 15)");
   benchCommand->add_option("--warmup", warmupText, "Untimed frames per renderer before them (default 3)");
   benchCommand->add_option("--threads", benchThreadsText,
@@ -282,6 +299,15 @@ int main(int argc, char** argv) {
     if (!warmup) return 2;
     const auto threads = wholeNumber("--threads", benchThreadsText, 0, kMaxThreads);
     if (!threads) return 2;
+    const auto methods = crosscheck::parseBenchMethods(benchMethods);
+    if (!methods) {
+      std::fprintf(stderr,
+                   "crosscheck: --method %s: expected all or a comma-separated list of %s (a course method may be "
+                   "NAME+affine)\n",
+                   benchMethods.c_str(), methodList().c_str());
+      return 2;
+    }
+    bench.methods = *methods;
     bench.frames = *frames;
     bench.warmup = *warmup;
     bench.threads = *threads;

@@ -1,9 +1,10 @@
-// crosscheck bench: steady-state frame times of softraster (exact, exact-scalar) and of lavapipe
-// on each scene, with their agreement (see commands.hpp): collects and loads the scenes (any that
+// crosscheck bench: steady-state frame times of softraster (the methods asked for: exact and
+// exact-scalar by default) and of lavapipe on each scene, with their agreement (see
+// commands.hpp): collects and loads the scenes (any that
 // cannot be loaded is exit 2 before anything runs), measures the machine, runs the bench
 // (run/bench.hpp), prints the table and writes the JSON.
 // Deliberately no timing or formatting of its own (run/bench.cpp, output/bench_*), and no
-// options beyond the run's size: a bench run always has every method and lavapipe.
+// options beyond the run's size and its methods: a bench run always has lavapipe.
 #include "cli/commands.hpp"
 
 #include "output/bench_json.hpp"
@@ -44,6 +45,7 @@ int benchCommand(const BenchCommand& command) {
   options.threads = command.threads;
   options.device = command.device;
   options.softraster = command.softraster;
+  options.methods = command.methods;
   options.onScene = [](std::size_t position, std::size_t count, const BenchScene& scene) {
     std::fprintf(stderr, "bench: [%zu/%zu] %s\n", position + 1, count, scene.scene.string().c_str());
     std::fflush(stderr);

@@ -22,6 +22,7 @@
 #pragma once
 
 #include "results/results.hpp"
+#include "run/bench.hpp"        // BenchMethod
 #include "run/conformance.hpp"  // kDefaultMemoryLimitMegabytes
 
 #include <softraster/pipeline.hpp>
@@ -134,6 +135,7 @@ struct BenchCommand {
   std::string jsonFile;                 // empty: no JSON
   vkref::DeviceOptions device;
   softraster::ContextOptions softraster;
+  std::vector<BenchMethod> methods{{softraster::Method::Exact}, {softraster::Method::ExactScalar}};
 };
 int benchCommand(const BenchCommand& command);
 

@@ -40,7 +40,8 @@ int renderCommand(const RenderCommand& command) {
     const softraster::ContextOptions& o = command.options.softraster;
     used += std::string(" (") + std::string(softraster::methodName(o.method)) + ", " +
             (o.threads == 0 ? std::string("every core") : std::to_string(o.threads) + (o.threads == 1 ? " thread" : " threads")) +
-            (o.depthMode == softraster::DepthMode::InverseZ ? ", 1/z depth" : "") + ")";
+            (o.depthMode == softraster::DepthMode::InverseZ ? ", 1/z depth" : "") +
+            (o.affineVaryings ? ", affine varyings" : "") + ")";
   }
   std::printf("rendered %s with %s: wrote %s%s\n", command.options.scene.c_str(), used.c_str(), command.output.c_str(),
               command.depthOutput.empty() ? "" : (" and " + command.depthOutput).c_str());

@@ -15,7 +15,10 @@ json finite(double v) { return std::isfinite(v) ? json(v) : json(nullptr); }
 
 json runJson(const BenchRun& run) {
   json j = {{"renderer", run.renderer}, {"threads", run.threads}};
-  if (!run.method.empty()) j["method"] = run.method;
+  if (!run.method.empty()) {
+    j["method"] = run.method;
+    j["affine_varyings"] = run.affineVaryings;
+  }
   j["median_ms"] = finite(run.medianMilliseconds);
   j["min_ms"] = finite(run.minMilliseconds);
   j["setup_ms"] = finite(run.setupMilliseconds);
@@ -23,12 +26,16 @@ json runJson(const BenchRun& run) {
   if (run.agreement) {
     const Comparison& c = *run.agreement;
     j["coverage_mismatches"] = c.coverageMismatches;
+    j["pixels_differing"] = run.pixelsDiffering;
     j["colour_max_delta"] = *std::max_element(c.colourMaxDelta.begin(), c.colourMaxDelta.end());
+    j["colour_mean_delta"] = finite((c.colourMeanDelta[0] + c.colourMeanDelta[1] + c.colourMeanDelta[2] + c.colourMeanDelta[3]) / 4);
     j["depth_max_delta"] = finite(c.depthMaxDelta);
     j["agrees"] = c.passed();
   } else {
     j["coverage_mismatches"] = nullptr;
+    j["pixels_differing"] = nullptr;
     j["colour_max_delta"] = nullptr;
+    j["colour_mean_delta"] = nullptr;
     j["depth_max_delta"] = nullptr;
     j["agrees"] = nullptr;
   }

@@ -12,6 +12,7 @@
 #include <fstream>
 #include <memory>
 #include <string>
+#include <string_view>
 #include <thread>
 
 namespace crosscheck {
@@ -63,6 +64,16 @@ double memsetGigabytesPerSecond() {
   return s > 0 ? static_cast<double>(bytes) / s / 1e9 : 0;
 }
 
+// Pixels whose RGBA bytes differ at all (frames of one size).
+std::uint64_t pixelsDiffering(const Frame& a, const Frame& b) {
+  std::uint64_t count = 0;
+  for (std::size_t i = 0; i + 3 < a.rgba.size() && i + 3 < b.rgba.size(); i += 4) {
+    count += !std::equal(a.rgba.begin() + static_cast<std::ptrdiff_t>(i), a.rgba.begin() + static_cast<std::ptrdiff_t>(i + 4),
+                         b.rgba.begin() + static_cast<std::ptrdiff_t>(i));
+  }
+  return count;
+}
+
 std::uint64_t depthBytes(softraster::DepthFormat format) {
   return format == softraster::DepthFormat::D16Unorm ? 2 : 4;
 }
@@ -104,9 +115,11 @@ class LavapipeContender : public Contender {
   vkref::PreparedFrame prepared_;
 };
 
-std::unique_ptr<Contender> makeSoftraster(const Scene& scene, const BenchOptions& options, softraster::Method method) {
+std::unique_ptr<Contender> makeSoftraster(const Scene& scene, const BenchOptions& options, const BenchMethod& which) {
+  const softraster::Method method = which.method;
   softraster::ContextOptions context = options.softraster;
   context.method = method;
+  context.affineVaryings = which.affineVaryings;
   context.threads = options.threads;
   const auto start = Clock::now();
   auto contender = std::make_unique<SoftrasterContender>(scene, context);
@@ -114,7 +127,8 @@ std::unique_ptr<Contender> makeSoftraster(const Scene& scene, const BenchOptions
   contender->run.setupMilliseconds = millisecondsSince(start);
   contender->run.renderer = "softraster";
   contender->run.method = softraster::methodName(method);
-  // The scalar method draws on the calling thread alone, whatever the Context's thread count.
+  contender->run.affineVaryings = which.affineVaryings;
+  // The scalar and course methods draw on the calling thread alone, whatever the Context's thread count.
   contender->run.threads = method == softraster::Method::Exact ? contender->threads() : 1;
   if (!first) contender->run.error = first.message();
   return contender;
@@ -160,8 +174,7 @@ BenchScene benchScene(const Scene& scene, const BenchOptions& options, const Ben
   }
 
   std::vector<std::unique_ptr<Contender>> contenders;
-  contenders.push_back(makeSoftraster(scene, options, softraster::Method::Exact));
-  contenders.push_back(makeSoftraster(scene, options, softraster::Method::ExactScalar));
+  for (const BenchMethod& method : options.methods) contenders.push_back(makeSoftraster(scene, options, method));
   contenders.push_back(makeLavapipe(scene, options));
 
   // Frame by frame in turn, so that a noisy spell of the machine hits every renderer alike.
@@ -209,6 +222,7 @@ BenchScene benchScene(const Scene& scene, const BenchOptions& options, const Ben
       continue;
     }
     run.agreement = compareFrames(*frame, *reference, scene);
+    run.pixelsDiffering = pixelsDiffering(*frame, *reference);
   }
   if (lavapipe.run.ok()) lavapipe.run.ratioVsLavapipe = 1;
   for (auto& contender : contenders) out.runs.push_back(std::move(contender->run));
@@ -216,6 +230,36 @@ BenchScene benchScene(const Scene& scene, const BenchOptions& options, const Ben
 }
 
 }  // namespace
+
+std::string BenchMethod::label() const {
+  return std::string(softraster::methodName(method)) + (affineVaryings ? "+affine" : "");
+}
+
+std::optional<std::vector<BenchMethod>> parseBenchMethods(const std::string& text) {
+  std::vector<BenchMethod> methods;
+  if (text == "all") {
+    for (softraster::Method m : softraster::kMethods) methods.push_back({m});
+    return methods;
+  }
+  std::size_t start = 0;
+  while (true) {
+    const std::size_t comma = text.find(',', start);
+    std::string item = text.substr(start, comma == std::string::npos ? std::string::npos : comma - start);
+    BenchMethod method;
+    constexpr std::string_view kAffine = "+affine";
+    if (item.size() > kAffine.size() && item.compare(item.size() - kAffine.size(), kAffine.size(), kAffine) == 0) {
+      method.affineVaryings = true;
+      item.resize(item.size() - kAffine.size());
+    }
+    const auto parsed = softraster::methodFromName(item);
+    if (!parsed || (method.affineVaryings && !softraster::isCourseMethod(*parsed))) return std::nullopt;
+    method.method = *parsed;
+    if (std::find(methods.begin(), methods.end(), method) == methods.end()) methods.push_back(method);
+    if (comma == std::string::npos) break;
+    start = comma + 1;
+  }
+  return methods;
+}
 
 bool BenchResults::allAgree() const {
   for (const BenchScene& scene : scenes) {

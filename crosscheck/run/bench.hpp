@@ -1,8 +1,10 @@
-// The bench runner: steady-state frame times of softraster (each method) and of vkref on lavapipe
-// for each scene, and how closely each method agrees with Vulkan. Per scene every renderer is made
+// The bench runner: steady-state frame times of softraster (each method asked for: exact and
+// exact-scalar by default, any of options.hpp's kMethods, a course method also with affine
+// varyings) and of vkref on lavapipe for each scene, and how closely each method agrees with
+// Vulkan. Per scene every renderer is made
 // ready once (softraster: a SoftrasterScene, i.e. Context, framebuffer and draws; lavapipe: a
 // Renderer opened and the frame prepared), then warm-up frames and timed frames are drawn with the
-// renderers taking turns frame by frame (exact, exact-scalar, lavapipe, repeat), each frame timed
+// renderers taking turns frame by frame (the methods in order, lavapipe, repeat), each frame timed
 // with std::chrono::steady_clock. Setup (making ready plus the first frame) is timed apart. After
 // the timed frames each method's last frame is compared with lavapipe's (compare/compareFrames).
 // The result is a BenchResults value, the only thing the bench writers (output/bench_*) read.
@@ -27,6 +29,21 @@ namespace crosscheck {
 
 struct BenchScene;
 
+// One softraster contender of a bench run: a method, and for a course method whether its
+// varyings are affine (ContextOptions::affineVaryings).
+struct BenchMethod {
+  softraster::Method method = softraster::Method::Exact;
+  bool affineVaryings = false;
+  // "exact", "scanline", "scanline+affine": how the table and the --method list name it.
+  std::string label() const;
+  bool operator==(const BenchMethod&) const = default;
+};
+
+// The bench's --method value: "all" (every kMethods entry, in order) or a comma-separated list of
+// method names, a course method's name optionally followed by "+affine"; nothing for an unknown
+// or malformed entry (or an exact method with +affine).
+std::optional<std::vector<BenchMethod>> parseBenchMethods(const std::string& text);
+
 struct BenchOptions {
   unsigned frames = 15;  // timed frames per renderer (at least 1)
   unsigned warmup = 3;   // untimed frames per renderer before them
@@ -34,7 +51,9 @@ struct BenchOptions {
   // set (setenv) before each Vulkan renderer is opened.
   unsigned threads = 0;
   vkref::DeviceOptions device;
-  softraster::ContextOptions softraster;  // fmuladd and depth mode; method and threads are the bench's
+  softraster::ContextOptions softraster;  // fmuladd and depth mode; method, affine varyings and threads are the bench's
+  // The softraster methods timed, in order (each once, then lavapipe).
+  std::vector<BenchMethod> methods{{softraster::Method::Exact}, {softraster::Method::ExactScalar}};
   // Called after each scene (for progress): (its position, the number of scenes, its result).
   std::function<void(std::size_t, std::size_t, const BenchScene&)> onScene;
 };
@@ -49,9 +68,10 @@ struct BenchMachine {
 // One renderer (or softraster method) on one scene.
 struct BenchRun {
   std::string renderer;            // "softraster" or "lavapipe"
-  std::string method;              // softraster: "exact" or "exact-scalar"; lavapipe: empty
-  // Threads that draw: softraster's Context threads (exact-scalar draws on the calling thread
-  // alone, so 1), lavapipe's LP_NUM_THREADS.
+  std::string method;              // softraster: methodName ("exact", "scanline", ...); lavapipe: empty
+  bool affineVaryings = false;     // softraster: a course method with affine varyings
+  // Threads that draw: softraster's Context threads (exact-scalar and the course's methods draw
+  // on the calling thread alone, so 1), lavapipe's LP_NUM_THREADS.
   unsigned threads = 0;
   std::vector<double> frameMilliseconds;  // the timed frames, in order
   double medianMilliseconds = 0, minMilliseconds = 0;
@@ -60,6 +80,7 @@ struct BenchRun {
   // softraster only: this method's last frame against lavapipe's (empty for lavapipe itself or
   // when either failed).
   std::optional<Comparison> agreement;
+  std::uint64_t pixelsDiffering = 0;  // with agreement: pixels whose RGBA bytes differ from lavapipe's at all
   double ratioVsLavapipe = 0;      // lavapipe median / this median (> 1: softraster faster); 0 when unknown
   std::string error;               // one line when this renderer failed (its numbers are then partial)
   bool ok() const { return error.empty(); }
@@ -73,7 +94,7 @@ struct BenchScene {
   std::uint64_t triangles = 0;     // triangles assembled by the draws (line and point topologies: 0)
   std::uint64_t bytesWritten = 0;  // colour + depth bytes of one frame: pixels * samples * (4 + depth bytes)
   double memoryLimitMilliseconds = 0;  // bytesWritten at the memset bandwidth
-  std::vector<BenchRun> runs;      // exact, exact-scalar, lavapipe
+  std::vector<BenchRun> runs;      // the methods in BenchOptions::methods' order, then lavapipe
 };
 
 struct BenchResults {

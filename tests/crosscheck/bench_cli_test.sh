@@ -53,10 +53,71 @@ case $case_name in
       bench tests/data/bench/no_such_scene.json
     check_usage '^crosscheck: scenez/: no such file or directory$' bench scenez/
     check_usage '^crosscheck: tests/data/malformed_syntax.json: parse error at line 3' bench tests/data/malformed_syntax.json
-    check_usage '^crosscheck: --method fast: expected one of exact, exact-scalar$' \
+    check_usage '^crosscheck: --method fast: expected one of exact, exact-scalar, scanline, trapezoid, barycentric$' \
       render "$tiny" --method fast -o "$artifacts/x.png"
     check_usage '^crosscheck: --threads many: expected a whole number from 0 to 1024$' compare "$tiny" --threads many
     check_usage '^crosscheck: --threads 5000: expected a whole number from 0 to 1024$' compare "$tiny" --threads 5000
+    ;;
+  bad_method)
+    # bench --method: an unknown name, an empty entry, +affine on an exact method: one line, exit 2.
+    list='exact, exact-scalar, scanline, trapezoid, barycentric'
+    check_usage "^crosscheck: --method fast: expected all or a comma-separated list of $list \\(a course method may be NAME\\+affine\\)$" \
+      bench --method fast "$tiny"
+    check_usage '^crosscheck: --method exact,,scanline: expected all or a comma-separated list' bench --method exact,,scanline "$tiny"
+    check_usage '^crosscheck: --method exact\+affine: expected all' bench --method exact+affine "$tiny"
+    check_usage '^crosscheck: --method scanline,Barycentric: expected all' bench --method scanline,Barycentric "$tiny"
+    check_usage '^crosscheck: --affine: applies only to the course.s methods \(scanline, trapezoid, barycentric\), not to --method exact$' \
+      compare "$tiny" --affine
+    check_usage '^crosscheck: --affine: applies only to the course.s methods' render "$tiny" --method exact-scalar --affine -o "$artifacts/x.png"
+    ;;
+  course_methods)
+    # bench --method all: every method of kMethods in order, their agreement in the table and JSON;
+    # a list with +affine; render and compare with a course method and --affine.
+    need_python() { command -v python3 >/dev/null || { echo "SKIPPED: python3 is not installed"; exit 77; }; }
+    need_python
+    run bench "$tiny" --method all --frames 1 --warmup 0 --threads 1 --json "$artifacts/all.json"
+    [ "$status" -le 1 ] || fail "exit status $status, expected 0 or 1"
+    for m in exact exact-scalar scanline trapezoid barycentric; do
+      expect_out "^tiny_sphere +48x32 +256 +softraster $m +1 "
+    done
+    python3 - "$artifacts/all.json" <<'PY' || fail "all.json does not list every method with its agreement"
+import json, sys
+d = json.load(open(sys.argv[1]))
+(s,) = d["scenes"]
+assert [(r["renderer"], r.get("method")) for r in s["results"]] == [
+    ("softraster", m) for m in ("exact", "exact-scalar", "scanline", "trapezoid", "barycentric")] + [("lavapipe", None)]
+for r in s["results"][:5]:
+    assert r["affine_varyings"] is False
+    for k in ("coverage_mismatches", "pixels_differing", "colour_max_delta", "colour_mean_delta", "depth_max_delta"):
+        assert isinstance(r[k], (int, float)), k
+    assert r["error"] is None
+for r in s["results"][:2]:
+    assert (r["pixels_differing"], r["colour_mean_delta"]) == (0, 0)
+for r in s["results"][2:5]:
+    assert r["threads"] == 1
+lavapipe = s["results"][5]
+assert lavapipe["pixels_differing"] is None and lavapipe["colour_mean_delta"] is None
+PY
+    run bench "$tiny" --method scanline,barycentric+affine,scanline --frames 1 --warmup 0 --threads 1 --json "$artifacts/list.json"
+    [ "$status" -le 1 ] || fail "exit status $status, expected 0 or 1"
+    expect_out '^tiny_sphere +48x32 +256 +softraster barycentric\+affine +1 '
+    python3 - "$artifacts/list.json" <<'PY' || fail "list.json does not have the methods asked for"
+import json, sys
+(s,) = json.load(open(sys.argv[1]))["scenes"]
+assert [(r.get("method"), r.get("affine_varyings")) for r in s["results"]] == [
+    ("scanline", False), ("barycentric", True), (None, None)]
+PY
+    for m in scanline trapezoid barycentric; do
+      run render "$tiny" --renderer soft --method $m -o "$artifacts/$m.png"
+      expect_status 0
+      expect_out "with softraster \($m, every core\)"
+      run render "$tiny" --renderer soft --method $m --affine --threads 1 -o "$artifacts/$m-affine.png"
+      expect_status 0
+      expect_out "with softraster \($m, 1 thread, affine varyings\)"
+      run compare "$tiny" --method $m --json
+      [ "$status" -le 1 ] || fail "compare --method $m: exit status $status, expected 0 or 1"
+      expect_out '"coverage_mismatches"'
+    done
     ;;
   tiny_json)
     need_python() { command -v python3 >/dev/null || { echo "SKIPPED: python3 is not installed"; exit 77; }; }

@@ -114,3 +114,21 @@ TEST(Bench, JsonHasTheDocumentedFields) {
     }
   }
 }
+
+// --method's list: all, names in order (repeats dropped), +affine on course methods only.
+TEST(Bench, MethodListsParse) {
+  using crosscheck::BenchMethod;
+  using softraster::Method;
+  const auto all = crosscheck::parseBenchMethods("all");
+  ASSERT_TRUE(all);
+  ASSERT_EQ(all->size(), softraster::kMethods.size());
+  for (std::size_t i = 0; i < all->size(); ++i) EXPECT_EQ((*all)[i], BenchMethod{softraster::kMethods[i]});
+  const auto list = crosscheck::parseBenchMethods("trapezoid,exact,trapezoid+affine,exact");
+  ASSERT_TRUE(list);
+  EXPECT_EQ(*list, (std::vector<BenchMethod>{{Method::Trapezoid}, {Method::Exact}, {Method::Trapezoid, true}}));
+  EXPECT_EQ((*list)[2].label(), "trapezoid+affine");
+  for (const char* bad : {"", "fast", "exact,", ",exact", "exact+affine", "exact-scalar+affine", "scanline+", "+affine",
+                          "scanline+affine+affine", "ALL"}) {
+    EXPECT_FALSE(crosscheck::parseBenchMethods(bad)) << bad;
+  }
+}

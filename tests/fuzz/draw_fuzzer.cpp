@@ -5,7 +5,10 @@
 // drawIndexed.
 // Properties: no crash and no undefined behaviour; the exact method (SIMD fast path, on one
 // thread or in row bands on three) and the scalar reference agree on the Status and on every byte of every sample, as
-// docs/architecture.md promises for every input.
+// docs/architecture.md promises for every input. The course's methods (scanline, trapezoid,
+// barycentric, with perspective or affine varyings) draw every input too: they must not crash,
+// hang or touch memory outside the framebuffer, and give the same Status as the reference; their
+// pixels are not compared (they are other algorithms).
 // Deliberately no Vulkan: lavapipe is compared in the scene tests, this is softraster alone.
 #include "fuzz_support.hpp"
 
@@ -83,6 +86,16 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   static const Context exact(ContextOptions{Method::Exact, 1});
   static const Context exactThreads(ContextOptions{Method::Exact, 3});  // row bands on three threads
   static const Context scalar(ContextOptions{Method::ExactScalar, 1});
+  const auto courseContext = [](Method method, bool affine) {
+    ContextOptions options{method, 1};
+    options.affineVaryings = affine;
+    return options;
+  };
+  static const Context course[2][3] = {
+      {Context(courseContext(Method::Scanline, false)), Context(courseContext(Method::Trapezoid, false)),
+       Context(courseContext(Method::Barycentric, false))},
+      {Context(courseContext(Method::Scanline, true)), Context(courseContext(Method::Trapezoid, true)),
+       Context(courseContext(Method::Barycentric, true))}};
   fuzz::ByteReader in(data, size);
   const std::uint32_t width = 1 + in.below(48), height = 1 + in.below(48);
   const std::uint32_t samples = in.flag() ? 4 : 1;
@@ -102,6 +115,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   // Read last, so inputs that end before it keep their meaning: one in eight draws on three
   // threads (waking threads costs more than most of these small draws).
   const bool onThreads = in.below(8) == 7;
+  const bool affine = in.flag();
 
   const auto drawWith = [&](const Context& context) {
     Framebuffer framebuffer = Framebuffer::create(width, height, format, samples).value();
@@ -124,6 +138,11 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   for (std::size_t i = 0; i < fast.depth.size(); ++i) {
     fuzz::require(fast.depth[i] == reference.depth[i], "both methods give the same depth",
                   "sample " + std::to_string(i));
+  }
+  for (const Context& context : course[affine ? 1 : 0]) {
+    const Outcome drawn = drawWith(context);
+    fuzz::require(drawn.status.ok() == reference.status.ok() && drawn.status.message() == reference.status.message(),
+                  "a course method gives the reference's Status", drawn.status.message() + " / " + reference.status.message());
   }
   return 0;
 }

@@ -1,7 +1,9 @@
 // How a Context draws: the options that are not Vulkan pipeline state (that is state.hpp) but
-// choices of this library: the method, how lavapipe's fmuladd rounds on the machine being
-// matched, and what the depth buffer holds.
-// Deliberately absent until their issue lands: the course's methods.
+// choices of this library: the method (lavapipe's exact rules, or one of the course's
+// rasterization methods), how lavapipe's fmuladd rounds on the machine being matched, what the
+// depth buffer holds and, for the course's methods, affine instead of perspective varyings.
+// Deliberately absent: per-vertex versus per-pixel lighting (a choice of shading model, not of
+// the rasterizer: shaders/ has both kinds).
 #pragma once
 
 #include <softraster/detail/fused_multiply_add.hpp>
@@ -22,25 +24,47 @@ namespace softraster {
 //             i.e. the larger 1/z). Needs D32_SFLOAT; the viewport depth range does not apply.
 enum class DepthMode : std::uint8_t { Vulkan, InverseZ };
 
-// How pixels are found and shaded. Both give the same bits; ExactScalar is the reference the
-// fast one is tested against (and a point on the speed/accuracy chart).
+// How pixels are found and shaded. Exact and ExactScalar give the same bits (lavapipe's);
+// ExactScalar is the reference the fast one is tested against. The course's three methods are
+// other algorithms, charted against Vulkan, never bit-identical to it; each replaces only setup,
+// coverage and interpolation of filled triangles (detail/course/: each header says what it does
+// and does not do; none has a fill rule), sharing everything before (vertex shading, clipping,
+// culling, polygon modes) and after (depth test, shading, blending) with the exact method; lines
+// and points are drawn by the exact method's code; they draw on the calling thread, and with 4x
+// MSAA each pixel's one result goes to all four samples.
 //   Exact:       lavapipe's rules; filled single-sample triangles take the SIMD fast path (4x2
 //                pixel batches, AVX2) where the CPU has AVX2 and FMA, fmuladd is fused and the
 //                shader's fragment function is written over its float type (shader.hpp);
 //                everything else takes the scalar path.
 //   ExactScalar: lavapipe's rules, one pixel at a time.
-enum class Method : std::uint8_t { Exact, ExactScalar };
+//   Scanline:    the course's row method: each edge walked into per-row left/right arrays, each
+//                row drawn between them (detail/course/scanline.hpp).
+//   Trapezoid:   split at the middle vertex into two trapezoids, positions in fixed point and
+//                values stepped incrementally down edges and across spans (course/trapezoid.hpp).
+//   Barycentric: the bounding box, float barycentrics at each pixel centre, inside when
+//                u >= 0, v >= 0, u + v <= 1 (course/barycentric.hpp).
+enum class Method : std::uint8_t { Exact, ExactScalar, Scanline, Trapezoid, Barycentric };
 
 // Every method, in the order the CLI, the bench and the chart list them.
-inline constexpr std::array kMethods{Method::Exact, Method::ExactScalar};
+inline constexpr std::array kMethods{Method::Exact, Method::ExactScalar, Method::Scanline, Method::Trapezoid,
+                                     Method::Barycentric};
 
-// A method's name on the command line and in results ("exact", "exact-scalar").
+// A method's name on the command line and in results ("exact", "exact-scalar", "scanline",
+// "trapezoid", "barycentric").
 constexpr std::string_view methodName(Method method) {
   switch (method) {
     case Method::Exact: return "exact";
     case Method::ExactScalar: return "exact-scalar";
+    case Method::Scanline: return "scanline";
+    case Method::Trapezoid: return "trapezoid";
+    case Method::Barycentric: return "barycentric";
   }
   return "unknown";
+}
+
+// Whether a method is one of the course's (not lavapipe's rules).
+constexpr bool isCourseMethod(Method method) {
+  return method == Method::Scanline || method == Method::Trapezoid || method == Method::Barycentric;
 }
 
 // The method a name stands for, or nothing for an unknown name.
@@ -59,6 +83,12 @@ struct ContextOptions {
   // How lavapipe's fmuladd rounds on the machine being matched: fused where the CPU has FMA.
   bool fusedMultiplyAdd = detail::cpuHasFma();
   DepthMode depthMode = DepthMode::Vulkan;
+  // The course's methods only: perspective-correct varyings (smooth, the default in GLSL) are
+  // interpolated linearly in screen space, without the division by the interpolated 1/w
+  // (the course's affine interpolation; noperspective and flat varyings are unchanged). With
+  // Exact or ExactScalar it is an error of every draw (Context::validate()), never a silent
+  // change of an exact draw.
+  bool affineVaryings = false;
 };
 
 }  // namespace softraster

@@ -20,8 +20,10 @@
 // Exactness needs every float operation rounded on its own: the installed target passes
 // -ffp-contract=off to its users (CMake and pkg-config); under Clang the library's own code is
 // also compiled with `#pragma clang fp contract(off)`, whatever the flags.
+// The course's rasterization methods (Method::Scanline, Trapezoid, Barycentric: options.hpp,
+// detail/course/) take the same loop with their own triangle setup, coverage and interpolation.
 // Deliberately absent: MSAA lines, points and polygon modes, depth bias in polygon modes,
-// dual-source blending, alternative rasterization methods (each a later issue).
+// dual-source blending (each a later issue).
 #pragma once
 
 #if defined(__clang__)
@@ -109,6 +111,13 @@ class Context {
       return Status::error("framebuffer has no pixels (make it with Framebuffer::create)");
     }
     if (state.topology > Topology::TriangleFan) return Status::error("unknown topology");
+    if (!isCourseMethod(options_.method) && options_.method != Method::Exact && options_.method != Method::ExactScalar) {
+      return Status::error("unknown method");
+    }
+    if (options_.affineVaryings && !isCourseMethod(options_.method)) {
+      return Status::error("affine varyings apply only to the course's methods (scanline, trapezoid, barycentric), not to " +
+                           std::string(methodName(options_.method)));
+    }
     if (options_.depthMode == DepthMode::InverseZ && framebuffer.depthFormat() != DepthFormat::D32Sfloat) {
       return Status::error("the 1/z depth buffer needs a D32_SFLOAT framebuffer");
     }
@@ -192,6 +201,14 @@ class Context {
   void drawWithFormat(const PipelineState& state, const typename Shader::Uniforms& uniforms,
                       std::span<const typename Shader::Vertex> vertices, std::span<const std::uint32_t> indices,
                       Framebuffer& framebuffer, detail::DrawScratch& scratch) const {
+    if (isCourseMethod(options_.method)) {
+      if (options_.fusedMultiplyAdd) {
+        drawCourseFused<Shader, Format>(state, uniforms, vertices, indices, framebuffer, scratch);
+      } else {
+        drawCourse<Shader, false, Format>(state, uniforms, vertices, indices, framebuffer, scratch);
+      }
+      return;
+    }
 #if SOFTRASTER_HAS_FAST_PATH
     if constexpr (ShadesBatches<Shader>) {
       if (options_.method == Method::Exact && options_.fusedMultiplyAdd && detail::fast::cpuRunsFastPath()) {
@@ -226,6 +243,28 @@ class Context {
                  std::span<const typename Shader::Vertex> vertices, std::span<const std::uint32_t> indices,
                  Framebuffer& framebuffer, detail::DrawScratch& scratch) const {
     drawExact<Shader, true, Format>(state, uniforms, vertices, indices, framebuffer, scratch);
+  }
+
+  // A course method: the same draw loop (front end, lines and points) with the course's triangles,
+  // on the calling thread; the front end rounds fmuladd as the options say, like the exact method.
+  template <class Shader, bool Fused, DepthFormat Format>
+  void drawCourse(const PipelineState& state, const typename Shader::Uniforms& uniforms,
+                  std::span<const typename Shader::Vertex> vertices, std::span<const std::uint32_t> indices,
+                  Framebuffer& framebuffer, detail::DrawScratch& scratch) const {
+    detail::ExactDraw<Shader, Fused, Format, detail::FragmentStage<Shader, Fused, Format>,
+                      detail::course::CourseTriangles<Shader, Fused, Format>>(
+        state, uniforms, framebuffer, options_.depthMode == DepthMode::InverseZ, scratch, nullptr, options_)
+        .run(vertices, indices);
+  }
+
+  template <class Shader, DepthFormat Format>
+#if defined(__x86_64__) && defined(__GNUC__)
+  [[gnu::target("fma"), gnu::flatten]]
+#endif
+  void drawCourseFused(const PipelineState& state, const typename Shader::Uniforms& uniforms,
+                       std::span<const typename Shader::Vertex> vertices, std::span<const std::uint32_t> indices,
+                       Framebuffer& framebuffer, detail::DrawScratch& scratch) const {
+    drawCourse<Shader, true, Format>(state, uniforms, vertices, indices, framebuffer, scratch);
   }
 
 #if SOFTRASTER_HAS_FAST_PATH

@@ -6,11 +6,15 @@
 //   (fragment/shade, over exact/rasterizer and exact/interpolation).
 // Primitives reach the fragment stage in submission order; with more than one thread the band
 // queue (fast/bands.hpp) draws them band by band in parallel, each band in that order.
-// The same loop serves the scalar path and the fast path: only the fragment stage differs.
+// The same loop serves the scalar path and the fast path: only the fragment stage differs. It
+// serves the course's methods too (course/draw.hpp): with Course a course::CourseTriangles, every
+// filled triangle goes to it after the front end, instead of snapping, setup and the fragment
+// stage; lines and points still take the exact code.
 // Deliberately absent: validation of the draw (pipeline.hpp's Context does it before any work)
 // and any choice of method or instruction set (the Context makes those and instantiates this).
 #pragma once
 
+#include <softraster/detail/course/draw.hpp>
 #include <softraster/detail/exact/interpolation.hpp>
 #include <softraster/detail/exact/line_point_setup.hpp>
 #include <softraster/detail/exact/scratch.hpp>
@@ -31,23 +35,30 @@
 #include <algorithm>
 #include <cstdint>
 #include <span>
+#include <type_traits>
 #include <utility>
 #include <vector>
 
 namespace softraster::detail {
 
+// The Course parameter of a draw of the exact method: no course method.
+struct NoCourseMethod {};
+
 // Fragments: the fragment stage, FragmentStage (scalar, fragment/shade.hpp) or the fast path's
 // fast::FastFragmentStage (fast/fragments.hpp); both take the same calls and give the same bits.
-template <class Shader, bool Fused, DepthFormat Format, class Fragments = FragmentStage<Shader, Fused, Format>>
+// Course: NoCourseMethod, or course::CourseTriangles (a course method draws the filled triangles).
+template <class Shader, bool Fused, DepthFormat Format, class Fragments = FragmentStage<Shader, Fused, Format>,
+          class Course = NoCourseMethod>
 class ExactDraw {
  public:
   static constexpr int N = Shader::kVaryings;
   using Vertex = ShadedVertex<N>;
 
   // pool: the Context's threads (nullptr or one thread: everything on the calling thread);
-  // scratch: the vectors this draw fills, kept by the Context between draws.
+  // scratch: the vectors this draw fills, kept by the Context between draws; options: the
+  // Context's, read by a course method only (its method and affineVaryings).
   ExactDraw(const PipelineState& state, const typename Shader::Uniforms& uniforms, Framebuffer& framebuffer,
-            bool inverseZ, DrawScratch& scratch, ThreadPool* pool = nullptr)
+            bool inverseZ, DrawScratch& scratch, ThreadPool* pool = nullptr, const ContextOptions& options = {})
       : state_(state),
         rs_(state.rasterization),
         uniforms_(uniforms),
@@ -61,7 +72,8 @@ class ExactDraw {
                    multisample_ ? msaaRegionEdges(region_).rasterRegion : region_, inverseZ),
         shaded_(scratch.vector<Vertex>(ScratchSlot::ShadedVertices)),
         triangles_(scratch.vector<TriangleIndices>(ScratchSlot::Triangles)),
-        lines_(scratch.vector<LineIndices>(ScratchSlot::Lines)) {}
+        lines_(scratch.vector<LineIndices>(ScratchSlot::Lines)),
+        course_(makeCourse(state, uniforms, framebuffer, inverseZ, options, scratch)) {}
 
   // Draws vertices[indices[k]] in order, assembled by the state's topology.
   void run(std::span<const typename Shader::Vertex> vertices, std::span<const std::uint32_t> indices) {
@@ -79,6 +91,16 @@ class ExactDraw {
 
  private:
   static constexpr InterpolationSet<N> kInterpolation = interpolationOf<Shader>();
+  static constexpr bool kCourse = !std::is_same_v<Course, NoCourseMethod>;
+
+  Course makeCourse(const PipelineState& state, const typename Shader::Uniforms& uniforms, Framebuffer& framebuffer,
+                    bool inverseZ, const ContextOptions& options, DrawScratch& scratch) const {
+    if constexpr (kCourse) {
+      return Course(state, uniforms, framebuffer, viewport_, region_, inverseZ, options, scratch);
+    } else {
+      return {};
+    }
+  }
 
   void shadeVertices(std::span<const typename Shader::Vertex> vertices) {
     shaded_.resize(vertices.size());
@@ -179,8 +201,17 @@ class ExactDraw {
   }
   void drawPoint(const Vertex& v) { callCompiledFor<Fragments::kInstructionSet, &ExactDraw::drawPointHere>(*this, v); }
 
-  // Snapping, the fixed-point cull, setup and fragments of one filled triangle.
+  // Snapping, the fixed-point cull, setup and fragments of one filled triangle; or the course
+  // method's own cull, setup, coverage and interpolation.
   void drawTriangleHere(const Vertex& a, const Vertex& b, const Vertex& c) {
+    if constexpr (kCourse) {
+      course_.drawTriangle(a, b, c, winding_);
+    } else {
+      drawExactTriangle(a, b, c);
+    }
+  }
+
+  void drawExactTriangle(const Vertex& a, const Vertex& b, const Vertex& c) {
     const float pixelOffset = multisample_ ? 0.0f : kPixelCentreOffset;
     FixedTriangle fixed = snapTriangle(a.window, b.window, c.window, pixelOffset);
     const int area = fixedAreaSign(fixed);
@@ -231,6 +262,7 @@ class ExactDraw {
   std::vector<TriangleIndices>& triangles_;
   std::vector<LineIndices>& lines_;
   ClippedPolygon<N> polygon_;
+  [[no_unique_address]] Course course_;  // after viewport_ and region_, which it is made from
 };
 
 }  // namespace softraster::detail

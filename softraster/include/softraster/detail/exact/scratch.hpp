@@ -17,7 +17,8 @@
 
 namespace softraster::detail {
 
-enum class ScratchSlot : std::uint8_t { IndexSequence, ShadedVertices, Triangles, Lines, BandRecords, BandBins };
+// CourseRows: the course's scanline method's per-row left/right arrays (course/scanline.hpp).
+enum class ScratchSlot : std::uint8_t { IndexSequence, ShadedVertices, Triangles, Lines, BandRecords, BandBins, CourseRows };
 
 class DrawScratch {
  public:
