@@ -8,7 +8,8 @@
 //                     [--junit FILE] [--timeout SECONDS] [--memory-limit MB] [--set KEY.PATH=VALUE ...]
 //   crosscheck merge RESULTS.json|DIR ... -o DIR [--junit FILE]
 //   crosscheck bench [SCENE|DIR ...] [--frames N] [--warmup N] [--threads N] [-o FILE.json]
-// render and compare also take --method NAME (options.hpp kMethods: exact, exact-scalar, ...) and --threads N (softraster's).
+//   crosscheck view SCENE [--set KEY.PATH=VALUE ...] [--script FILE] [-o|--screenshots DIR]
+// render, compare and view also take --method NAME (options.hpp kMethods: exact, exact-scalar, ...) and --threads N (softraster's).
 // Exit status (README, "Exit status"): 0 success / within tolerance / nothing unexpected; 1
 // outside tolerance or an unexpected conformance result; 2 anything that kept the comparison from
 // happening: bad usage, a scene or file that cannot be loaded, a renderer's error, an unwritable
@@ -17,6 +18,8 @@
 // (cli/commands.hpp); a parse error is exit status 2 with the usage below, a bad value of a
 // number or method option one error line naming the option, exit status 2.
 #include "cli/commands.hpp"
+#include "view/controls.hpp"
+#include "view/script.hpp"
 
 #include <CLI/CLI.hpp>
 
@@ -66,6 +69,7 @@ constexpr const char* kUsage =
     "[--junit FILE] [--timeout SECONDS] [--memory-limit MB] [--set KEY.PATH=VALUE ...]\n"
     "       crosscheck merge RESULTS.json|DIR ... -o DIR [--junit FILE]\n"
     "       crosscheck bench [SCENE|DIR ...] [--frames N] [--warmup N] [--threads N] [-o FILE.json]\n"
+    "       crosscheck view SCENE [--set KEY.PATH=VALUE ...] [--script FILE] [-o|--screenshots DIR]\n"
     "       (crosscheck SUBCOMMAND --help for every option)";
 
 // softraster's method names, "exact, exact-scalar, ...", for usage and errors.
@@ -82,8 +86,8 @@ struct CommonFlags {
   bool validation = false;
   std::string fma = "auto";
   std::string softrasterDepth = "z";  // render only: "inverse-z" is the course's 1/z buffer
-  std::string method = "exact";       // render and compare: exact or exact-scalar
-  std::string threadsText = "0";      // render and compare: softraster's threads, 0 = every core
+  std::string method = "exact";       // render, compare and view: exact or exact-scalar
+  std::string threadsText = "0";      // render, compare and view: softraster's threads, 0 = every core
   unsigned threads = 0;               // threadsText, once checked()
 
   // Checks method and threads; false after printing one error line.
@@ -222,14 +226,37 @@ int main(int argc, char** argv) {
   benchCommand->add_option("-o,--output,--json", bench.jsonFile, "Write the results as JSON to this file");
   addDevice(benchCommand);
 
+  crosscheck::cli::ViewCommand viewArgs;
+  CLI::App* viewCommand = app.add_subcommand(
+      "view", "A window: the scene rendered live by softraster and Vulkan (lavapipe), compared frame by frame");
+  viewCommand->add_option("SCENE", scenePath, "Scene file")->required();
+  viewCommand->add_option("--script", viewArgs.script, "Keys and frames from FILE instead of the keyboard (format below)");
+  viewCommand->add_option("-o,--output,--screenshots", viewArgs.outDir,
+                          "Folder for screenshots and saved scenes (default out/view)");
+  addCommon(viewCommand);
+  {
+    std::string footer = "\nKeys (one step a frame while held; the status under the picture shows frame times and metrics):\n";
+    for (const std::string& line : crosscheck::view::controlLines()) footer += "  " + line + "\n";
+    char steps[160];
+    std::snprintf(steps, sizeof steps, "Steps a frame: move %g scene units, turn %g degrees, light %g units, time %g s.\n",
+                  crosscheck::view::kMoveStep, crosscheck::view::kTurnStep, crosscheck::view::kLightStep,
+                  crosscheck::view::kTimeStep);
+    footer += steps;
+    footer += "Save as scene writes the scene file with the changed camera, light and time as --set overrides\n"
+              "applied (OBJ paths made relative to the folder) and NAME.soft.png, NAME.vulkan.png, NAME.diff.png.\n\n" +
+              crosscheck::view::scriptHelp() +
+              "Without a display (DISPLAY unset) it is one error line and exit 2; run it under xvfb-run -a for scripts.";
+    viewCommand->footer(footer);
+  }
+
   // CLI11 would call an unknown subcommand "A subcommand is required" or an extra argument.
   if (argc > 1 && argv[1][0] != '-') {
     const std::string name = argv[1];
     bool known = false;
     for (const CLI::App* sub : app.get_subcommands({})) known = known || sub->get_name() == name;
     if (!known) {
-      std::fprintf(stderr, "crosscheck: unknown subcommand '%s' (expected render, compare, conformance, report, merge or "
-                   "bench)\n%s\n",
+      std::fprintf(stderr, "crosscheck: unknown subcommand '%s' (expected render, compare, conformance, report, merge, "
+                   "bench or view)\n%s\n",
                    name.c_str(), kUsage);
       return 2;
     }
@@ -243,7 +270,11 @@ int main(int argc, char** argv) {
     return 2;
   }
 
-  if ((render->parsed() || compare->parsed()) && !common.checked()) return 2;
+  if ((render->parsed() || compare->parsed() || viewCommand->parsed()) && !common.checked()) return 2;
+  if (viewCommand->parsed()) {
+    viewArgs.options = common.sceneOptions(scenePath);
+    return crosscheck::cli::viewCommand(viewArgs);
+  }
   if (benchCommand->parsed()) {
     const auto frames = wholeNumber("--frames", framesText, 1, 100000);
     if (!frames) return 2;

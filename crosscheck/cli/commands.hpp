@@ -9,6 +9,8 @@
 //                and results.json
 //   bench        frame times of every renderer, table and JSON  0 every method agrees with lavapipe,
 //                                                               1 a renderer failed or disagrees
+//   view         a window: both renderers live, keys or a       0 closed or the script ended
+//                --script, screenshots and saved scenes
 // 2 is bad usage or a failure to finish everywhere (main.cpp's parse errors; a scene that cannot
 // be loaded, rendered or written; the suite commands' unreadable
 // expectations, shards, folders or output paths; merge's unreadable results or shards that do not
@@ -129,5 +131,13 @@ struct BenchCommand {
   softraster::ContextOptions softraster;
 };
 int benchCommand(const BenchCommand& command);
+
+struct ViewCommand {
+  SceneOptions options;
+  std::string script;                   // --script FILE; empty: the keyboard
+  std::string outDir = "out/view";      // screenshots and saved scenes
+};
+// view.cpp; 2 for a bad script, scene, no display or a renderer's or writer's error.
+int viewCommand(const ViewCommand& command);
 
 }  // namespace crosscheck::cli
