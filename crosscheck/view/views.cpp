@@ -36,16 +36,6 @@ Picture twoPanes(std::uint32_t w, std::uint32_t h, const std::vector<std::uint8_
   return p;
 }
 
-// Grey to RGBA (depthToGrey gives one byte a pixel).
-std::vector<std::uint8_t> greyToRgba(const std::vector<std::uint8_t>& grey) {
-  std::vector<std::uint8_t> rgba(grey.size() * 4);
-  for (std::size_t i = 0; i < grey.size(); ++i) {
-    rgba[4 * i] = rgba[4 * i + 1] = rgba[4 * i + 2] = grey[i];
-    rgba[4 * i + 3] = 255;
-  }
-  return rgba;
-}
-
 // Colour with alpha made opaque: the window shows what is stored, not blended over anything.
 std::vector<std::uint8_t> opaque(std::vector<std::uint8_t> rgba) {
   for (std::size_t i = 3; i < rgba.size(); i += 4) rgba[i] = 255;
@@ -71,8 +61,8 @@ Picture composeView(ViewKind view, const Frame& soft, const Frame& vulkan, const
                                        : onePane(w, h, opaque(soft.rgba), "flicker: " + softLabel);
     case ViewKind::Depth: {
       const auto [lo, hi] = sharedDepthRange(soft, vulkan, scene.clearDepth);
-      return twoPanes(w, h, greyToRgba(depthToGrey(soft.depth, scene.clearDepth, lo, hi)), "depth: " + softLabel,
-                      greyToRgba(depthToGrey(vulkan.depth, scene.clearDepth, lo, hi)), "depth: " + vulkanLabel);
+      return twoPanes(w, h, depthToGrey(soft.depth, scene.clearDepth, lo, hi), "depth: " + softLabel,  // RGBA grey
+                      depthToGrey(vulkan.depth, scene.clearDepth, lo, hi), "depth: " + vulkanLabel);
     }
     case ViewKind::DepthDiff:
       return onePane(w, h, depthDiffHeatmap(soft, vulkan, scene), "depth difference (blue within tolerance, red-yellow over)");

@@ -4,6 +4,8 @@
 // stand-in Display) whose saved scene loads back with the pose it was saved at.
 // The window (SDL2, under Xvfb) is tested by view_cli_test.sh.
 #include "compare/compare.hpp"
+#include "output/artifacts.hpp"
+#include "output/image_io.hpp"
 #include "render/render.hpp"
 #include "scene/scene.hpp"
 #include "view/controls.hpp"
@@ -274,7 +276,19 @@ TEST(ViewPictures, PanesAndFlicker) {
   EXPECT_EQ(side.rgba[4 * scene->width * 4 + 1], soft->rgba[4 * scene->width * 2 + 1]);  // row 2, left pane
   const Picture diff = composeView(ViewKind::Diff, *soft, other, *scene, 0, "exact");
   EXPECT_EQ(diff.rgba, diffHeatmap(*soft, other, *scene));  // the report's colours
-  EXPECT_EQ(composeView(ViewKind::Depth, *soft, other, *scene, 0, "exact").width, 2 * scene->width);
+  const Picture depth = composeView(ViewKind::Depth, *soft, other, *scene, 0, "exact");
+  EXPECT_EQ(depth.width, 2 * scene->width);
+  ASSERT_EQ(depth.rgba.size(), std::size_t{2} * scene->width * scene->height * 4);
+  const auto [lo, hi] = sharedDepthRange(*soft, other, scene->clearDepth);
+  const std::vector<std::uint8_t> grey = depthToGrey(soft->depth, scene->clearDepth, lo, hi);
+  for (std::uint32_t y = 0; y < scene->height; y += 37) {  // the left pane is the softraster depth view, row by row
+    for (std::uint32_t x = 0; x < scene->width; x += 13) {
+      for (int k = 0; k < 4; ++k) {
+        ASSERT_EQ(depth.rgba[(std::size_t{y} * 2 * scene->width + x) * 4 + k], grey[(std::size_t{y} * scene->width + x) * 4 + k])
+            << x << "," << y;
+      }
+    }
+  }
   EXPECT_EQ(composeView(ViewKind::DepthDiff, *soft, other, *scene, 0, "exact").rgba, depthDiffHeatmap(*soft, other, *scene));
   EXPECT_FALSE(flickerShowsVulkan(0));
   EXPECT_FALSE(flickerShowsVulkan(kFlickerFrames - 1));
