@@ -238,9 +238,12 @@ unsigned Viewer::lavapipeThreads() const {
 }
 
 std::string Viewer::summary() const {
-  std::vector<double> soft, vulkan, busy;
+  std::vector<double> soft, vulkan, busy, moving;
   for (const FrameSample& f : samples_) {
-    if (f.poseChanged) continue;  // steady frames only: a new pose also loads and prepares
+    if (f.poseChanged) {  // a new pose also loads the scene and prepares both renderers again
+      moving.push_back(f.frameMs);
+      continue;
+    }
     soft.push_back(f.softMs);
     vulkan.push_back(f.vulkanMs);
     busy.push_back(f.frameMs);
@@ -252,11 +255,13 @@ std::string Viewer::summary() const {
   };
   const double s = median(soft), v = median(vulkan), b = median(busy);
   return format("view: %zu frames (%zu steady) of %s at %ux%u: softraster %s median %.2f ms (%.0f fps, %u thread%s), "
-                "Vulkan median %.2f ms (%.0f fps, %u thread%s), whole frame median %.2f ms (%.0f fps)",
+                "Vulkan median %.2f ms (%.0f fps, %u thread%s), whole frame median %.2f ms (%.0f fps)%s",
                 samples_.size(), soft.size(), options_.scene.filename().string().c_str(), scene_->width, scene_->height,
                 std::string(softraster::methodName(method_)).c_str(), s, s > 0 ? 1e3 / s : 0, softrasterThreads(),
                 softrasterThreads() == 1 ? "" : "s", v, v > 0 ? 1e3 / v : 0, lavapipeThreads(),
-                lavapipeThreads() == 1 ? "" : "s", b, b > 0 ? 1e3 / b : 0);
+                lavapipeThreads() == 1 ? "" : "s", b, b > 0 ? 1e3 / b : 0,
+                moving.empty() ? ""
+                               : format("; %zu frames with a new pose: median %.2f ms", moving.size(), median(moving)).c_str());
 }
 
 Overlay Viewer::overlay() const {

@@ -63,8 +63,10 @@ class Viewer {
   std::vector<std::string> overrides() const;  // --set and the pose's
   std::uint64_t frames() const { return frames_; }
   // "view: N frames (M steady) of SCENE at WxH: softraster METHOD median ... ms (fps, threads),
-  // Vulkan median ..., whole frame median ...": medians over the frames whose pose did not change
-  // (the method is the current one: switch methods mid-run and the medians mix them).
+  // Vulkan median ..., whole frame median ...[; K frames with a new pose: median ... ms]": the
+  // medians over the frames whose pose did not change, then the whole frame's median over those
+  // that loaded and prepared a new pose (the method named is the current one: switch methods
+  // mid-run and the medians mix them).
   std::string summary() const;
 
  private:

@@ -19,7 +19,7 @@ class Window : public Display {
   Window(SDL_Window* window, const CanvasLayout& layout) : window_(window), layout_(layout) {}
   ~Window() override {
     SDL_DestroyWindow(window_);
-    SDL_QuitSubSystem(SDL_INIT_VIDEO);
+    SDL_Quit();  // all of SDL, its D-Bus connection too
   }
 
   KeyInput poll(bool keyboard) override {
