@@ -9,6 +9,9 @@
 #                   the steps the keys say, a screenshot of every view is kept in ARTIFACTS/view/walk_room/,
 #                   and `crosscheck compare` of the saved scenes prints the metrics the viewer printed
 #   light_and_time  under Xvfb: the light keys and time on a lit, spinning look-at scene
+#   saved_difference under Xvfb: a view where the renderers differ (the fmuladd rounding lavapipe
+#                   does not use, on the depth_slope fixture) is saved and compare prints the same
+#                   non-zero metrics
 # Exit 0: passed, 1: failed (with a message), 77: skipped (xvfb-run, python3 or SDL2 missing).
 # Never checks a timing: the machine is shared.
 set -uo pipefail
@@ -268,6 +271,24 @@ assert abs(math.degrees(math.acos(min(1, cos))) - 8) < 1e-9, math.degrees(math.a
 PY
     expected=$(saved_metrics "$artifacts/lit.json")
     got=$(compare_metrics "$artifacts/lit.json") || fail "compare lit.json"
+    [ "$got" = "$expected" ] || fail "compare printed '$got', the viewer '$expected'"
+    ;;
+  saved_difference)
+    need_window
+    case "$(uname -m)" in
+      x86_64 | i?86) if grep -qw fma /proc/cpuinfo; then other_fma=separate; else other_fma=fused; fi ;;
+      aarch64 | arm64) other_fma=separate ;;
+      *) other_fma=fused ;;
+    esac
+    printf 'key Up 3\nsave moved\n' >"$artifacts/moved.txt"
+    run under_xvfb "$crosscheck" view tests/data/conformance/depth_slope.json --softraster-fma "$other_fma" \
+      --script "$artifacts/moved.txt" -o "$artifacts"
+    expect_status 0
+    expected=$(saved_metrics "$artifacts/moved.json")
+    case $expected in
+      *"depth max |Δ| 0") fail "the renderers agree here ('$expected'): nothing different to reproduce" ;;
+    esac
+    got=$(compare_metrics "$artifacts/moved.json" --softraster-fma "$other_fma") || fail "compare moved.json"
     [ "$got" = "$expected" ] || fail "compare printed '$got', the viewer '$expected'"
     ;;
   *)
