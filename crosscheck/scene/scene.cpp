@@ -938,16 +938,21 @@ softraster::Result<std::string> sceneFileText(const std::filesystem::path& path,
     }
     document = std::move(out);
   }
-  // OBJ paths are relative to the scene file: make them relative to where the new one goes.
+  // File paths are relative to the scene file (a draw's "obj", its "texture"'s "file"): make them
+  // relative to where the new one goes.
   if (document.contains("draws") && document["draws"].is_array()) {
     std::error_code error;
     const std::filesystem::path to = std::filesystem::weakly_canonical(std::filesystem::absolute(directory, error), error);
+    const auto rebase = [&](ordered& object, const char* key) {
+      if (!object.is_object() || !object.contains(key) || !object[key].is_string()) return;
+      const std::filesystem::path file = std::filesystem::weakly_canonical(
+          std::filesystem::absolute(path.parent_path() / object[key].get<std::string>(), error), error);
+      const std::filesystem::path relative = file.lexically_relative(to);
+      object[key] = (relative.empty() ? file : relative).generic_string();
+    };
     for (ordered& draw : document["draws"]) {
-      if (!draw.is_object() || !draw.contains("obj") || !draw["obj"].is_string()) continue;
-      const std::filesystem::path obj = std::filesystem::weakly_canonical(
-          std::filesystem::absolute(path.parent_path() / draw["obj"].get<std::string>(), error), error);
-      const std::filesystem::path relative = obj.lexically_relative(to);
-      draw["obj"] = (relative.empty() ? obj : relative).generic_string();
+      rebase(draw, "obj");
+      if (draw.is_object() && draw.contains("texture")) rebase(draw["texture"], "file");
     }
   }
   return sceneLayout(document);

@@ -87,8 +87,9 @@ shaders::DrawParameters drawParameters(const Scene& scene, const Draw& draw);
 softraster::Result<Scene> loadScene(const std::filesystem::path& path, const std::vector<std::string>& overrides = {});
 
 // The scene file's JSON with `overrides` applied as loadScene applies them (keys in the file's
-// order), to be written as a new scene file in `directory`: every draw's "obj" path rewritten
-// relative to `directory`, and "description" replaced by `description` when it is not empty.
+// order), to be written as a new scene file in `directory`: the files a draw names (its "obj",
+// its "texture"'s "file") rewritten relative to `directory`, and "description" replaced by
+// `description` when it is not empty.
 // The text is not checked as a scene (load it to check it); the error is loadScene's one line
 // for a file that cannot be read or parsed, or an override that cannot be applied.
 softraster::Result<std::string> sceneFileText(const std::filesystem::path& path, const std::vector<std::string>& overrides,

@@ -251,6 +251,15 @@ TEST(ViewSceneFile, TheSavedTextIsTheSceneWithTheOverridesAndItsMeshFound) {
   for (int r = 0; r < 4; ++r) {
     for (int c = 0; c < 4; ++c) EXPECT_EQ(saved->viewProjection.at(r, c), direct->viewProjection.at(r, c));
   }
+  // A texture's file moves with the new folder too (the text is not loaded here: only its paths).
+  const std::filesystem::path textured = kArtifacts / "view-unit" / "textured.json";
+  std::ofstream(textured) << R"({"draws": [{"obj": "meshes/a.obj", "texture": {"file": "textures/t.png", "mipmaps": true}}]})";
+  const auto moved = sceneFileText(textured, {}, dir, "");
+  ASSERT_TRUE(moved) << moved.error();
+  const nlohmann::ordered_json texturedDocument = nlohmann::ordered_json::parse(*moved);
+  EXPECT_EQ(texturedDocument["draws"][0]["obj"], "../../meshes/a.obj");
+  EXPECT_EQ(texturedDocument["draws"][0]["texture"]["file"], "../../textures/t.png");
+  EXPECT_EQ(texturedDocument["draws"][0]["texture"]["mipmaps"], true);
   // Errors are loadScene's lines.
   const auto bad = sceneFileText(kScenes / "room.json", {"draws.7.cull=none"}, dir, "");
   ASSERT_FALSE(bad);
