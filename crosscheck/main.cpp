@@ -11,7 +11,8 @@
 //   crosscheck bench [SCENE|DIR ...] [--method all|LIST] [--frames N] [--warmup N] [--threads N] [-o FILE.json]
 //   crosscheck chart BENCH.json [-o CHART.svg]
 //   crosscheck stability [SCENE|DIR ...] [--frames N] [--threads N] [--json FILE]
-// render and compare also take --method NAME (options.hpp kMethods: exact, exact-scalar, scanline, trapezoid,
+//   crosscheck view SCENE [--set KEY.PATH=VALUE ...] [--script FILE] [-o|--screenshots DIR]
+// render, compare and view also take --method NAME (options.hpp kMethods: exact, exact-scalar, scanline, trapezoid,
 // barycentric), --affine (a course method's varyings interpolated affinely) and --threads N (softraster's).
 // Exit status (README, "Exit status"): 0 success / within tolerance / nothing unexpected; 1
 // outside tolerance or an unexpected conformance result; 2 anything that kept the comparison from
@@ -21,6 +22,8 @@
 // (cli/commands.hpp); a parse error is exit status 2 with the usage below, a bad value of a
 // number or method option one error line naming the option, exit status 2.
 #include "cli/commands.hpp"
+#include "view/controls.hpp"
+#include "view/script.hpp"
 
 #include <CLI/CLI.hpp>
 
@@ -72,6 +75,7 @@ constexpr const char* kUsage =
     "       crosscheck bench [SCENE|DIR ...] [--method all|LIST] [--frames N] [--warmup N] [--threads N] [-o FILE.json]\n"
     "       crosscheck chart BENCH.json [-o CHART.svg]\n"
     "       crosscheck stability [SCENE|DIR ...] [--frames N] [--threads N] [--json FILE]\n"
+    "       crosscheck view SCENE [--set KEY.PATH=VALUE ...] [--script FILE] [-o|--screenshots DIR]\n"
     "       (crosscheck SUBCOMMAND --help for every option)";
 
 // softraster's method names, "exact, exact-scalar, ...", for usage and errors.
@@ -88,9 +92,9 @@ struct CommonFlags {
   bool validation = false;
   std::string fma = "auto";
   std::string softrasterDepth = "z";  // render only: "inverse-z" is the course's 1/z buffer
-  std::string method = "exact";       // render and compare: a name of kMethods
+  std::string method = "exact";       // render, compare and view: a name of kMethods
   bool affine = false;                // render and compare: affine varyings (course methods only)
-  std::string threadsText = "0";      // render and compare: softraster's threads, 0 = every core
+  std::string threadsText = "0";      // render, compare and view: softraster's threads, 0 = every core
   unsigned threads = 0;               // threadsText, once checked()
 
   // Checks method and threads; false after printing one error line.
@@ -270,6 +274,29 @@ int main(int argc, char** argv) {
   stabilityCommand->add_option("-o,--output,--json", stability.jsonFile, "Write the results as JSON to this file");
   addDevice(stabilityCommand);
 
+  crosscheck::cli::ViewCommand viewArgs;
+  CLI::App* viewCommand = app.add_subcommand(
+      "view", "A window: the scene rendered live by softraster and Vulkan (lavapipe), compared frame by frame");
+  viewCommand->add_option("SCENE", scenePath, "Scene file")->required();
+  viewCommand->add_option("--script", viewArgs.script, "Keys and frames from FILE instead of the keyboard (format below)");
+  viewCommand->add_option("-o,--output,--screenshots", viewArgs.outDir,
+                          "Folder for screenshots and saved scenes (default out/view)");
+  addCommon(viewCommand);
+  {
+    std::string footer = "\nKeys (one step a frame while held; the status under the picture shows frame times and metrics):\n";
+    for (const std::string& line : crosscheck::view::controlLines()) footer += "  " + line + "\n";
+    char steps[160];
+    std::snprintf(steps, sizeof steps, "Steps a frame: move %g scene units, turn %g degrees, light %g units, time %g s.\n",
+                  crosscheck::view::kMoveStep, crosscheck::view::kTurnStep, crosscheck::view::kLightStep,
+                  crosscheck::view::kTimeStep);
+    footer += steps;
+    footer += "Save as scene writes the scene file with the changed camera, light and time as --set overrides\n"
+              "applied (OBJ paths made relative to the folder) and NAME.soft.png, NAME.vulkan.png, NAME.diff.png.\n\n" +
+              crosscheck::view::scriptHelp() +
+              "Without a display (DISPLAY unset) it is one error line and exit 2; run it under xvfb-run -a for scripts.";
+    viewCommand->footer(footer);
+  }
+
   // CLI11 would call an unknown subcommand "A subcommand is required" or an extra argument.
   if (argc > 1 && argv[1][0] != '-') {
     const std::string name = argv[1];
@@ -277,7 +304,7 @@ int main(int argc, char** argv) {
     for (const CLI::App* sub : app.get_subcommands({})) known = known || sub->get_name() == name;
     if (!known) {
       std::fprintf(stderr, "crosscheck: unknown subcommand '%s' (expected render, compare, conformance, report, merge, "
-                   "bench, chart or stability)\n%s\n",
+                   "bench, chart, stability or view)\n%s\n",
                    name.c_str(), kUsage);
       return 2;
     }
@@ -291,7 +318,11 @@ int main(int argc, char** argv) {
     return 2;
   }
 
-  if ((render->parsed() || compare->parsed()) && !common.checked()) return 2;
+  if ((render->parsed() || compare->parsed() || viewCommand->parsed()) && !common.checked()) return 2;
+  if (viewCommand->parsed()) {
+    viewArgs.options = common.sceneOptions(scenePath);
+    return crosscheck::cli::viewCommand(viewArgs);
+  }
   if (benchCommand->parsed()) {
     const auto frames = wholeNumber("--frames", framesText, 1, 100000);
     if (!frames) return 2;

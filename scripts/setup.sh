@@ -18,6 +18,7 @@ packages=(
   libglm-dev                                # scene matrices (model, normal, camera) in double
   libstb-dev libcli11-dev                   # PNG output, command line
   zlib1g-dev                                # the report's PNGs and pixel data
+  libsdl2-dev                               # crosscheck view's window
 )
 if [ "$job" = tests ]; then
   packages+=(
@@ -25,6 +26,7 @@ if [ "$job" = tests ]; then
     clang                                   # an outside consumer built with Clang too
     chromium libxml2-utils bsdutils         # the report in a browser, JUnit (xmllint), a terminal (script)
     python3                                 # the bench JSON check; the scene generators in scenes/tools/
+    xvfb xauth                              # crosscheck view's window under a virtual X server (xvfb-run)
   )
 fi
 missing=()

@@ -11,6 +11,8 @@
 //                                                               1 a renderer failed or disagrees
 //   chart        a bench JSON as a speed-vs-accuracy SVG        0 written
 //   stability    every stability case x variant, table, JSON    0 exact passes every case, 1 not
+//   view         a window: both renderers live, keys or a       0 closed or the script ended
+//                --script, screenshots and saved scenes
 // 2 is bad usage or a failure to finish everywhere (main.cpp's parse errors; a scene that cannot
 // be loaded, rendered or written; the suite commands' unreadable
 // expectations, shards, folders or output paths; merge's unreadable results or shards that do not
@@ -153,5 +155,12 @@ struct StabilityCommand {
   softraster::ContextOptions softraster;
 };
 int stabilityCommand(const StabilityCommand& command);
+struct ViewCommand {
+  SceneOptions options;
+  std::string script;                   // --script FILE; empty: the keyboard
+  std::string outDir = "out/view";      // screenshots and saved scenes
+};
+// view.cpp; 2 for a bad script, scene, no display or a renderer's or writer's error.
+int viewCommand(const ViewCommand& command);
 
 }  // namespace crosscheck::cli

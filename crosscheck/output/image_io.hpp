@@ -15,7 +15,7 @@ namespace crosscheck {
 softraster::Status writePng(const std::filesystem::path& path, std::uint32_t width, std::uint32_t height,
                             const std::vector<std::uint8_t>& rgba);
 
-// Depth in [lo, hi] to grey levels 0..255 (near is dark); values outside saturate. With lo >= hi
+// Depth in [lo, hi] to grey levels 0..255 as RGBA8 (near is dark); values outside saturate. With lo >= hi
 // the range is taken from the depths that differ from clearDepth.
 std::vector<std::uint8_t> depthToGrey(const std::vector<float>& depth, float clearDepth, float lo, float hi);
 

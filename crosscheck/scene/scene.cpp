@@ -218,7 +218,8 @@ const shaders::ShadingModel* readShadingModel(const json& d, const std::string& 
   throw SceneError(placeOf(place, "shading"), "'" + name + "' is not one of " + list);
 }
 
-CameraMatrices readCamera(const json& camera, const std::string& place, int width, int height) {
+// The camera's settings (its type and parameters, defaults filled in) and its matrices.
+CameraMatrices readCamera(const json& camera, const std::string& place, int width, int height, CameraSettings& settings) {
   const std::string type = readString(camera, "type", place, "pinhole");
   if (type == "pinhole") {
     checkKeys(camera, place, {"type", "position", "yaw", "pitch", "focal_length", "near", "far"});
@@ -231,6 +232,8 @@ CameraMatrices readCamera(const json& camera, const std::string& place, int widt
     c.farPlane = readNumber(camera, "far", place, c.farPlane);
     if (!(c.focalLengthPixels > 0)) throw SceneError(placeOf(place, "focal_length"), "must be positive");
     if (!(c.nearPlane > 0 && c.farPlane > c.nearPlane)) throw SceneError(place, "needs 0 < near < far");
+    settings.type = CameraSettings::Type::Pinhole;
+    settings.pinhole = c;
     return cameraMatrices(c, width, height);
   }
   if (type == "look_at") {
@@ -251,10 +254,13 @@ CameraMatrices readCamera(const json& camera, const std::string& place, int widt
     if (!(glm::length(glm::cross(forward, up)) > 1e-9 * glm::length(forward) * glm::length(up))) {
       throw SceneError(placeOf(place, "up"), "is zero or parallel to the view direction (target - eye)");
     }
+    settings.type = CameraSettings::Type::LookAt;
+    settings.lookAt = c;
     return cameraMatrices(c, width, height);
   }
   if (type == "clip_space") {  // positions are clip coordinates (w = 1): exact control of window positions
     checkKeys(camera, place, {"type"});
+    settings.type = CameraSettings::Type::ClipSpace;
     return {};
   }
   throw SceneError(placeOf(place, "type"), "'" + type + "' is not one of pinhole, look_at, clip_space");
@@ -496,7 +502,7 @@ Draw readDrawMesh(const json& d, const std::string& place, const std::filesystem
 // "transform": the object-to-world matrix M = T * Rz * Ry * Rx * S (scale first, then rotations
 // about x, y and z, then translation; angles in degrees, right-handed about the scene's axes,
 // "rotate" plus "spin" times the scene's time).
-glm::dmat4 readTransform(const json& t, const std::string& place, double time) {
+glm::dmat4 readTransform(const json& t, const std::string& place, double time, bool& spins) {
   checkKeys(t, place, {"scale", "rotate", "spin", "translate"});
   glm::dvec3 scale(1.0);
   if (t.contains("scale")) {
@@ -514,6 +520,7 @@ glm::dmat4 readTransform(const json& t, const std::string& place, double time) {
                    translate[1], translate[2]}) {
     if (!std::isfinite(v)) throw SceneError(place, "every value must be finite");
   }
+  spins = spin[0] != 0 || spin[1] != 0 || spin[2] != 0;
   glm::dmat4 m = glm::translate(glm::dmat4(1.0), glm::dvec3(translate[0], translate[1], translate[2]));
   const glm::dvec3 axes[3] = {{0, 0, 1}, {0, 1, 0}, {1, 0, 0}};
   for (int k = 0; k < 3; ++k) {  // z, then y, then x: applied to a point in the order x, y, z
@@ -659,7 +666,7 @@ void readTexcoords(const json& d, const std::string& place, Draw& draw, bool hav
 Draw readDraw(const json& d, const std::string& place, const std::filesystem::path& sceneDir, double time,
               TextureCache& textures) {
   Draw draw = readDrawMesh(d, place, sceneDir);
-  if (d.contains("transform")) draw.model = readTransform(d["transform"], placeOf(place, "transform"), time);
+  if (d.contains("transform")) draw.model = readTransform(d["transform"], placeOf(place, "transform"), time, draw.spins);
   if (d.contains("material")) draw.material = readMaterial(d["material"], placeOf(place, "material"));
   if ((draw.shading->meshInputs & shaders::kReadsTexcoords) != 0) {  // before normals: flat ones rewrite the mesh
     readTexcoords(d, place, draw, !draw.mesh.texcoords.empty());
@@ -795,15 +802,17 @@ std::string overrideFormError(const std::string& assignment) {
   return "";
 }
 
-// Applies "a.b.c=value" to the JSON document; value is JSON, or a plain string if it is not.
-void applyOverride(json& document, const std::string& assignment) {
+// Applies "a.b.c=value" to the JSON document (json, or ordered_json for sceneFileText); value is
+// JSON, or a plain string if it is not.
+template <class Json>
+void applyOverride(Json& document, const std::string& assignment) {
   if (const std::string error = overrideFormError(assignment); !error.empty()) throw SceneError("--set " + assignment, error);
   const auto equals = assignment.find('=');
   const std::string key = assignment.substr(0, equals);
   const std::string text = assignment.substr(equals + 1);
-  json value = json::parse(text, nullptr, false);
+  Json value = Json::parse(text, nullptr, false);
   if (value.is_discarded()) value = text;
-  json* node = &document;
+  Json* node = &document;
   std::stringstream parts(key);
   std::string part;
   while (std::getline(parts, part, '.')) {
@@ -818,7 +827,7 @@ void applyOverride(json& document, const std::string& assignment) {
       if (index >= node->size()) throw SceneError("--set " + assignment, "index " + part + " is out of range");
       node = &(*node)[index];
     } else {
-      if (!node->is_object()) *node = json::object();
+      if (!node->is_object()) *node = Json::object();
       node = &(*node)[part];
     }
   }
@@ -850,7 +859,7 @@ Scene readScene(json& document, const std::filesystem::path& path, const std::ve
   }
 
   scene.camera = readCamera(document.contains("camera") ? document["camera"] : json::object(), "/camera",
-                            static_cast<int>(scene.width), static_cast<int>(scene.height));
+                            static_cast<int>(scene.width), static_cast<int>(scene.height), scene.cameraSettings);
   scene.viewProjection = roundedToFloat(scene.camera.projection * scene.camera.view);
   if (!isFinite(scene.viewProjection)) {
     throw SceneError("/camera", "its matrices are not finite in float (a value too large for the camera's maths)");
@@ -938,25 +947,77 @@ softraster::Status checkOverride(const std::string& assignment) {
   return softraster::Status::error("--set " + assignment + ": " + error);
 }
 
-softraster::Result<Scene> loadScene(const std::filesystem::path& path, const std::vector<std::string>& overrides) {
+namespace {
+
+// nlohmann's messages start "[json.exception.parse_error.101] "; the rest is the one line.
+std::string withoutId(const json::exception& e) {
+  const std::string message = e.what();
+  const auto end = message.find("] ");
+  return message.rfind("[json.exception.", 0) == 0 && end != std::string::npos ? message.substr(end + 2) : message;
+}
+
+// The scene file parsed as JSON (json, or ordered_json to write it back in its own order); the
+// error is "FILE: what is wrong".
+template <class Json>
+softraster::Result<Json> parseSceneFile(const std::filesystem::path& path) {
   using softraster::Status;
   if (const Status readable = checkInputFile(path); !readable) {
     return Status::error(path.string() + ": cannot open scene file: " + readable.message());
   }
   std::ifstream file(path);
   if (!file) return Status::error(path.string() + ": cannot open scene file");
-  // nlohmann's messages start "[json.exception.parse_error.101] "; the rest is the one line.
-  const auto withoutId = [](const json::exception& e) {
-    const std::string message = e.what();
-    const auto end = message.find("] ");
-    return message.rfind("[json.exception.", 0) == 0 && end != std::string::npos ? message.substr(end + 2) : message;
-  };
-  json document;
   try {
-    document = json::parse(file);  // parse_error: "parse error at line 3, column 5: ..."; out_of_range: 1e400
+    return Json::parse(file);  // parse_error: "parse error at line 3, column 5: ..."; out_of_range: 1e400
   } catch (const json::exception& e) {
     return Status::error(path.string() + ": " + withoutId(e));
   }
+}
+
+// JSON on one line with a space after each ',' and ':' (the scene files' own style for values).
+std::string oneLine(const nlohmann::ordered_json& value) {
+  if (value.is_object()) {
+    std::string out = "{ ";
+    bool first = true;
+    for (const auto& [key, item] : value.items()) {
+      out += (first ? "" : ", ") + nlohmann::ordered_json(key).dump() + ": " + oneLine(item);
+      first = false;
+    }
+    return first ? "{}" : out + " }";
+  }
+  if (value.is_array()) {
+    std::string out = "[";
+    for (std::size_t i = 0; i < value.size(); ++i) out += (i ? ", " : "") + oneLine(value[i]);
+    return out + "]";
+  }
+  return value.dump();  // numbers as nlohmann writes them: the shortest text that reads back the same double
+}
+
+// A scene document as the scene files are laid out: one top-level field per line, one draw per line.
+std::string sceneLayout(const nlohmann::ordered_json& document) {
+  if (!document.is_object()) return oneLine(document) + "\n";
+  std::string out = "{\n";
+  std::size_t i = 0;
+  for (const auto& [key, value] : document.items()) {
+    out += "  " + nlohmann::ordered_json(key).dump() + ": ";
+    if (key == "draws" && value.is_array() && !value.empty()) {
+      out += "[\n";
+      for (std::size_t d = 0; d < value.size(); ++d) out += "    " + oneLine(value[d]) + (d + 1 < value.size() ? ",\n" : "\n");
+      out += "  ]";
+    } else {
+      out += oneLine(value);
+    }
+    out += ++i < document.size() ? ",\n" : "\n";
+  }
+  return out + "}\n";
+}
+
+}  // namespace
+
+softraster::Result<Scene> loadScene(const std::filesystem::path& path, const std::vector<std::string>& overrides) {
+  using softraster::Status;
+  auto parsed = parseSceneFile<json>(path);
+  if (!parsed) return parsed.status();
+  json& document = *parsed;
   try {
     return readScene(document, path, overrides);
   } catch (const SceneError& e) {
@@ -968,6 +1029,49 @@ softraster::Result<Scene> loadScene(const std::filesystem::path& path, const std
   } catch (const std::exception& e) {
     return Status::error(path.string() + ": " + e.what());
   }
+}
+
+softraster::Result<std::string> sceneFileText(const std::filesystem::path& path, const std::vector<std::string>& overrides,
+                                              const std::filesystem::path& directory, const std::string& description) {
+  using softraster::Status;
+  using ordered = nlohmann::ordered_json;
+  auto parsed = parseSceneFile<ordered>(path);
+  if (!parsed) return parsed.status();
+  ordered document = std::move(*parsed);
+  try {
+    for (const std::string& assignment : overrides) applyOverride(document, assignment);
+  } catch (const SceneError& e) {
+    return Status::error(path.string() + ": " + (e.place.empty() ? "/" : e.place) + ": " + e.what());
+  } catch (const json::exception& e) {
+    return Status::error(path.string() + ": " + withoutId(e));
+  }
+  if (!document.is_object()) return Status::error(path.string() + ": /: expected an object");
+  if (!description.empty()) {
+    ordered out = ordered::object();  // the description first, as every scene file has it
+    out["description"] = description;
+    for (auto& [key, value] : document.items()) {
+      if (key != "description") out[key] = std::move(value);
+    }
+    document = std::move(out);
+  }
+  // File paths are relative to the scene file (a draw's "obj", its "texture"'s "file"): make them
+  // relative to where the new one goes.
+  if (document.contains("draws") && document["draws"].is_array()) {
+    std::error_code error;
+    const std::filesystem::path to = std::filesystem::weakly_canonical(std::filesystem::absolute(directory, error), error);
+    const auto rebase = [&](ordered& object, const char* key) {
+      if (!object.is_object() || !object.contains(key) || !object[key].is_string()) return;
+      const std::filesystem::path file = std::filesystem::weakly_canonical(
+          std::filesystem::absolute(path.parent_path() / object[key].get<std::string>(), error), error);
+      const std::filesystem::path relative = file.lexically_relative(to);
+      object[key] = (relative.empty() ? file : relative).generic_string();
+    };
+    for (ordered& draw : document["draws"]) {
+      rebase(draw, "obj");
+      if (draw.is_object() && draw.contains("texture")) rebase(draw["texture"], "file");
+    }
+  }
+  return sceneLayout(document);
 }
 
 }  // namespace crosscheck

@@ -42,6 +42,7 @@ struct Draw {
   float pointSize = 1.0f;               // the shader's gl_PointSize (a uniform)
   std::vector<std::uint32_t> indices;
   glm::dmat4 model{1.0};                // object -> world: "transform" at the scene's time
+  bool spins = false;                   // "transform.spin" is not zero: the draw moves with the time
   shaders::Material material;           // what the lit models read beyond the vertex colours
   // What a textured model samples ("texture", then "normal_map"): the texture (shared by draws
   // naming the same file, format and mip choice) and the sampler. Empty for models that sample nothing.
@@ -59,6 +60,15 @@ struct SceneLight {
   std::array<double, 3> colour{1, 1, 1};    // Phong's light colour
 };
 
+// The camera as the scene file states it, defaults filled in: what `Scene::camera` was computed
+// from, and what a tool edits (crosscheck view) to write the same change back as --set overrides.
+struct CameraSettings {
+  enum class Type { Pinhole, LookAt, ClipSpace };
+  Type type = Type::Pinhole;
+  PinholeCamera pinhole;  // for Type::Pinhole
+  LookAtCamera lookAt;    // for Type::LookAt
+};
+
 struct Scene {
   std::filesystem::path path;
   std::string description;
@@ -68,6 +78,7 @@ struct Scene {
   softraster::DepthFormat depthFormat = softraster::DepthFormat::D32Sfloat;
   std::uint32_t samples = 1;  // 1 or 4 (MSAA: compared after the resolve; depth via sample 0)
   CameraMatrices camera;      // view and projection, double precision
+  CameraSettings cameraSettings;  // what the file says `camera` is made from
   softraster::Mat4 viewProjection = softraster::Mat4::identity();  // projection * view, rounded once
   double time = 0;            // drives each draw's "spin"
   SceneLight light;
@@ -83,6 +94,15 @@ shaders::DrawParameters drawParameters(const Scene& scene, const Draw& draw);
 // file's JSON before it is read (e.g. "camera.yaw=90"). The error is one line:
 // "FILE: PLACE: what is wrong".
 softraster::Result<Scene> loadScene(const std::filesystem::path& path, const std::vector<std::string>& overrides = {});
+
+// The scene file's JSON with `overrides` applied as loadScene applies them (keys in the file's
+// order), to be written as a new scene file in `directory`: the files a draw names (its "obj",
+// its "texture"'s "file") rewritten relative to `directory`, and "description" replaced by
+// `description` when it is not empty.
+// The text is not checked as a scene (load it to check it); the error is loadScene's one line
+// for a file that cannot be read or parsed, or an override that cannot be applied.
+softraster::Result<std::string> sceneFileText(const std::filesystem::path& path, const std::vector<std::string>& overrides,
+                                              const std::filesystem::path& directory, const std::string& description);
 
 // Whether `assignment` has the KEY.PATH=VALUE form (before any scene is read, so a suite run can
 // refuse a malformed --set at once); the error is "--set ASSIGNMENT: what is wrong".

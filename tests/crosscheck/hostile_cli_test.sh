@@ -82,7 +82,7 @@ case $case_name in
   bad_arguments)
     run frobnicate scenes/room.json
     expect_status 2
-    grep -qE "^crosscheck: unknown subcommand 'frobnicate' \(expected render, compare, conformance, report, merge, bench, chart or stability\)$" \
+    grep -qE "^crosscheck: unknown subcommand 'frobnicate' \(expected render, compare, conformance, report, merge, bench, chart, stability or view\)$" \
       "$artifacts/err.txt" || fail "unknown subcommand not named"
     run render "$room" --renderer soft -o "$artifacts/x.png" --depth-out "$artifacts/d.png" --depth-range nan nan
     expect_status 2
