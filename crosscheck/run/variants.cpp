@@ -121,6 +121,12 @@ std::vector<Variant> chartVariants(const softraster::ContextOptions& base) {
       v.options.depthMode = depth;
       variants.push_back(std::move(v));
     }
+    if (softraster::isCourseMethod(method)) {  // the course's cheaper varyings: affine, not perspective-correct
+      Variant v{std::string(softraster::methodName(method)) + " affine", base};
+      v.options.method = method;
+      v.options.affineVaryings = true;
+      variants.push_back(std::move(v));
+    }
   }
   return variants;
 }
@@ -132,6 +138,7 @@ Scene hitCountScene(const Scene& scene) {
   constexpr float kStep = 1.0f / 255.0f;
   for (Draw& draw : counting.draws) {
     draw.shading = constant;
+    draw.textures.clear();  // the constant model samples nothing
     draw.mesh.colours.assign(draw.mesh.positions.size(), softraster::Vec4{kStep, kStep, kStep, kStep});
     draw.state.depth.testEnable = false;
     draw.state.depth.writeEnable = false;

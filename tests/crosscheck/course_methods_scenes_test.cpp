@@ -27,7 +27,7 @@ class CourseSceneDrawn : public ::testing::TestWithParam<std::string> {};
 }  // namespace
 
 TEST_P(CourseSceneDrawn, WithEveryMethod) {
-  const auto scene = crosscheck::loadScene(kScenes / (GetParam() + ".json"));
+  const auto scene = crosscheck::loadScene(conformanceScenePath(GetParam()));
   ASSERT_TRUE(scene) << scene.error();
   softraster::ContextOptions exactOptions;
   exactOptions.method = softraster::Method::ExactScalar;

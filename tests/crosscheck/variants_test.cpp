@@ -16,15 +16,25 @@ using namespace crosscheck;
 
 const std::filesystem::path kScenes = SCENES_DIR;
 
-TEST(Variants, OnePerMethodAndDepthMode) {
+TEST(Variants, OnePerMethodAndDepthModeAndAffineForTheCourseMethods) {
   const auto variants = chartVariants();
-  ASSERT_EQ(variants.size(), 2 * softraster::kMethods.size());
+  std::size_t course = 0;
+  for (softraster::Method m : softraster::kMethods) course += softraster::isCourseMethod(m) ? 1 : 0;
+  ASSERT_EQ(variants.size(), 2 * softraster::kMethods.size() + course);
   EXPECT_EQ(variants[0].label, "exact");
   EXPECT_EQ(variants[1].label, "exact 1/z");
-  for (std::size_t i = 0; i < softraster::kMethods.size(); ++i) {
-    EXPECT_EQ(variants[2 * i].options.method, softraster::kMethods[i]);
-    EXPECT_EQ(variants[2 * i].options.depthMode, softraster::DepthMode::Vulkan);
-    EXPECT_EQ(variants[2 * i + 1].options.depthMode, softraster::DepthMode::InverseZ);
+  std::size_t at = 0;
+  for (softraster::Method m : softraster::kMethods) {
+    EXPECT_EQ(variants[at].options.method, m);
+    EXPECT_EQ(variants[at].options.depthMode, softraster::DepthMode::Vulkan);
+    EXPECT_FALSE(variants[at].options.affineVaryings);
+    EXPECT_EQ(variants[at + 1].options.depthMode, softraster::DepthMode::InverseZ);
+    at += 2;
+    if (softraster::isCourseMethod(m)) {
+      EXPECT_EQ(variants[at].label, std::string(softraster::methodName(m)) + " affine");
+      EXPECT_TRUE(variants[at].options.affineVaryings);
+      ++at;
+    }
   }
 }
 

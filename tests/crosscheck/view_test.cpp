@@ -379,8 +379,10 @@ TEST(ViewLoop, ScriptedWalkThroughTheRoomSavesTheSceneItShows) {
                        "|\xCE\x94| 0; --set camera.position="),
             std::string::npos)
       << lines;
-  // The saved scene cross-checks as the viewer showed it.
-  const auto soft = renderSoftraster(*saved);
+  // The saved scene cross-checks as the viewer showed it, with the method the viewer ended on.
+  softraster::ContextOptions shownWith;
+  shownWith.method = (*viewer)->method();
+  const auto soft = renderSoftraster(*saved, shownWith);
   const auto reference = renderVulkan(*saved, **vulkan);
   ASSERT_TRUE(soft && reference);
   const Comparison c = compareFrames(*soft, *reference, *saved);

@@ -16,6 +16,7 @@ std::span<const ShadingModel> shadingModels() {
       ShadingModel row;
       row.name = m.name;
       row.meshInputs = m.meshInputs;
+      row.textures = m.textures;
       rows.push_back(row);
     }
     return rows;

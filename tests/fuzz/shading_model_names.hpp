@@ -1,4 +1,4 @@
-// The shading models' names and mesh inputs as the fuzz build's stand-in for the real table
+// The shading models' names, mesh inputs and texture counts as the fuzz build's stand-in for the real table
 // (shaders/shading_models.cpp), whose rows instantiate every twin's draw code and take minutes
 // to compile: the scene loader only looks a model up by name and asks what its mesh must hold.
 // shading_model_names_test.cpp checks in the default build that this list is the real table's.
@@ -14,6 +14,7 @@ namespace fuzz {
 struct ShadingModelName {
   std::string_view name;
   unsigned meshInputs;
+  unsigned textures = 0;  // the textures the model samples ("texture", then "normal_map")
 };
 
 inline constexpr ShadingModelName kShadingModelNames[] = {
@@ -27,6 +28,9 @@ inline constexpr ShadingModelName kShadingModelNames[] = {
     {"phong_pixel", shaders::kReadsNormals},
     {"blinn_phong_vertex", shaders::kReadsNormals},
     {"blinn_phong_pixel", shaders::kReadsNormals},
+    {"textured", shaders::kReadsTexcoords, 1},
+    {"blinn_phong_textured", shaders::kReadsNormals | shaders::kReadsTexcoords, 1},
+    {"blinn_phong_normal_mapped", shaders::kReadsNormals | shaders::kReadsTexcoords | shaders::kReadsTangents, 2},
 };
 
 }  // namespace fuzz

@@ -14,5 +14,6 @@ TEST(FuzzShadingModelNames, AreTheRealTable) {
   for (std::size_t i = 0; i < real.size(); ++i) {
     EXPECT_EQ(real[i].name, fuzz::kShadingModelNames[i].name) << i;
     EXPECT_EQ(real[i].meshInputs, fuzz::kShadingModelNames[i].meshInputs) << real[i].name;
+    EXPECT_EQ(real[i].textures, fuzz::kShadingModelNames[i].textures) << real[i].name;
   }
 }
