@@ -22,6 +22,8 @@
 // also compiled with `#pragma clang fp contract(off)`, whatever the flags.
 // The course's rasterization methods (Method::Scanline, Trapezoid, Barycentric: options.hpp,
 // detail/course/) take the same loop with their own triangle setup, coverage and interpolation.
+// A shader that samples textures (texture.hpp, kQuads) is shaded in 2x2 quads on both exact
+// paths, so its derivatives are lavapipe's.
 // Deliberately absent: MSAA lines, points and polygon modes, depth bias in polygon modes,
 // dual-source blending (each a later issue).
 #pragma once
