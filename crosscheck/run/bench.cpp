@@ -4,6 +4,7 @@
 
 #include "compare/compare.hpp"
 #include "render/render.hpp"
+#include "run/timing.hpp"
 
 #include <algorithm>
 #include <chrono>
@@ -18,18 +19,9 @@
 namespace crosscheck {
 namespace {
 
-using Clock = std::chrono::steady_clock;
-
-double millisecondsSince(Clock::time_point start) {
-  return std::chrono::duration<double, std::milli>(Clock::now() - start).count();
-}
-
-double median(std::vector<double> values) {
-  if (values.empty()) return 0;
-  std::sort(values.begin(), values.end());
-  const std::size_t n = values.size();
-  return n % 2 ? values[n / 2] : (values[n / 2 - 1] + values[n / 2]) / 2;
-}
+using timing::Clock;
+using timing::millisecondsSince;
+using timing::median;
 
 std::string cpuModel() {
   std::ifstream cpuinfo("/proc/cpuinfo");

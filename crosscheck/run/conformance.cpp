@@ -7,6 +7,7 @@
 #include "results/results_json.hpp"
 #include "run/variants.hpp"
 #include "run/worker_processes.hpp"
+#include "run/timing.hpp"
 
 #include <nlohmann/json.hpp>
 
@@ -22,7 +23,7 @@
 namespace crosscheck {
 namespace {
 
-using Clock = std::chrono::steady_clock;
+using timing::Clock;
 
 // One worker's Vulkan renderer, opened when the worker starts (so no scene's time includes it);
 // a failure to open is remembered, and every scene of this worker reports it.
@@ -35,9 +36,7 @@ struct VulkanSlot {
   }
 };
 
-double millisecondsSince(Clock::time_point start) {
-  return std::chrono::duration<double, std::milli>(Clock::now() - start).count();
-}
+using timing::millisecondsSince;
 
 // Renders and compares one scene; returns Pass, Fail or Crash (with result.error set). Each step's
 // wall time goes into result.timings as it ends, so a step that fails is timed too.

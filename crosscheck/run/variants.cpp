@@ -2,6 +2,7 @@
 #include "run/variants.hpp"
 
 #include "compare/compare.hpp"
+#include "run/timing.hpp"
 
 #include <algorithm>
 #include <bit>
@@ -12,18 +13,9 @@
 namespace crosscheck {
 namespace {
 
-using Clock = std::chrono::steady_clock;
-
-double millisecondsSince(Clock::time_point start) {
-  return std::chrono::duration<double, std::milli>(Clock::now() - start).count();
-}
-
-double median(std::vector<double> values) {
-  if (values.empty()) return 0;
-  std::sort(values.begin(), values.end());
-  const std::size_t n = values.size();
-  return n % 2 ? values[n / 2] : (values[n / 2 - 1] + values[n / 2]) / 2;
-}
+using timing::Clock;
+using timing::millisecondsSince;
+using timing::median;
 
 std::uint64_t differingPixels(const Frame& a, const Frame& b) {
   if (a.rgba.size() != b.rgba.size()) return std::max(a.rgba.size(), b.rgba.size()) / 4;

@@ -127,7 +127,7 @@ void toTransferSource(VkCommandBuffer cmd, const Targets& t) {
 
 VkImageMemoryBarrier2 imageBarrier(VkImage image, VkImageAspectFlags aspect, VkPipelineStageFlags2 srcStage,
                                    VkAccessFlags2 srcAccess, VkPipelineStageFlags2 dstStage, VkAccessFlags2 dstAccess,
-                                   VkImageLayout from, VkImageLayout to) {
+                                   VkImageLayout from, VkImageLayout to, std::uint32_t levels) {
   return {.sType = VK_STRUCTURE_TYPE_IMAGE_MEMORY_BARRIER_2,
           .srcStageMask = srcStage,
           .srcAccessMask = srcAccess,
@@ -138,7 +138,7 @@ VkImageMemoryBarrier2 imageBarrier(VkImage image, VkImageAspectFlags aspect, VkP
           .srcQueueFamilyIndex = VK_QUEUE_FAMILY_IGNORED,
           .dstQueueFamilyIndex = VK_QUEUE_FAMILY_IGNORED,
           .image = image,
-          .subresourceRange = {aspect, 0, 1, 0, 1}};
+          .subresourceRange = {aspect, 0, levels, 0, 1}};
 }
 
 void barrier(VkCommandBuffer cmd, std::span<const VkImageMemoryBarrier2> images, const VkMemoryBarrier2* memory) {

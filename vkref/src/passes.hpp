@@ -52,10 +52,10 @@ struct FramePass {
 // The command buffer may be submitted again and again: each submission clears and draws anew.
 softraster::Status recordRenderPass(VkCommandBuffer cmd, const FramePass& pass);
 
-// An image memory barrier on the whole of a single-level, single-layer image.
+// An image memory barrier on the whole of a single-layer image of `levels` mip levels.
 VkImageMemoryBarrier2 imageBarrier(VkImage image, VkImageAspectFlags aspect, VkPipelineStageFlags2 srcStage,
                                    VkAccessFlags2 srcAccess, VkPipelineStageFlags2 dstStage, VkAccessFlags2 dstAccess,
-                                   VkImageLayout from, VkImageLayout to);
+                                   VkImageLayout from, VkImageLayout to, std::uint32_t levels = 1);
 void barrier(VkCommandBuffer cmd, std::span<const VkImageMemoryBarrier2> images,
              const VkMemoryBarrier2* memory = nullptr);
 

@@ -70,18 +70,10 @@ Status upload(const Device& device, std::span<const softraster::Texture* const> 
   }
   for (std::size_t t = 0; t < textures.size(); ++t) {
     const softraster::Texture& texture = *textures[t];
-    const VkImageSubresourceRange all{VK_IMAGE_ASPECT_COLOR_BIT, 0, texture.levels(), 0, 1};
-    VkImageMemoryBarrier2 toCopy{.sType = VK_STRUCTURE_TYPE_IMAGE_MEMORY_BARRIER_2,
-                                 .srcStageMask = VK_PIPELINE_STAGE_2_NONE,
-                                 .srcAccessMask = VK_ACCESS_2_NONE,
-                                 .dstStageMask = VK_PIPELINE_STAGE_2_COPY_BIT,
-                                 .dstAccessMask = VK_ACCESS_2_TRANSFER_WRITE_BIT,
-                                 .oldLayout = VK_IMAGE_LAYOUT_UNDEFINED,
-                                 .newLayout = VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL,
-                                 .srcQueueFamilyIndex = VK_QUEUE_FAMILY_IGNORED,
-                                 .dstQueueFamilyIndex = VK_QUEUE_FAMILY_IGNORED,
-                                 .image = images[t].handle(),
-                                 .subresourceRange = all};
+    const VkImageMemoryBarrier2 toCopy =
+        imageBarrier(images[t].handle(), VK_IMAGE_ASPECT_COLOR_BIT, VK_PIPELINE_STAGE_2_NONE, VK_ACCESS_2_NONE,
+                     VK_PIPELINE_STAGE_2_COPY_BIT, VK_ACCESS_2_TRANSFER_WRITE_BIT, VK_IMAGE_LAYOUT_UNDEFINED,
+                     VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, texture.levels());
     barrier(cmd, std::span(&toCopy, 1));
     std::vector<VkBufferImageCopy> regions;
     VkDeviceSize offset = offsets[t];
@@ -94,13 +86,11 @@ Status upload(const Device& device, std::span<const softraster::Texture* const> 
     }
     vkCmdCopyBufferToImage(cmd, staging.handle(), images[t].handle(), VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL,
                            static_cast<std::uint32_t>(regions.size()), regions.data());
-    VkImageMemoryBarrier2 toSample = toCopy;
-    toSample.srcStageMask = VK_PIPELINE_STAGE_2_COPY_BIT;
-    toSample.srcAccessMask = VK_ACCESS_2_TRANSFER_WRITE_BIT;
-    toSample.dstStageMask = VK_PIPELINE_STAGE_2_FRAGMENT_SHADER_BIT;
-    toSample.dstAccessMask = VK_ACCESS_2_SHADER_SAMPLED_READ_BIT;
-    toSample.oldLayout = VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL;
-    toSample.newLayout = VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL;
+    const VkImageMemoryBarrier2 toSample =
+        imageBarrier(images[t].handle(), VK_IMAGE_ASPECT_COLOR_BIT, VK_PIPELINE_STAGE_2_COPY_BIT,
+                     VK_ACCESS_2_TRANSFER_WRITE_BIT, VK_PIPELINE_STAGE_2_FRAGMENT_SHADER_BIT,
+                     VK_ACCESS_2_SHADER_SAMPLED_READ_BIT, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL,
+                     VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL, texture.levels());
     barrier(cmd, std::span(&toSample, 1));
   }
   status = check(vkEndCommandBuffer(cmd), "vkEndCommandBuffer");
