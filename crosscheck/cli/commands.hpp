@@ -34,6 +34,7 @@
 #include <cstddef>
 #include <cstdio>
 #include <filesystem>
+#include <fstream>
 #include <functional>
 #include <string>
 #include <string_view>
@@ -52,6 +53,15 @@ inline int failWith(const softraster::Status& status) { return failWith(status.m
 // A renderer's error about the scene ("vulkan: draw 0: ..."), with the scene file named first.
 inline int failIn(const std::filesystem::path& scene, const softraster::Status& status) {
   return failWith(scene.string() + ": " + status.message());
+}
+
+// Whether `file` can be written, proven before a long run: its folder made, the file opened to
+// append (so an existing one is not emptied yet) and not a directory.
+inline bool canWrite(const std::string& file) {
+  const std::filesystem::path path(file);
+  std::error_code ec;
+  if (path.has_parent_path()) std::filesystem::create_directories(path.parent_path(), ec);
+  return !std::filesystem::is_directory(path, ec) && static_cast<bool>(std::ofstream(path, std::ios::app));
 }
 
 // Options the single-scene commands share.

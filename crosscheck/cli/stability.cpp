@@ -19,13 +19,8 @@ int stabilityCommand(const StabilityCommand& command) {
   const auto suite = collectScenes(command.inputs.empty() ? std::vector<std::string>{std::string(kDefaultStabilitySceneDir)}
                                                           : command.inputs);
   if (!suite) return failWith(suite.error());
-  if (!command.jsonFile.empty()) {  // proven writable before the run (opened to append: not emptied yet)
-    const std::filesystem::path path(command.jsonFile);
-    std::error_code ec;
-    if (path.has_parent_path()) std::filesystem::create_directories(path.parent_path(), ec);
-    if (std::filesystem::is_directory(path, ec) || !std::ofstream(path, std::ios::app)) {
-      return failWith(command.jsonFile + ": cannot write this file");
-    }
+  if (!command.jsonFile.empty() && !canWrite(command.jsonFile)) {  // proven before the run
+    return failWith(command.jsonFile + ": cannot write this file");
   }
   StabilityOptions options;
   options.frames = command.frames;
