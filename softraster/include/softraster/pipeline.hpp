@@ -36,6 +36,7 @@
 #include <softraster/detail/exact/draw.hpp>
 #include <softraster/detail/exact/scratch.hpp>
 #include <softraster/detail/fast/fragments.hpp>
+#include <softraster/detail/instruction_set.hpp>
 #include <softraster/framebuffer.hpp>
 #include <softraster/limits.hpp>
 #include <softraster/options.hpp>
@@ -239,7 +240,7 @@ class Context {
   // library call (it is only taken where the CPU has FMA; results are the same either way).
   template <class Shader, DepthFormat Format>
 #if defined(__x86_64__) && defined(__GNUC__)
-  [[gnu::target("fma"), gnu::flatten]]
+  [[gnu::target("fma"), SOFTRASTER_FLATTEN]]
 #endif
   void drawFused(const PipelineState& state, const typename Shader::Uniforms& uniforms,
                  std::span<const typename Shader::Vertex> vertices, std::span<const std::uint32_t> indices,
@@ -261,7 +262,7 @@ class Context {
 
   template <class Shader, DepthFormat Format>
 #if defined(__x86_64__) && defined(__GNUC__)
-  [[gnu::target("fma"), gnu::flatten]]
+  [[gnu::target("fma"), SOFTRASTER_FLATTEN]]
 #endif
   void drawCourseFused(const PipelineState& state, const typename Shader::Uniforms& uniforms,
                        std::span<const typename Shader::Vertex> vertices, std::span<const std::uint32_t> indices,
@@ -273,7 +274,7 @@ class Context {
   // The fast path: the same draw loop with the SIMD fragment stage, compiled for AVX2 and FMA and
   // flattened so the shader's batch code becomes AVX2 code (simd.hpp says why that works).
   template <class Shader, DepthFormat Format>
-  [[gnu::target("avx2,fma"), gnu::flatten]]
+  [[gnu::target("avx2,fma"), SOFTRASTER_FLATTEN]]
   void drawFast(const PipelineState& state, const typename Shader::Uniforms& uniforms,
                 std::span<const typename Shader::Vertex> vertices, std::span<const std::uint32_t> indices,
                 Framebuffer& framebuffer, detail::DrawScratch& scratch) const {

@@ -26,6 +26,7 @@
 #pragma once
 
 #include <softraster/detail/fast/batch.hpp>
+#include <softraster/detail/instruction_set.hpp>
 
 #if SOFTRASTER_HAS_FAST_PATH
 
@@ -193,7 +194,7 @@ class FastFragmentStage {
     }
   }
 
-  [[SOFTRASTER_FAST_TARGET, gnu::flatten, gnu::noinline]] void walk(const EdgeFunction (&edges)[3], const PixelRect& box,
+  [[SOFTRASTER_FAST_TARGET, SOFTRASTER_FLATTEN, gnu::noinline]] void walk(const EdgeFunction (&edges)[3], const PixelRect& box,
                                                                    const BlockPlanes& planes) const {
     const BlockEdges lanes = blockEdges(edges);
     const DepthState depthState = target_.depth;  // a local, which no store to the framebuffer can change
@@ -350,7 +351,7 @@ class FastFragmentStage {
   }
 
   // The bounding box block by block, as walk() does, with the coverage of every sample.
-  [[SOFTRASTER_FAST_TARGET, gnu::flatten, gnu::noinline]] void walkSamples(const EdgeFunction (&edges)[3],
+  [[SOFTRASTER_FAST_TARGET, SOFTRASTER_FLATTEN, gnu::noinline]] void walkSamples(const EdgeFunction (&edges)[3],
                                                                           const PixelRect& box,
                                                                           const BlockPlanes& planes) const {
     const SampleEdges samples = sampleEdges(edges);
