@@ -22,6 +22,10 @@ inline constexpr unsigned kReadsNormals = 1u;
 inline constexpr unsigned kReadsTexcoords = 2u;
 inline constexpr unsigned kReadsTangents = 4u;  // computed from positions, normals and texture coordinates
 
+// How a model samples a shadow map (a depth pass's depth, the scene's "passes"): not at all, with
+// a comparison sampler (GLSL sampler2DShadow), or with a plain sampler2D and its own compare.
+enum class ShadowMapSampler : unsigned char { None, Comparison, Plain };
+
 // Textures a draw may give its model (the first is the surface's colour, the second a normal map).
 inline constexpr std::size_t kMaxDrawTextures = 2;
 
@@ -59,6 +63,11 @@ struct DrawParameters {
   Light light;
   Material material;
   float pointSize = 1.0f;  // gl_PointSize of point primitives
+  float nearPlane = 1.0f;  // the camera's near plane distance (depth_view)
+  // A model that samples a shadow map (kSamplesShadowPass): object -> the clip space of the pass
+  // whose depth it samples, and the bias subtracted from the reference depth.
+  softraster::Mat4 modelToShadow = softraster::Mat4::identity();
+  float shadowBias = 0.0f;
   // The draw's textures and samplers, in the order its model binds them (set 1, binding i);
   // textures the model does not sample are null.
   std::array<softraster::Sampler2D, kMaxDrawTextures> textures{};

@@ -13,12 +13,19 @@ layout(std140, set = 0, binding = 0) uniform Lighting {
   vec4 indirect;             // the course's constant indirect light N, or Phong's ambient light
   vec4 specular;             // Phong: specular reflectance (rgb) and shininess (w)
   float pointSize;
+  mat4 modelToShadow;        // object -> the clip space of the pass whose depth is the shadow map
+  vec4 shadow;               // x: the depth bias subtracted from the shadow map's reference
 } u;
 
 vec4 toClip(vec3 p) {
   precise vec4 clip = u.modelViewProjection[0] * p.x + u.modelViewProjection[1] * p.y +
                       u.modelViewProjection[2] * p.z + u.modelViewProjection[3];
   return clip;
+}
+
+vec4 toShadow(vec3 p) {
+  precise vec4 s = u.modelToShadow[0] * p.x + u.modelToShadow[1] * p.y + u.modelToShadow[2] * p.z + u.modelToShadow[3];
+  return s;
 }
 
 vec3 toLighting(vec3 p) {
@@ -51,8 +58,9 @@ vec3 courseLight(vec3 position, vec3 normal, vec3 rho) {
 }
 
 // Phong (BLINN 0) or Blinn-Phong (BLINN 1) in camera space (the eye at the origin): ambient +
-// diffuse + specular, kd the surface colour.
-vec3 phongLight(vec3 position, vec3 normal, vec3 kd) {
+// (diffuse + specular) * visibility, kd the surface colour, visibility the fraction of the light
+// that reaches the point (1 without shadows: x * 1 is x, so unshadowed models lose nothing).
+vec3 phongLightVisible(vec3 position, vec3 normal, vec3 kd, float visibility) {
   precise vec3 n = normalize(normal);
   precise vec3 l = normalize(u.lightPosition.xyz - position);
   precise vec3 v = normalize(-position);
@@ -63,7 +71,9 @@ vec3 phongLight(vec3 position, vec3 normal, vec3 kd) {
   precise float facing = max(dot(reflect(-l, n), v), 0.0);
 #endif
   precise float highlight = pow(facing, u.specular.w);
-  precise vec3 colour = (u.indirect.rgb * kd + (kd * diffuse) * u.lightPower.rgb) +
-                        (u.specular.rgb * highlight) * u.lightPower.rgb;
+  precise vec3 colour = (u.indirect.rgb * kd + ((kd * diffuse) * u.lightPower.rgb) * visibility) +
+                        ((u.specular.rgb * highlight) * u.lightPower.rgb) * visibility;
   return colour;
 }
+
+vec3 phongLight(vec3 position, vec3 normal, vec3 kd) { return phongLightVisible(position, normal, kd, 1.0); }

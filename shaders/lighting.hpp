@@ -22,9 +22,11 @@ struct LightingUniforms {
   softraster::Vec4 indirect;             // the course's N, or Phong's ambient light
   softraster::Vec4 specular;             // Phong: specular reflectance (xyz) and shininess (w)
   float pointSize = 1.0f;
-  float padding[3] = {};                 // std140 rounds the block up to 16 bytes
+  float padding[3] = {};                 // std140: the next matrix starts on 16 bytes
+  softraster::Mat4 modelToShadow = softraster::Mat4::identity();  // object -> the shadow pass's clip space
+  softraster::Vec4 shadow{};             // x: the depth bias subtracted from the shadow map's reference
 };
-static_assert(sizeof(LightingUniforms) == 3 * 64 + 4 * 16 + 16, "LightingUniforms must match lighting.glsl (std140)");
+static_assert(sizeof(LightingUniforms) == 3 * 64 + 4 * 16 + 16 + 64 + 16, "LightingUniforms must match lighting.glsl (std140)");
 
 // Where a model lights: the course's light in world space, Phong's in camera space.
 enum class LightingSpace { World, Camera };
@@ -41,6 +43,8 @@ inline LightingUniforms lightingUniformsFrom(const DrawParameters& d, LightingSp
   u.specular = d.material.specular;
   u.specular.w = d.material.shininess;
   u.pointSize = d.pointSize;
+  u.modelToShadow = d.modelToShadow;
+  u.shadow.x = d.shadowBias;
   return u;
 }
 
@@ -87,9 +91,16 @@ Vec3T<F> courseLight(const LightingUniforms& u, const Vec3T<F>& position, const 
   return rho * (direct + broadcast<F>(u.indirect));
 }
 
-// Phong (Blinn false) or Blinn-Phong (Blinn true) in camera space, the eye at the origin.
+inline softraster::Vec4 toShadow(const LightingUniforms& u, softraster::Vec3 p) {
+  const softraster::Mat4& m = u.modelToShadow;
+  return m.columns[0] * p.x + m.columns[1] * p.y + m.columns[2] * p.z + m.columns[3];
+}
+
+// Phong (Blinn false) or Blinn-Phong (Blinn true) in camera space, the eye at the origin:
+// ambient + (diffuse + specular) * visibility (1 without shadows, where x * 1 is x).
 template <bool Blinn, class F>
-Vec3T<F> phongLight(const LightingUniforms& u, const Vec3T<F>& position, const Vec3T<F>& normal, const Vec3T<F>& kd) {
+Vec3T<F> phongLightVisible(const LightingUniforms& u, const Vec3T<F>& position, const Vec3T<F>& normal,
+                           const Vec3T<F>& kd, const F& visibility) {
   const Vec3T<F> n = glsl::normalize(normal);
   const Vec3T<F> l = glsl::normalize(broadcast<F>(u.lightPosition) - position);
   const Vec3T<F> v = glsl::normalize(-position);
@@ -102,7 +113,13 @@ Vec3T<F> phongLight(const LightingUniforms& u, const Vec3T<F>& position, const V
   }
   const F highlight = glsl::pow(facing, F(u.specular.w));
   const Vec3T<F> light = broadcast<F>(u.lightPower);
-  return (broadcast<F>(u.indirect) * kd + (kd * diffuse) * light) + (broadcast<F>(u.specular) * highlight) * light;
+  return (broadcast<F>(u.indirect) * kd + ((kd * diffuse) * light) * visibility) +
+         ((broadcast<F>(u.specular) * highlight) * light) * visibility;
+}
+
+template <bool Blinn, class F>
+Vec3T<F> phongLight(const LightingUniforms& u, const Vec3T<F>& position, const Vec3T<F>& normal, const Vec3T<F>& kd) {
+  return phongLightVisible<Blinn, F>(u, position, normal, kd, F(1.0f));
 }
 
 }  // namespace lighting

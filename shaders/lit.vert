@@ -6,7 +6,10 @@
 // lighting space go to the fragment stage, which lights each pixel. INTERPOLATION: the varyings'
 // qualifier (empty: perspective-correct, or noperspective). SURFACE (per pixel only): 0 the
 // vertex colour, 1 times a texture, 2 also a tangent-space normal map (texture coordinates and
-// tangents pass through). C++ twins: lit.hpp (SURFACE 0), lit_surface.hpp (SURFACE 1 and 2).
+// tangents pass through); 3 and 4 the vertex colour in the light of a shadow map (the position
+// in the shadow pass's clip space passes through; 3 samples it with a comparison sampler, 4
+// compares by hand). C++ twins: lit.hpp (SURFACE 0), lit_surface.hpp (SURFACE 1 and 2),
+// lit_shadowed.hpp (SURFACE 3 and 4).
 #define BLINN (MODEL == 2)
 #ifndef SURFACE
 #define SURFACE 0
@@ -16,7 +19,9 @@
 layout(location = 0) in vec3 inPosition;
 layout(location = 1) in vec3 inNormal;
 layout(location = 2) in vec4 inColour;
-#if SURFACE >= 1
+#if SURFACE >= 3
+layout(location = 3) INTERPOLATION out vec4 vShadow;
+#elif SURFACE >= 1
 layout(location = 3) in vec2 inTexcoord;
 layout(location = 3) INTERPOLATION out vec2 vTexcoord;
 #endif
@@ -42,7 +47,9 @@ void main() {
   vPosition = position;
   vNormal = normal;
   vColour = inColour;
-#if SURFACE >= 1
+#if SURFACE >= 3
+  vShadow = toShadow(inPosition);
+#elif SURFACE >= 1
   vTexcoord = inTexcoord;
 #endif
 #if SURFACE == 2

@@ -31,6 +31,18 @@ constexpr unsigned texturesOf() {
   return 0;
 }
 
+template <class Shader>
+constexpr ShadowMapSampler shadowMapOf() {
+  if constexpr (requires { Shader::kShadowMap; }) return Shader::kShadowMap;
+  return ShadowMapSampler::None;
+}
+
+template <class Shader>
+constexpr bool depthPassOnlyOf() {
+  if constexpr (requires { Shader::kDepthPassOnly; }) return Shader::kDepthPassOnly;
+  return false;
+}
+
 // What vkref uploads of a twin's uniforms: all of them, or the `gpu` block of a twin whose
 // uniforms also carry samplers (those are bound as textures, not copied).
 template <class Shader>
@@ -106,6 +118,8 @@ constexpr ShadingModel model(std::string_view name, const std::uint32_t (&vertex
           uniformBufferOf<Shader>(),
           meshInputsOf<Shader>(),
           texturesOf<Shader>(),
+          shadowMapOf<Shader>(),
+          depthPassOnlyOf<Shader>(),
           &vertexBytes<Shader>,
           &uniformBytes<Shader>,
           &prepareSoftraster<Shader>};

@@ -12,13 +12,16 @@ std::span<const ShadingModel> courseLightModels();
 std::span<const ShadingModel> phongModels();
 std::span<const ShadingModel> blinnPhongModels();
 std::span<const ShadingModel> texturedModels();
+std::span<const ShadingModel> shadowedModels();
+std::span<const ShadingModel> depthModels();
 }  // namespace rows
 
 std::span<const ShadingModel> shadingModels() {
   static const std::vector<ShadingModel> kModels = [] {
     std::vector<ShadingModel> all;
     for (auto family : {rows::vertexColorModels(), rows::courseLightModels(), rows::phongModels(),
-                        rows::blinnPhongModels(), rows::texturedModels()}) {
+                        rows::blinnPhongModels(), rows::texturedModels(), rows::shadowedModels(),
+                        rows::depthModels()}) {
       all.insert(all.end(), family.begin(), family.end());
     }
     return all;

@@ -68,6 +68,8 @@ struct ShadingModel {
   bool uniformBuffer = false;  // the uniforms are a uniform block (set 0, binding 0), not push constants
   unsigned meshInputs = 0;     // kReadsNormals...: what the mesh must hold beyond positions and colours
   unsigned textures = 0;       // textures it samples: DrawParameters::textures[0..n-1], set 1 bindings 0..n-1
+  ShadowMapSampler shadowMap = ShadowMapSampler::None;  // its one texture is a depth pass's depth, not an image file
+  bool depthPassOnly = false;      // writes no colour: drawn only in depth passes (depth_only)
   // Vulkan: the mesh as twin::Vertex, vertexStride bytes per vertex; the uniforms as twin::Uniforms.
   std::vector<std::byte> (*vertexBytes)(const Mesh& mesh) = nullptr;
   std::vector<std::byte> (*uniformBytes)(const DrawParameters& draw) = nullptr;

@@ -19,6 +19,19 @@ double millisecondsSince(Clock::time_point start) {
 }
 
 // A shading model's compiled SPIR-V pair and the vertex layout of its C++ twin, for vkref.
+// A depth pass's state for one of its draws: the draw's topology, polygon mode and line width,
+// the pass's cull, front face, depth bias and depth test, the whole pass as viewport and scissor,
+// and no colour written.
+softraster::PipelineState passState(const DepthPass& pass, const Draw& draw) {
+  softraster::PipelineState state = pass.state;
+  state.topology = draw.state.topology;
+  state.rasterization.polygonMode = draw.state.rasterization.polygonMode;
+  state.rasterization.lineWidth = draw.state.rasterization.lineWidth;
+  state.rasterization.lineRasterization = draw.state.rasterization.lineRasterization;
+  state.blend.colorWriteMask = 0;
+  return state;
+}
+
 vkref::ShaderProgram programOf(const shaders::ShadingModel& model) {
   vkref::ShaderProgram p;
   p.name = std::string(model.name);
@@ -42,14 +55,49 @@ SoftrasterScene::SoftrasterScene(const Scene& scene, const softraster::ContextOp
   } else {
     framebufferStatus_ = framebuffer.status().prefixed("softraster");
   }
+  for (const DepthPass& pass : scene.passes) {
+    Pass& p = passes_.emplace_back();
+    softraster::Result<softraster::Framebuffer> target =
+        softraster::Framebuffer::create(pass.width, pass.height, softraster::DepthFormat::D32Sfloat, 1);
+    if (target) {
+      p.framebuffer = std::move(*target);
+    } else if (framebufferStatus_) {
+      framebufferStatus_ = target.status().prefixed("softraster: pass '" + pass.name + "'");
+    }
+    p.depth = std::make_unique<softraster::Texture>();
+    for (std::size_t i : pass.draws) {
+      const Draw& draw = scene.draws[i];
+      p.draws.push_back(pass.shading->prepareSoftraster(draw.mesh, passDrawParameters(pass, draw)));
+      p.states.push_back(passState(pass, draw));
+    }
+  }
   draws_.reserve(scene.draws.size());  // each draw's vertices and uniforms in its model's types
-  for (const Draw& draw : scene.draws) draws_.push_back(draw.shading->prepareSoftraster(draw.mesh, drawParameters(scene, draw)));
+  for (const Draw& draw : scene.draws) {
+    shaders::DrawParameters parameters = drawParameters(scene, draw);
+    for (std::size_t t = 0; t < draw.textures.size() && t < parameters.textures.size(); ++t) {
+      if (draw.textures[t].pass >= 0) parameters.textures[t].texture = passes_[static_cast<std::size_t>(draw.textures[t].pass)].depth.get();
+    }
+    draws_.push_back(draw.shading->prepareSoftraster(draw.mesh, parameters));
+  }
 }
 
 softraster::Status SoftrasterScene::render() {
   if (!framebufferStatus_) return framebufferStatus_;
   // Timed: clear, draws, MSAA resolve (not the framebuffer's allocation, not the Frame).
   const auto start = Clock::now();
+  for (std::size_t k = 0; k < passes_.size(); ++k) {  // each depth pass, then its depth as a texture
+    const DepthPass& pass = scene_.passes[k];
+    Pass& p = passes_[k];
+    p.framebuffer.clear({0, 0, 0, 0}, pass.clearDepth);
+    for (std::size_t i = 0; i < p.draws.size(); ++i) {
+      const Draw& draw = scene_.draws[pass.draws[i]];
+      const softraster::Status status = p.draws[i].draw(context_, p.states[i], draw.indexed, draw.indices, p.framebuffer);
+      if (!status) return status.prefixed("softraster: pass '" + pass.name + "': draw '" + draw.name + "'");
+    }
+    softraster::Result<softraster::Texture> depth = softraster::Texture::fromDepth(p.framebuffer);
+    if (!depth) return depth.status().prefixed("softraster: pass '" + pass.name + "'");
+    *p.depth = std::move(*depth);
+  }
   // The 1/z buffer is cleared to 0 (infinitely far); it is not a Vulkan mode.
   framebuffer_.clear(scene_.clearColour,
                      options_.depthMode == softraster::DepthMode::InverseZ ? 0.0f : scene_.clearDepth);
@@ -106,8 +154,7 @@ softraster::Result<softraster::Framebuffer> renderSoftrasterSamples(const Scene&
 }
 
 softraster::Result<vkref::PreparedFrame> prepareVulkan(const Scene& scene, vkref::Renderer& renderer) {
-  std::vector<vkref::ShaderProgram> programs;  // one per draw, alive until the frame is prepared
-  programs.reserve(scene.draws.size());
+  std::vector<vkref::ShaderProgram> programs;  // one per draw, alive until the frame is prepared (never reallocated)
   vkref::FrameRequest request;
   request.width = scene.width;
   request.height = scene.height;
@@ -115,6 +162,27 @@ softraster::Result<vkref::PreparedFrame> prepareVulkan(const Scene& scene, vkref
   request.clearDepth = scene.clearDepth;
   request.depthFormat = scene.depthFormat;
   request.samples = scene.samples;
+  std::size_t passDraws = 0;
+  for (const DepthPass& pass : scene.passes) passDraws += pass.draws.size();
+  programs.reserve(scene.draws.size() + passDraws);
+  for (const DepthPass& pass : scene.passes) {
+    vkref::DepthPass& passRequest = request.depthPasses.emplace_back();
+    passRequest.width = pass.width;
+    passRequest.height = pass.height;
+    passRequest.clearDepth = pass.clearDepth;
+    for (std::size_t i : pass.draws) {
+      const Draw& draw = scene.draws[i];
+      vkref::DrawCall call;
+      call.program = &programs.emplace_back(programOf(*pass.shading));
+      call.state = passState(pass, draw);
+      call.vertexData = pass.shading->vertexBytes(draw.mesh);
+      call.indexed = draw.indexed;
+      call.indices = draw.indices;
+      (pass.shading->uniformBuffer ? call.uniformData : call.pushConstants) =
+          pass.shading->uniformBytes(passDrawParameters(pass, draw));
+      passRequest.draws.push_back(std::move(call));
+    }
+  }
   for (const Draw& draw : scene.draws) {
     vkref::DrawCall call;
     call.program = &programs.emplace_back(programOf(*draw.shading));
@@ -124,7 +192,7 @@ softraster::Result<vkref::PreparedFrame> prepareVulkan(const Scene& scene, vkref
     call.indices = draw.indices;
     (draw.shading->uniformBuffer ? call.uniformData : call.pushConstants) =
         draw.shading->uniformBytes(drawParameters(scene, draw));
-    for (const Draw::Texture& t : draw.textures) call.textures.push_back({t.texture.get(), t.sampler});
+    for (const Draw::Texture& t : draw.textures) call.textures.push_back({t.texture.get(), t.sampler, t.pass});
     request.draws.push_back(std::move(call));
   }
   auto prepared = renderer.prepare(request);

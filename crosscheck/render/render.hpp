@@ -43,7 +43,7 @@ softraster::Result<Frame> renderVulkan(const Scene& scene, vkref::Renderer& rend
 
 // A scene made ready for softraster once: a Context with `options` (it owns its threads), the
 // framebuffer and every draw's vertices and uniforms in its shading model's types. Each render()
-// draws one whole frame (clear, draws, MSAA resolve) and times exactly that span. Keeps a
+// draws one whole frame (its depth passes, clear, draws, MSAA resolve) and times exactly that span. Keeps a
 // reference to `scene`, which must outlive it.
 class SoftrasterScene {
  public:
@@ -61,11 +61,21 @@ class SoftrasterScene {
 
  private:
   softraster::Framebuffer& output() { return scene_.samples > 1 ? resolved_ : framebuffer_; }
+  // A depth pass: its framebuffer (D32_SFLOAT, colour writes masked off), its draws with the
+  // depth_only model, and the texture its depth becomes each frame (at a fixed address, which the
+  // draws sampling it hold).
+  struct Pass {
+    softraster::Framebuffer framebuffer;
+    std::unique_ptr<softraster::Texture> depth;
+    std::vector<shaders::SoftrasterDraw> draws;
+    std::vector<softraster::PipelineState> states;  // the pass's state with each draw's topology and polygon mode
+  };
   const Scene& scene_;
   softraster::ContextOptions options_;
   softraster::Context context_;
   softraster::Framebuffer framebuffer_, resolved_;  // resolved_: the MSAA resolve's output
   softraster::Status framebufferStatus_;              // why framebuffer_ could not be made, if so
+  std::vector<Pass> passes_;
   std::vector<shaders::SoftrasterDraw> draws_;
   double milliseconds_ = 0;
 };

@@ -14,6 +14,7 @@
 #include <glm/mat3x3.hpp>
 #include <nlohmann/json.hpp>
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <cstdint>
@@ -638,6 +639,51 @@ Draw::Texture readTexture(const json& t, const std::string& place, const std::fi
   return out;
 }
 
+// "shadow_map": {"pass", "compare", "address_mode", "border_colour", "bias"}: the depth pass
+// (by name, among `passNames`) a shadowed model samples, and its sampler. Nearest filtering
+// only: lavapipe gives depth formats no SAMPLED_IMAGE_FILTER_LINEAR (Vulkan then forbids linear).
+Draw::Texture readShadowMap(const json& t, const std::string& place, const std::vector<std::string>& passNames,
+                            shaders::ShadowMapSampler kind, float& bias) {
+  using namespace softraster;
+  if (!t.is_object()) throw SceneError(place, "expected an object with \"pass\" and the sampler's fields");
+  checkKeys(t, place, {"pass", "compare", "address_mode", "border_colour", "bias"});
+  if (!t.contains("pass")) throw SceneError(place, "needs \"pass\" (the name of a depth pass in \"passes\")");
+  const std::string pass = readString(t, "pass", place, "");
+  Draw::Texture out;
+  const auto found = std::find(passNames.begin(), passNames.end(), pass);
+  if (found == passNames.end()) {
+    std::string list;
+    for (const std::string& n : passNames) list += (list.empty() ? "" : ", ") + n;
+    throw SceneError(placeOf(place, "pass"), "no depth pass is called '" + pass + "'" +
+                                                 (list.empty() ? " (the scene has no \"passes\")" : " (passes: " + list + ")"));
+  }
+  out.pass = static_cast<int>(found - passNames.begin());
+  SamplerState& s = out.sampler;
+  s.magFilter = s.minFilter = Filter::Nearest;
+  s.maxLod = 0.0f;  // one level
+  s.addressModeU = s.addressModeV = readEnum(t, "address_mode", place, AddressMode::ClampToEdge,
+                                             {{"repeat", AddressMode::Repeat},
+                                              {"mirrored_repeat", AddressMode::MirroredRepeat},
+                                              {"clamp_to_edge", AddressMode::ClampToEdge},
+                                              {"clamp_to_border", AddressMode::ClampToBorder}});
+  s.borderColor = readEnum(t, "border_colour", place, BorderColor::OpaqueWhite,
+                           {{"transparent_black", BorderColor::TransparentBlack},
+                            {"opaque_black", BorderColor::OpaqueBlack},
+                            {"opaque_white", BorderColor::OpaqueWhite}});
+  if (kind == shaders::ShadowMapSampler::Comparison) {
+    s.compareEnable = true;
+    s.compareOp = readEnum(t, "compare", place, CompareOp::LessOrEqual,
+                           {{"never", CompareOp::Never}, {"less", CompareOp::Less}, {"equal", CompareOp::Equal},
+                            {"less_or_equal", CompareOp::LessOrEqual}, {"greater", CompareOp::Greater},
+                            {"not_equal", CompareOp::NotEqual}, {"greater_or_equal", CompareOp::GreaterOrEqual},
+                            {"always", CompareOp::Always}});
+  } else if (t.contains("compare")) {
+    throw SceneError(placeOf(place, "compare"), "this model compares in its shader (reference <= depth): the sampler has no compare op");
+  }
+  bias = readFloat(t, "bias", place, 0.0f);
+  return out;
+}
+
 // Texture coordinates for a model that reads them: the OBJ's vt, or "texcoords" (one [u, v] per
 // inline position).
 void readTexcoords(const json& d, const std::string& place, Draw& draw, bool haveOwn) {
@@ -664,8 +710,12 @@ void readTexcoords(const json& d, const std::string& place, Draw& draw, bool hav
 }
 
 Draw readDraw(const json& d, const std::string& place, const std::filesystem::path& sceneDir, double time,
-              TextureCache& textures) {
+              TextureCache& textures, const std::vector<std::string>& passNames) {
   Draw draw = readDrawMesh(d, place, sceneDir);
+  if (draw.shading->depthPassOnly) {
+    throw SceneError(placeOf(place, "shading"), "'" + std::string(draw.shading->name) +
+                                                    "' writes no colour: it is the model of depth passes (\"passes\"), not of a draw");
+  }
   if (d.contains("transform")) draw.model = readTransform(d["transform"], placeOf(place, "transform"), time, draw.spins);
   if (d.contains("material")) draw.material = readMaterial(d["material"], placeOf(place, "material"));
   if ((draw.shading->meshInputs & shaders::kReadsTexcoords) != 0) {  // before normals: flat ones rewrite the mesh
@@ -689,7 +739,17 @@ Draw readDraw(const json& d, const std::string& place, const std::filesystem::pa
     }
     computeTangents(draw.mesh, draw.indices, draw.indexed);
   }
-  if (draw.shading->textures > 0) {
+  if (draw.shading->shadowMap != shaders::ShadowMapSampler::None) {
+    if (!d.contains("shadow_map")) {
+      throw SceneError(place, "shading '" + std::string(draw.shading->name) +
+                                  "' samples a shadow map: give \"shadow_map\" (a depth pass's name and the sampler)");
+    }
+    if (d.contains("texture")) throw SceneError(placeOf(place, "texture"), "shading '" + std::string(draw.shading->name) + "' samples no texture");
+    draw.textures.push_back(readShadowMap(d["shadow_map"], placeOf(place, "shadow_map"), passNames,
+                                          draw.shading->shadowMap, draw.shadowBias));
+  } else if (d.contains("shadow_map")) {
+    throw SceneError(placeOf(place, "shadow_map"), "shading '" + std::string(draw.shading->name) + "' samples no shadow map");
+  } else if (draw.shading->textures > 0) {
     if (!d.contains("texture")) {
       throw SceneError(place, "shading '" + std::string(draw.shading->name) + "' samples a texture: give \"texture\"");
     }
@@ -710,7 +770,7 @@ Draw readDraw(const json& d, const std::string& place, const std::filesystem::pa
 
 Draw readDrawMesh(const json& d, const std::string& place, const std::filesystem::path& sceneDir) {
   checkKeys(d, place, {"name", "obj", "sphere", "positions", "colours", "colour", "indices", "normals", "texcoords",
-                       "texture", "normal_map", "shading",
+                       "texture", "normal_map", "shadow_map", "shading",
                        "transform", "material", "topology", "viewport", "scissor", "cull", "front_face", "depth_clamp",
                        "depth_bias", "line_width", "line_rasterization", "point_size", "polygon_mode", "blend",
                        "depth_test", "depth_write", "depth_compare"});
@@ -834,9 +894,93 @@ void applyOverride(Json& document, const std::string& assignment) {
   *node = value;
 }
 
+// At most this many depth passes: a scene has a light or two, not a render graph.
+constexpr std::size_t kMaxPasses = 4;
+
+// The names of "passes", in order, for the draws' "shadow_map" to refer to (the passes
+// themselves are read after the draws they list; readPasses reports what is malformed).
+std::vector<std::string> readPassNames(const json& document) {
+  std::vector<std::string> names;
+  if (!document.contains("passes") || !document["passes"].is_array()) return names;
+  for (const json& pass : document["passes"]) {
+    names.push_back(pass.is_object() && pass.contains("name") && pass["name"].is_string() ? pass["name"].get<std::string>()
+                                                                                          : std::string());
+  }
+  return names;
+}
+
+// "passes": [{"name", "width", "height", "camera", "draws", "clear_depth", and the pass's
+// "cull", "front_face", "depth_bias", "depth_compare"}], each a DepthPass.
+void readPasses(const json& passes, Scene& scene) {
+  if (!passes.is_array() || passes.empty()) throw SceneError("/passes", "expected a non-empty array of depth passes");
+  if (passes.size() > kMaxPasses) {
+    throw SceneError("/passes", std::to_string(passes.size()) + " passes, more than " + std::to_string(kMaxPasses));
+  }
+  const shaders::ShadingModel* depthOnly = shaders::findShadingModel("depth_only");
+  for (std::size_t k = 0; k < passes.size(); ++k) {
+    const std::string place = "/passes/" + std::to_string(k);
+    const json& p = passes[k];
+    if (!p.is_object()) throw SceneError(place, "expected an object");
+    checkKeys(p, place, {"name", "width", "height", "camera", "draws", "clear_depth", "cull", "front_face",
+                         "depth_bias", "depth_compare"});
+    DepthPass pass;
+    if (!p.contains("name")) throw SceneError(place, "needs \"name\" (what a draw's \"shadow_map\" calls it)");
+    pass.name = readString(p, "name", place, "");
+    for (const DepthPass& other : scene.passes) {
+      if (other.name == pass.name) throw SceneError(placeOf(place, "name"), "two passes are called '" + pass.name + "'");
+    }
+    pass.width = static_cast<std::uint32_t>(readCount(p, "width", place, pass.width, kMaxFramebufferSize));
+    pass.height = static_cast<std::uint32_t>(readCount(p, "height", place, pass.height, kMaxFramebufferSize));
+    if (pass.width == 0 || pass.height == 0) throw SceneError(place, "width and height must be in 1..8192");
+    pass.clearDepth = readFloat(p, "clear_depth", place, pass.clearDepth);
+    if (!(pass.clearDepth >= 0 && pass.clearDepth <= 1)) throw SceneError(placeOf(place, "clear_depth"), "must be in [0, 1]");
+    if (!p.contains("camera")) throw SceneError(place, "needs \"camera\" (the light's view, as the scene's \"camera\")");
+    CameraSettings settings;
+    pass.camera = readCamera(p["camera"], placeOf(place, "camera"), static_cast<int>(pass.width),
+                             static_cast<int>(pass.height), settings);
+    if (!isFinite(roundedToFloat(pass.camera.projection * pass.camera.view))) {
+      throw SceneError(placeOf(place, "camera"), "its matrices are not finite in float");
+    }
+    readDrawState(p, place, pass.state);
+    pass.shading = depthOnly;
+    if (p.contains("draws")) {
+      const json& names = p["draws"];
+      const std::string at = placeOf(place, "draws");
+      if (!names.is_array() || names.empty()) throw SceneError(at, "expected a non-empty array of draw names");
+      for (std::size_t n = 0; n < names.size(); ++n) {
+        const std::string nameAt = placeOf(at, std::to_string(n));
+        if (!names[n].is_string()) throw SceneError(nameAt, "expected a draw's name");
+        const std::string name = names[n].get<std::string>();
+        std::size_t found = scene.draws.size(), matches = 0;
+        for (std::size_t i = 0; i < scene.draws.size(); ++i) {
+          if (scene.draws[i].name == name) found = matches++ == 0 ? i : found;
+        }
+        if (matches == 0) throw SceneError(nameAt, "no draw is called '" + name + "'");
+        if (matches > 1) throw SceneError(nameAt, std::to_string(matches) + " draws are called '" + name + "'");
+        pass.draws.push_back(found);
+      }
+    } else {
+      for (std::size_t i = 0; i < scene.draws.size(); ++i) pass.draws.push_back(i);
+    }
+    for (std::size_t i : pass.draws) {
+      if (!isFinite(passDrawParameters(pass, scene.draws[i]).modelViewProjection)) {
+        throw SceneError(place, "draw '" + scene.draws[i].name + "': the pass's model-view-projection matrix is not finite in float");
+      }
+    }
+    scene.passes.push_back(std::move(pass));
+    for (std::size_t i = 0; i < scene.draws.size(); ++i) {
+      for (const Draw::Texture& t : scene.draws[i].textures) {
+        if (t.pass == static_cast<int>(k) && !isFinite(drawParameters(scene, scene.draws[i]).modelToShadow)) {
+          throw SceneError("/draws/" + std::to_string(i) + "/shadow_map", "the matrix to the pass's clip space is not finite in float");
+        }
+      }
+    }
+  }
+}
+
 Scene readScene(json& document, const std::filesystem::path& path, const std::vector<std::string>& overrides) {
   for (const std::string& assignment : overrides) applyOverride(document, assignment);
-  checkKeys(document, "", {"description", "framebuffer", "camera", "time", "light", "draws", "tolerance"});
+  checkKeys(document, "", {"description", "framebuffer", "camera", "time", "light", "passes", "draws", "tolerance"});
   Scene scene;
   scene.path = path;
   scene.description = readString(document, "description", "", "");
@@ -886,11 +1030,12 @@ Scene readScene(json& document, const std::filesystem::path& path, const std::ve
   if (draws.size() > kMaxDraws) {
     throw SceneError("/draws", std::to_string(draws.size()) + " draws, more than " + std::to_string(kMaxDraws));
   }
+  const std::vector<std::string> passNames = readPassNames(document);
   std::size_t vertices = 0;
   TextureCache textures;
   for (std::size_t i = 0; i < draws.size(); ++i) {
     const std::string place = "/draws/" + std::to_string(i);
-    scene.draws.push_back(readDraw(draws[i], place, path.parent_path(), scene.time, textures));
+    scene.draws.push_back(readDraw(draws[i], place, path.parent_path(), scene.time, textures, passNames));
     const Draw& draw = scene.draws.back();
     vertices += draw.indexed ? draw.indices.size() : draw.mesh.vertexCount();
     if (vertices > kMaxSceneVertices) {
@@ -901,6 +1046,8 @@ Scene readScene(json& document, const std::filesystem::path& path, const std::ve
       throw SceneError(placeOf(place, "transform"), "the model-view-projection matrix is not finite in float");
     }
   }
+
+  if (document.contains("passes")) readPasses(document["passes"], scene);
 
   if (document.contains("tolerance")) {
     const json& t = document["tolerance"];
@@ -936,8 +1083,26 @@ shaders::DrawParameters drawParameters(const Scene& scene, const Draw& draw) {
   p.material = draw.material;
   p.pointSize = draw.pointSize;
   for (std::size_t i = 0; i < draw.textures.size() && i < p.textures.size(); ++i) {
-    p.textures[i] = {draw.textures[i].texture.get(), draw.textures[i].sampler};
+    const Draw::Texture& t = draw.textures[i];
+    p.textures[i] = {t.texture.get(), t.sampler};  // a pass's depth: null here, the renderer's image
+    if (t.pass >= 0 && static_cast<std::size_t>(t.pass) < scene.passes.size()) {
+      const CameraMatrices& light = scene.passes[static_cast<std::size_t>(t.pass)].camera;
+      p.modelToShadow = roundedToFloat(light.projection * (light.view * draw.model));
+    }
   }
+  p.shadowBias = draw.shadowBias;
+  switch (scene.cameraSettings.type) {
+    case CameraSettings::Type::Pinhole: p.nearPlane = static_cast<float>(scene.cameraSettings.pinhole.nearPlane); break;
+    case CameraSettings::Type::LookAt: p.nearPlane = static_cast<float>(scene.cameraSettings.lookAt.nearPlane); break;
+    case CameraSettings::Type::ClipSpace: p.nearPlane = 1.0f; break;
+  }
+  return p;
+}
+
+shaders::DrawParameters passDrawParameters(const DepthPass& pass, const Draw& draw) {
+  shaders::DrawParameters p;
+  p.modelViewProjection = roundedToFloat(pass.camera.projection * (pass.camera.view * draw.model));
+  p.pointSize = draw.pointSize;
   return p;
 }
 

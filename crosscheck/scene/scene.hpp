@@ -5,6 +5,7 @@
 // its mesh is kept model-neutral (shaders/draw_inputs.hpp) for that row to pack. A mesh comes
 // from an OBJ file, from inline positions or from a procedural sphere ("sphere": a UV sphere
 // made at load time, so large benchmark meshes need no large files).
+// A scene may render depth passes first ("passes": shadow maps) that its draws sample.
 // Deliberately no scene graph: a scene is a camera plus a flat list of draws.
 #pragma once
 
@@ -46,11 +47,28 @@ struct Draw {
   shaders::Material material;           // what the lit models read beyond the vertex colours
   // What a textured model samples ("texture", then "normal_map"): the texture (shared by draws
   // naming the same file, format and mip choice) and the sampler. Empty for models that sample nothing.
+  // A model that samples a shadow map ("shadow_map") has one entry with no texture: `pass` names
+  // the depth pass (Scene::passes) whose depth it samples, rendered earlier in the same frame.
   struct Texture {
     std::shared_ptr<const softraster::Texture> texture;
     softraster::SamplerState sampler;
+    int pass = -1;
   };
   std::vector<Texture> textures;
+  float shadowBias = 0.0f;  // "shadow_map"'s "bias": subtracted from the reference depth
+};
+
+// A depth pass ("passes"): the named draws' meshes drawn again before the scene's own draws, with
+// the depth_only model from the pass's own camera, into a D32_SFLOAT image of its own size that
+// later draws sample as a shadow map. Only depth: no colour, and its draws sample nothing.
+struct DepthPass {
+  std::string name;
+  std::uint32_t width = 512, height = 512;
+  float clearDepth = 1.0f;
+  CameraMatrices camera;               // the light's view and projection
+  softraster::PipelineState state;     // cull, front face, depth bias and compare for every draw of the pass
+  std::vector<std::size_t> draws;      // indices into Scene::draws, drawn in this order
+  const shaders::ShadingModel* shading = nullptr;  // depth_only
 };
 
 // The scene's one point light (world space), read by the lit models.
@@ -83,12 +101,15 @@ struct Scene {
   double time = 0;            // drives each draw's "spin"
   SceneLight light;
   std::vector<Draw> draws;
+  std::vector<DepthPass> passes;  // rendered first, in order
   Tolerance tolerance;
 };
 
 // What the draw's shading model reads besides its mesh: its matrices (each product taken in
 // double and rounded to float once), the light in world and camera space, the material.
 shaders::DrawParameters drawParameters(const Scene& scene, const Draw& draw);
+// What a depth pass's model reads for one of its draws: the draw's object -> the pass's clip space.
+shaders::DrawParameters passDrawParameters(const DepthPass& pass, const Draw& draw);
 
 // Loads and validates a scene. `overrides` are "key.path=JSON value" assignments applied to the
 // file's JSON before it is read (e.g. "camera.yaw=90"). The error is one line:

@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstring>
 #include <string>
 
 namespace softraster {
@@ -33,6 +34,24 @@ Result<Texture> Texture::create(TextureFormat format, std::uint32_t width, std::
   return t;
 }
 
+Result<Texture> Texture::fromDepth(const Framebuffer& framebuffer) {
+  if (framebuffer.depthFormat() != DepthFormat::D32Sfloat) {
+    return Status::error("a depth texture is made from a D32_SFLOAT framebuffer only");
+  }
+  if (framebuffer.samples() != 1) return Status::error("a depth texture is made from a single-sample framebuffer only");
+  if (framebuffer.width() == 0 || framebuffer.height() == 0) return Status::error("the framebuffer has no pixels");
+  if (framebuffer.width() > kMaxDimension || framebuffer.height() > kMaxDimension) {
+    return Status::error("a depth texture is at most " + std::to_string(kMaxDimension) + " texels wide and high");
+  }
+  const std::vector<std::uint32_t>& depth = framebuffer.depthStorage();  // D32_SFLOAT: the float's bits
+  Texture t;
+  t.format_ = TextureFormat::D32Sfloat;
+  TextureLevel level{framebuffer.width(), framebuffer.height(), std::vector<std::uint8_t>(depth.size() * 4)};
+  std::memcpy(level.rgba.data(), depth.data(), level.rgba.size());
+  t.levels_.push_back(std::move(level));
+  return t;
+}
+
 TextureLevel Texture::generateMipLevel(const TextureLevel& level) {
   TextureLevel next;
   next.width = std::max(1u, level.width / 2);
@@ -57,9 +76,16 @@ TextureLevel Texture::generateMipLevel(const TextureLevel& level) {
 
 Status Sampler2D::validate() const {
   if (texture == nullptr || texture->levels() == 0) return Status::error("the sampler has no texture");
+  const bool depth = texture->format() == TextureFormat::D32Sfloat;
+  if (sampler.compareEnable && !depth) return Status::error("a comparison sampler needs a depth texture");
+  if (sampler.compareOp > CompareOp::Always) return Status::error("unknown compare op");
+  if (depth && (sampler.magFilter != Filter::Nearest || sampler.minFilter != Filter::Nearest)) {
+    return Status::error("a depth texture is sampled with nearest filters only (lavapipe gives depth formats no "
+                         "SAMPLED_IMAGE_FILTER_LINEAR, so Vulkan forbids linear filtering of them there)");
+  }
   if (detail::texture::usesFloatPath(texture->format(), sampler) && sampler.minFilter != sampler.magFilter) {
     return Status::error(
-        "different min and mag filters with sRGB, mirrored repeat or clamp to border are not matched by softraster "
+        "different min and mag filters with sRGB, depth, mirrored repeat or clamp to border are not matched by softraster "
         "yet (lavapipe switches between them per pixel on its float path)");
   }
   for (float v : {sampler.mipLodBias, sampler.minLod, sampler.maxLod}) {

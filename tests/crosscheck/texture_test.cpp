@@ -5,9 +5,7 @@
 // corrupt or oversized PNG, a texture given to a model that samples none, a missing one, bad
 // sampler fields, texture coordinates missing or of the wrong count — each one line naming the
 // scene file and the place.
-#include "compare/compare.hpp"
-#include "render/render.hpp"
-#include "scene/scene.hpp"
+#include "agreement.hpp"
 
 #include <gtest/gtest.h>
 
@@ -18,45 +16,9 @@
 
 namespace {
 
-const std::filesystem::path kScenes = SCENES_DIR;
-
-// softraster (every method that shades quads: the fast and the scalar exact paths) and lavapipe
-// agree to the bit; returns softraster's frame.
-crosscheck::Frame renderAgreeing(const std::string& name, const std::vector<std::string>& overrides) {
-  auto scene = crosscheck::loadScene(kScenes / (name + ".json"), overrides);
-  EXPECT_TRUE(scene) << scene.error();
-  if (!scene) return {};
-  vkref::DeviceOptions device;
-  device.validation = true;
-  auto vulkan = crosscheck::openVulkan(device);
-  EXPECT_TRUE(vulkan) << vulkan.error();
-  if (!vulkan) return {};
-  auto reference = crosscheck::renderVulkan(*scene, **vulkan);
-  EXPECT_TRUE(reference) << reference.error();
-  if (!reference) return {};
-  for (const std::string& m : (*vulkan)->validationMessages()) ADD_FAILURE() << "validation: " << m;
-  crosscheck::Frame first;
-  for (softraster::Method method : {softraster::Method::Exact, softraster::Method::ExactScalar}) {
-    softraster::ContextOptions options;
-    options.method = method;
-    auto soft = crosscheck::renderSoftraster(*scene, options);
-    EXPECT_TRUE(soft) << soft.error();
-    if (!soft) return {};
-    const crosscheck::Comparison c = crosscheck::compareFrames(*soft, *reference, *scene);
-    EXPECT_EQ(c.coverageMismatches, 0u) << name;
-    for (int ch = 0; ch < 4; ++ch) EXPECT_EQ(c.colourMaxDelta[ch], 0) << name << " channel " << ch;
-    if (first.rgba.empty()) first = std::move(*soft);
-  }
-  return first;
-}
-
-std::size_t pixelsDiffering(const crosscheck::Frame& a, const crosscheck::Frame& b) {
-  std::size_t n = 0;
-  for (std::size_t i = 0; i + 3 < a.rgba.size() && i + 3 < b.rgba.size(); i += 4) {
-    n += a.rgba[i] != b.rgba[i] || a.rgba[i + 1] != b.rgba[i + 1] || a.rgba[i + 2] != b.rgba[i + 2];
-  }
-  return n;
-}
+using agreement::kScenes;
+using agreement::pixelsDiffering;
+using agreement::renderAgreeing;
 
 TEST(Textures, NormalMapUnderAMovingLightMatchesAndRelightsTheBumps) {
   const crosscheck::Frame left = renderAgreeing("texture_normal_map", {});
@@ -81,13 +43,8 @@ TEST(Textures, TimeTurnsTheTexturedCubeAndMatches) {
   EXPECT_GT(pixelsDiffering(early, late), 5000u) << "time should turn the cube";
 }
 
-// The error for `overrides` on the magnified-texture scene: one line, naming the file and `place`.
 void expectError(const std::vector<std::string>& overrides, const std::string& scene, const std::string& expected) {
-  auto loaded = crosscheck::loadScene(kScenes / scene, overrides);
-  ASSERT_FALSE(loaded) << "expected an error containing: " << expected;
-  EXPECT_NE(loaded.error().find(expected), std::string::npos) << loaded.error();
-  EXPECT_NE(loaded.error().find(scene), std::string::npos) << loaded.error();
-  EXPECT_EQ(loaded.error().find('\n'), std::string::npos) << loaded.error();
+  agreement::expectSceneError(overrides, scene, expected);
 }
 
 TEST(Textures, BadTextureInputsAreOneErrorLine) {

@@ -17,6 +17,8 @@ std::span<const ShadingModel> shadingModels() {
       row.name = m.name;
       row.meshInputs = m.meshInputs;
       row.textures = m.textures;
+      row.shadowMap = m.shadowMap;
+      row.depthPassOnly = m.depthPassOnly;
       rows.push_back(row);
     }
     return rows;

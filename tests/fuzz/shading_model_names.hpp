@@ -1,4 +1,4 @@
-// The shading models' names, mesh inputs and texture counts as the fuzz build's stand-in for the real table
+// The shading models' names, mesh inputs, texture counts and depth-pass roles as the fuzz build's stand-in for the real table
 // (shaders/shading_models.cpp), whose rows instantiate every twin's draw code and take minutes
 // to compile: the scene loader only looks a model up by name and asks what its mesh must hold.
 // shading_model_names_test.cpp checks in the default build that this list is the real table's.
@@ -15,6 +15,8 @@ struct ShadingModelName {
   std::string_view name;
   unsigned meshInputs;
   unsigned textures = 0;  // the textures the model samples ("texture", then "normal_map")
+  shaders::ShadowMapSampler shadowMap = shaders::ShadowMapSampler::None;  // samples a depth pass ("shadow_map")
+  bool depthPassOnly = false;                                              // depth_only: no colour
 };
 
 inline constexpr ShadingModelName kShadingModelNames[] = {
@@ -31,6 +33,10 @@ inline constexpr ShadingModelName kShadingModelNames[] = {
     {"textured", shaders::kReadsTexcoords, 1},
     {"blinn_phong_textured", shaders::kReadsNormals | shaders::kReadsTexcoords, 1},
     {"blinn_phong_normal_mapped", shaders::kReadsNormals | shaders::kReadsTexcoords | shaders::kReadsTangents, 2},
+    {"blinn_phong_shadowed", shaders::kReadsNormals, 1, shaders::ShadowMapSampler::Comparison},
+    {"blinn_phong_shadowed_manual", shaders::kReadsNormals, 1, shaders::ShadowMapSampler::Plain},
+    {"depth_only", 0, 0, shaders::ShadowMapSampler::None, true},
+    {"depth_view", 0},
 };
 
 }  // namespace fuzz

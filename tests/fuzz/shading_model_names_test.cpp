@@ -15,5 +15,7 @@ TEST(FuzzShadingModelNames, AreTheRealTable) {
     EXPECT_EQ(real[i].name, fuzz::kShadingModelNames[i].name) << i;
     EXPECT_EQ(real[i].meshInputs, fuzz::kShadingModelNames[i].meshInputs) << real[i].name;
     EXPECT_EQ(real[i].textures, fuzz::kShadingModelNames[i].textures) << real[i].name;
+    EXPECT_EQ(real[i].shadowMap, fuzz::kShadingModelNames[i].shadowMap) << real[i].name;
+    EXPECT_EQ(real[i].depthPassOnly, fuzz::kShadingModelNames[i].depthPassOnly) << real[i].name;
   }
 }

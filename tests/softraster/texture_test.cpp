@@ -8,6 +8,8 @@
 #include <gtest/gtest.h>
 
 #include <cstdint>
+#include <cstring>
+#include <limits>
 #include <vector>
 
 namespace {
@@ -248,3 +250,108 @@ TEST(Sampling, GuideShaderDrawsTheTextureOnEveryPath) {
 }
 
 }  // namespace
+
+// ---- Depth textures and comparison samplers (shadow maps) ----------------------------------
+
+// A width x height D32_SFLOAT framebuffer whose depth at (x, y) is `depth(x, y)`.
+template <class Depth>
+Framebuffer depthFramebuffer(std::uint32_t width, std::uint32_t height, Depth depth) {
+  Framebuffer f = *Framebuffer::create(width, height, DepthFormat::D32Sfloat, 1);
+  f.clear({0, 0, 0, 0}, 1.0f);
+  for (std::uint32_t y = 0; y < height; ++y) {
+    for (std::uint32_t x = 0; x < width; ++x) {
+      const float d = depth(x, y);
+      std::memcpy(&f.depthStorage()[f.sampleIndex(x, y)], &d, sizeof d);
+    }
+  }
+  return f;
+}
+
+TEST(DepthTexture, FromDepthCopiesTheFloatsOfASingleSampleD32Framebuffer) {
+  const Framebuffer f = depthFramebuffer(3, 2, [](std::uint32_t x, std::uint32_t y) { return 0.125f * x + 0.5f * y; });
+  const auto t = Texture::fromDepth(f);
+  ASSERT_TRUE(t) << t.error();
+  EXPECT_EQ(t->format(), TextureFormat::D32Sfloat);
+  ASSERT_EQ(t->levels(), 1u);
+  EXPECT_EQ(t->width(), 3u);
+  EXPECT_EQ(t->height(), 2u);
+  float texel;
+  std::memcpy(&texel, t->level(0).rgba.data() + (1 * 3 + 2) * 4, sizeof texel);
+  EXPECT_EQ(texel, 0.75f);  // (2, 1)
+
+  const auto d16 = Texture::fromDepth(*Framebuffer::create(4, 4, DepthFormat::D16Unorm, 1));
+  ASSERT_FALSE(d16);
+  EXPECT_EQ(d16.error(), "a depth texture is made from a D32_SFLOAT framebuffer only");
+  const auto msaa = Texture::fromDepth(*Framebuffer::create(4, 4, DepthFormat::D32Sfloat, 4));
+  ASSERT_FALSE(msaa);
+  EXPECT_EQ(msaa.error(), "a depth texture is made from a single-sample framebuffer only");
+  EXPECT_FALSE(Texture::fromDepth(Framebuffer{}));
+}
+
+TEST(DepthTexture, ValidateRefusesCompareOnColourAndLinearFilteringOfDepth) {
+  const auto colour = Texture::create(TextureFormat::R8G8B8A8Unorm, 4, 4, texels(4, 4), false);
+  const auto depth = Texture::fromDepth(depthFramebuffer(4, 4, [](std::uint32_t, std::uint32_t) { return 0.5f; }));
+  ASSERT_TRUE(colour && depth);
+  SamplerState compare;
+  compare.compareEnable = true;
+  compare.compareOp = CompareOp::LessOrEqual;
+  compare.magFilter = compare.minFilter = Filter::Nearest;
+  EXPECT_EQ(Sampler2D({&*colour, compare}).validate().message(), "a comparison sampler needs a depth texture");
+  EXPECT_TRUE(Sampler2D({&*depth, compare}).validate()) << Sampler2D({&*depth, compare}).validate().message();
+  SamplerState linear = compare;
+  linear.magFilter = Filter::Linear;
+  EXPECT_NE(Sampler2D({&*depth, linear}).validate().message().find("nearest filters only"), std::string::npos);
+  SamplerState plain;  // a plain sampler on a depth texture (the manual compare) is fine when nearest
+  plain.magFilter = plain.minFilter = Filter::Nearest;
+  EXPECT_TRUE(Sampler2D({&*depth, plain}).validate());
+}
+
+TEST(DepthTexture, CompareOpsAreOrderedButNotEqual) {
+  const float nan = std::numeric_limits<float>::quiet_NaN();
+  EXPECT_TRUE(t::compareDepth(CompareOp::LessOrEqual, 0.5f, 0.5f));
+  EXPECT_FALSE(t::compareDepth(CompareOp::Less, 0.5f, 0.5f));
+  EXPECT_TRUE(t::compareDepth(CompareOp::Greater, 0.6f, 0.5f));
+  EXPECT_TRUE(t::compareDepth(CompareOp::GreaterOrEqual, 0.5f, 0.5f));
+  EXPECT_TRUE(t::compareDepth(CompareOp::Equal, 0.5f, 0.5f));
+  EXPECT_FALSE(t::compareDepth(CompareOp::Never, 0.5f, 0.5f));
+  EXPECT_TRUE(t::compareDepth(CompareOp::Always, nan, 0.5f));
+  for (CompareOp op : {CompareOp::Less, CompareOp::Equal, CompareOp::LessOrEqual, CompareOp::Greater,
+                       CompareOp::GreaterOrEqual}) {
+    EXPECT_FALSE(t::compareDepth(op, nan, 0.5f)) << static_cast<int>(op);  // ordered: false with a NaN
+    EXPECT_FALSE(t::compareDepth(op, 0.5f, nan)) << static_cast<int>(op);
+  }
+  EXPECT_TRUE(t::compareDepth(CompareOp::NotEqual, nan, 0.5f));  // unordered: true with a NaN
+  EXPECT_FALSE(t::compareDepth(CompareOp::NotEqual, 0.5f, 0.5f));
+}
+
+TEST(DepthTexture, TextureShadowComparesTheNearestTexelAndTheBorder) {
+  // A 4x4 map: depth 0.25 in the left half, 0.75 in the right.
+  const auto map = Texture::fromDepth(depthFramebuffer(4, 4, [](std::uint32_t x, std::uint32_t) { return x < 2 ? 0.25f : 0.75f; }));
+  ASSERT_TRUE(map);
+  SamplerState s;
+  s.magFilter = s.minFilter = Filter::Nearest;
+  s.compareEnable = true;
+  s.compareOp = CompareOp::LessOrEqual;
+  s.addressModeU = s.addressModeV = AddressMode::ClampToBorder;
+  s.borderColor = BorderColor::OpaqueWhite;
+  const Sampler2D sampler{&*map, s};
+  alignas(32) const float u[kBatchLanes] = {0.1f, 0.1f, 0.9f, 0.9f, 0.49f, 0.51f, -0.1f, 1.2f};
+  alignas(32) const float v[kBatchLanes] = {0.5f, 0.5f, 0.5f, 0.5f, 0.5f, 0.5f, 0.5f, 0.5f};
+  alignas(32) const float r[kBatchLanes] = {0.2f, 0.3f, 0.7f, 0.8f, 0.3f, 0.3f, 0.99f, 1.0f};
+  alignas(32) float out[kBatchLanes];
+  textureShadow(sampler, FloatBatch::load(u), FloatBatch::load(v), FloatBatch::load(r)).store(out);
+  const float expected[kBatchLanes] = {1, 0, 1, 0, 0, 1, 1, 1};  // the border's red is depth 1
+  for (int lane = 0; lane < kBatchLanes; ++lane) EXPECT_EQ(out[lane], expected[lane]) << "lane " << lane;
+
+  // texture() on the same map reads the depth as (d, 0, 0, 1); textureShadow without compare gives 0.
+  SamplerState plain = s;
+  plain.compareEnable = false;
+  const Vec4T<FloatBatch> c = texture(Sampler2D{&*map, plain}, FloatBatch::load(u), FloatBatch::load(v));
+  EXPECT_EQ(c.x[0], 0.25f);
+  EXPECT_EQ(c.x[2], 0.75f);
+  EXPECT_EQ(c.y[0], 0.0f);
+  EXPECT_EQ(c.w[0], 1.0f);
+  EXPECT_EQ(c.x[6], 1.0f);  // the border
+  textureShadow(Sampler2D{&*map, plain}, FloatBatch::load(u), FloatBatch::load(v), FloatBatch::load(r)).store(out);
+  for (float lane : out) EXPECT_EQ(lane, 0.0f);
+}

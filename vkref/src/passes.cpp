@@ -74,14 +74,14 @@ void beginRendering(VkCommandBuffer cmd, const FramePass& pass) {
 
 // The draws in order. A pipeline, push constants or uniform block equal to the previous draw's
 // are not bound again (bound state persists across draws, and all pipelines share one layout).
-void recordDraws(VkCommandBuffer cmd, const FramePass& pass) {
+void recordDraws(VkCommandBuffer cmd, const FramePass& pass, std::span<const PassDraw> draws) {
   if (pass.indices) vkCmdBindIndexBuffer(cmd, pass.indices, 0, VK_INDEX_TYPE_UINT32);
   VkPipeline bound = VK_NULL_HANDLE;
   std::span<const std::byte> pushed;
   bool uniformsBound = false;
   std::uint32_t boundOffset = 0;
   VkDescriptorSet boundTextures = VK_NULL_HANDLE;
-  for (const PassDraw& d : pass.draws) {
+  for (const PassDraw& d : draws) {
     if (d.pipeline != bound) {
       vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, d.pipeline);
       bound = d.pipeline;
@@ -109,6 +109,36 @@ void recordDraws(VkCommandBuffer cmd, const FramePass& pass) {
     else
       vkCmdDraw(cmd, d.count, 1, 0, 0);
   }
+}
+
+// One depth pass: its image to the attachment layout (old contents discarded), depth cleared and
+// drawn with no colour attachment, then to SHADER_READ_ONLY_OPTIMAL with its writes made visible
+// to the fragment shaders' sampled reads of the passes and the frame that follow.
+void recordDepthPass(VkCommandBuffer cmd, const FramePass& frame, const DepthPassRecord& pass) {
+  const VkImageMemoryBarrier2 toAttachment =
+      imageBarrier(pass.image, VK_IMAGE_ASPECT_DEPTH_BIT, VK_PIPELINE_STAGE_2_NONE, VK_ACCESS_2_NONE, kDepthStages,
+                   VK_ACCESS_2_DEPTH_STENCIL_ATTACHMENT_READ_BIT | VK_ACCESS_2_DEPTH_STENCIL_ATTACHMENT_WRITE_BIT,
+                   VK_IMAGE_LAYOUT_UNDEFINED, VK_IMAGE_LAYOUT_DEPTH_STENCIL_ATTACHMENT_OPTIMAL);
+  barrier(cmd, std::span(&toAttachment, 1));
+  const VkRenderingAttachmentInfo depth{.sType = VK_STRUCTURE_TYPE_RENDERING_ATTACHMENT_INFO,
+                                        .imageView = pass.view,
+                                        .imageLayout = VK_IMAGE_LAYOUT_DEPTH_STENCIL_ATTACHMENT_OPTIMAL,
+                                        .loadOp = VK_ATTACHMENT_LOAD_OP_CLEAR,
+                                        .storeOp = VK_ATTACHMENT_STORE_OP_STORE,
+                                        .clearValue = {.depthStencil = {pass.clearDepth, 0}}};
+  const VkRenderingInfo info{.sType = VK_STRUCTURE_TYPE_RENDERING_INFO,
+                             .renderArea = {{0, 0}, {pass.width, pass.height}},
+                             .layerCount = 1,
+                             .colorAttachmentCount = 0,
+                             .pDepthAttachment = &depth};
+  vkCmdBeginRendering(cmd, &info);
+  recordDraws(cmd, frame, pass.draws);
+  vkCmdEndRendering(cmd);
+  const VkImageMemoryBarrier2 toSampled = imageBarrier(
+      pass.image, VK_IMAGE_ASPECT_DEPTH_BIT, kDepthStages, VK_ACCESS_2_DEPTH_STENCIL_ATTACHMENT_WRITE_BIT,
+      VK_PIPELINE_STAGE_2_FRAGMENT_SHADER_BIT, VK_ACCESS_2_SHADER_SAMPLED_READ_BIT,
+      VK_IMAGE_LAYOUT_DEPTH_STENCIL_ATTACHMENT_OPTIMAL, VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL);
+  barrier(cmd, std::span(&toSampled, 1));
 }
 
 // The single-sample images (rendered to, or resolved into) ready to be copied out.
@@ -153,9 +183,10 @@ void barrier(VkCommandBuffer cmd, std::span<const VkImageMemoryBarrier2> images,
 Status recordRenderPass(VkCommandBuffer cmd, const FramePass& pass) {
   const VkCommandBufferBeginInfo begin{.sType = VK_STRUCTURE_TYPE_COMMAND_BUFFER_BEGIN_INFO};
   if (Status s = check(vkBeginCommandBuffer(cmd, &begin), "vkBeginCommandBuffer"); !s) return s;
+  for (const DepthPassRecord& depthPass : pass.depthPasses) recordDepthPass(cmd, pass, depthPass);
   toAttachments(cmd, *pass.targets);
   beginRendering(cmd, pass);
-  recordDraws(cmd, pass);
+  recordDraws(cmd, pass, pass.draws);
   vkCmdEndRendering(cmd);  // the MSAA resolve happens here
   toTransferSource(cmd, *pass.targets);
   return check(vkEndCommandBuffer(cmd), "vkEndCommandBuffer");

@@ -1,10 +1,12 @@
-// vkref passes: command recording. The render pass of a frame: its images moved to attachment
+// vkref passes: command recording. The render pass of a frame: its depth passes first (each
+// rendering depth alone into its image, then a barrier that makes the image a sampled texture
+// for the fragment stage), its images moved to attachment
 // layouts, dynamic rendering that clears colour and depth, the draws (each binding only what
 // differs from the draw before it), the MSAA resolve at the end of rendering, and the barrier
 // that leaves the single-sample images ready to be copied. Also the command buffers and the fence
 // a prepared frame owns, and their submission.
 // Deliberately no pipeline building (pipelines), no buffers or images (resources), no copies to
-// the host (readback), and one pass per frame: no multi-pass scenes yet.
+// the host (readback), and no pass reads another's colour: only depth passes feed later ones.
 #pragma once
 
 #include "device.hpp"
@@ -36,6 +38,16 @@ struct PassDraw {
   VkDescriptorSet textures = VK_NULL_HANDLE;  // set 1 (the draw's textures), or null when it samples none
 };
 
+// A depth pass recorded before the frame's own rendering: its image (D32_SFLOAT, single-sample,
+// sampled later), cleared to clearDepth, and its draws.
+struct DepthPassRecord {
+  VkImage image = VK_NULL_HANDLE;
+  VkImageView view = VK_NULL_HANDLE;
+  std::uint32_t width = 0, height = 0;
+  float clearDepth = 1.0f;
+  std::span<const PassDraw> draws;
+};
+
 // Everything the render pass of a frame reads.
 struct FramePass {
   const Targets* targets = nullptr;
@@ -46,6 +58,7 @@ struct FramePass {
   VkBuffer indices = VK_NULL_HANDLE;
   VkDescriptorSet uniforms = VK_NULL_HANDLE;  // the frame's uniform blocks (null when no draw has one)
   std::span<const PassDraw> draws;
+  std::span<const DepthPassRecord> depthPasses;  // rendered first, in order
 };
 
 // Records the whole render pass into `cmd`, from vkBeginCommandBuffer to vkEndCommandBuffer.

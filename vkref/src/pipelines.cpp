@@ -104,9 +104,16 @@ Status checkDraw(const DrawCall& d, std::uint32_t width, std::uint32_t height, c
     return Status::error(std::to_string(d.textures.size()) + " textures (at most " + std::to_string(kMaxTextures) + ")");
   for (std::size_t i = 0; i < d.textures.size(); ++i) {
     const softraster::Texture* t = d.textures[i].texture;
+    if (t == nullptr && d.textures[i].depthPass >= 0) {  // the pass's index is checked by checkFrame
+      if (d.textures[i].sampler.compareOp > softraster::CompareOp::Always)
+        return Status::error("texture " + std::to_string(i) + ": unknown compare op");
+      continue;
+    }
     if (t == nullptr || t->levels() == 0) return Status::error("texture " + std::to_string(i) + " has no texels");
     if (t->width() > limits.maxImageDimension2D || t->height() > limits.maxImageDimension2D)
       return Status::error("texture " + std::to_string(i) + " is larger than maxImageDimension2D");
+    if (d.textures[i].depthPass >= 0) return Status::error("texture " + std::to_string(i) + " names a depth pass and a texture");
+    if (d.textures[i].sampler.compareEnable) return Status::error("texture " + std::to_string(i) + ": a comparison sampler needs a depth pass's image");
     if (std::fabs(d.textures[i].sampler.mipLodBias) > limits.maxSamplerLodBias)
       return Status::error("texture " + std::to_string(i) + ": mipLodBias beyond maxSamplerLodBias");
   }
@@ -253,6 +260,7 @@ softraster::Result<VkPipeline> PipelineCache::get(const DrawCall& d, const Targe
   key.program = programIndex(*d.program, memo);
   key.depthFormat = target.depthFormat;
   key.samples = target.samples;
+  key.colour = target.colour;
   key.topology = byte(s.topology);
   key.polygonMode = byte(r.polygonMode);
   key.cullMode = byte(r.cullMode);
@@ -373,11 +381,11 @@ softraster::Result<VkPipeline> PipelineCache::compile(const Program& p, const so
         .alphaBlendOp = op(b.alphaBlendOp),
         .colorWriteMask = static_cast<VkColorComponentFlags>(b.colorWriteMask)};
     VkPipelineColorBlendStateCreateInfo blend{.sType = VK_STRUCTURE_TYPE_PIPELINE_COLOR_BLEND_STATE_CREATE_INFO,
-                                              .attachmentCount = 1,
+                                              .attachmentCount = target.colour ? 1u : 0u,
                                               .pAttachments = &blendAttachment};
     for (int i = 0; i < 4; ++i) blend.blendConstants[i] = b.blendConstants[i];
     const VkPipelineRenderingCreateInfo rendering{.sType = VK_STRUCTURE_TYPE_PIPELINE_RENDERING_CREATE_INFO,
-                                                  .colorAttachmentCount = 1,
+                                                  .colorAttachmentCount = target.colour ? 1u : 0u,
                                                   .pColorAttachmentFormats = &kColourFormat,
                                                   .depthAttachmentFormat = target.depthFormat};
     const VkGraphicsPipelineCreateInfo info{.sType = VK_STRUCTURE_TYPE_GRAPHICS_PIPELINE_CREATE_INFO,

@@ -40,11 +40,13 @@ softraster::Status checkFrame(const FrameRequest& request, const Device& device)
 softraster::Status checkDraw(const DrawCall& draw, std::uint32_t width, std::uint32_t height, const Device& device);
 
 // What a pipeline is compiled for besides its draw: the frame's size (a zero viewport or scissor
-// means the whole frame), depth format and sample count. Colour is always kColourFormat.
+// means the whole frame), depth format and sample count, and whether there is a colour attachment
+// (always kColourFormat; a depth pass has none).
 struct TargetFormat {
   std::uint32_t width = 0, height = 0;
   VkFormat depthFormat = VK_FORMAT_UNDEFINED;
   VkSampleCountFlagBits samples = VK_SAMPLE_COUNT_1_BIT;
+  bool colour = true;
 };
 
 class PipelineCache {
@@ -94,6 +96,7 @@ class PipelineCache {
     std::uint32_t program = 0;  // index into programs_
     VkFormat depthFormat = VK_FORMAT_UNDEFINED;
     VkSampleCountFlagBits samples = VK_SAMPLE_COUNT_1_BIT;
+    bool colour = true;
     std::uint8_t topology = 0, polygonMode = 0, cullMode = 0, frontFace = 0, lineRasterization = 0;
     bool depthClamp = false, depthBias = false;
     std::uint32_t biasConstant = 0, biasClamp = 0, biasSlope = 0, lineWidth = 0;

@@ -3,7 +3,8 @@
 // prepare() checks the request, creates its images (resources.cpp), uploads its vertices,
 // indices and uniform blocks into one buffer each, uploads its textures (textures.cpp), takes its
 // pipelines from the cache and records its two command
-// buffers: the render pass (passes.cpp) and the copies to the host (readback.cpp); submit() runs
+// buffers: the render pass with any depth passes before it (passes.cpp) and the copies to the
+// host (readback.cpp); submit() runs
 // the first, readBack() the second and unpacks the images.
 // Deliberately synchronous: every submission is waited for before the call returns, so a frame
 // is never in flight between calls. Nothing is printed and nothing is global; failures come back
@@ -34,6 +35,7 @@ struct Renderer::Impl {
 struct PreparedFrame::Impl {
   const detail::Device* device = nullptr;  // of the Renderer that prepared the frame
   detail::Targets targets;
+  std::vector<detail::Image> depthPassImages;  // one per FrameRequest::depthPasses, D32_SFLOAT, sampled later
   detail::Geometry geometry;
   detail::UniformSet uniforms;
   detail::FrameTextures textures;
@@ -76,15 +78,50 @@ Result<PreparedFrame> Renderer::prepare(const FrameRequest& request) {
   const detail::Device& device = *impl_->device;
   if (Status s = detail::checkFrame(request, device); !s) return s;
   const std::uint32_t width = request.width, height = request.height;
-  const std::vector<DrawCall>& draws = request.draws;
-  std::vector<const DrawCall*> drawn;  // the draws not skipped, in order
-  std::vector<std::size_t> numbers;    // and their indices in request.draws, for messages
-  for (std::size_t i = 0; i < draws.size(); ++i) {
-    if (detail::isEmpty(draws[i])) continue;
-    if (Status s = detail::checkDraw(draws[i], width, height, device); !s)
-      return s.prefixed("draw " + std::to_string(i));
-    drawn.push_back(&draws[i]);
-    numbers.push_back(i);
+  // Every draw not skipped, in recording order: each depth pass's, then the frame's own; with
+  // where each pass's run begins, and names for messages.
+  std::vector<const DrawCall*> drawn;
+  std::vector<std::string> names;
+  std::vector<std::size_t> passBegin;
+  const std::size_t passes = request.depthPasses.size();
+  constexpr VkFormat kShadowFormat = VK_FORMAT_D32_SFLOAT;
+  for (std::size_t k = 0; k < passes; ++k) {
+    const DepthPass& pass = request.depthPasses[k];
+    const std::string passName = "depth pass " + std::to_string(k);
+    if (pass.width == 0 || pass.height == 0 || pass.width > device.limits.maxFramebufferWidth ||
+        pass.height > device.limits.maxFramebufferHeight || pass.width > device.limits.maxImageDimension2D ||
+        pass.height > device.limits.maxImageDimension2D)
+      return Status::error(passName + ": size " + std::to_string(pass.width) + "x" + std::to_string(pass.height) +
+                           " out of range");
+    if (!(pass.clearDepth >= 0 && pass.clearDepth <= 1)) return Status::error(passName + ": clearDepth outside [0, 1]");
+    passBegin.push_back(drawn.size());
+    for (std::size_t i = 0; i < pass.draws.size(); ++i) {
+      const DrawCall& d = pass.draws[i];
+      if (detail::isEmpty(d)) continue;
+      const std::string name = passName + " draw " + std::to_string(i);
+      if (!d.textures.empty()) return Status::error(name + ": a depth pass's draws sample nothing");
+      if (Status s = detail::checkDraw(d, pass.width, pass.height, device); !s) return s.prefixed(name);
+      drawn.push_back(&d);
+      names.push_back(name);
+    }
+  }
+  const std::size_t firstOwn = drawn.size();
+  passBegin.push_back(firstOwn);
+  for (std::size_t i = 0; i < request.draws.size(); ++i) {
+    const DrawCall& d = request.draws[i];
+    if (detail::isEmpty(d)) continue;
+    const std::string name = "draw " + std::to_string(i);
+    for (std::size_t t = 0; t < d.textures.size(); ++t) {
+      const int pass = d.textures[t].depthPass;
+      if (pass >= 0 && static_cast<std::size_t>(pass) >= passes)
+        return Status::error(name + ": texture " + std::to_string(t) + " names depth pass " + std::to_string(pass) +
+                             " of " + std::to_string(passes));
+      if (pass >= 0 && d.textures[t].texture != nullptr)
+        return Status::error(name + ": texture " + std::to_string(t) + " names a depth pass and a texture");
+    }
+    if (Status s = detail::checkDraw(d, width, height, device); !s) return s.prefixed(name);
+    drawn.push_back(&d);
+    names.push_back(name);
   }
 
   auto frame = std::make_unique<PreparedFrame::Impl>();
@@ -97,6 +134,15 @@ Result<PreparedFrame> Renderer::prepare(const FrameRequest& request) {
   auto targets = detail::createTargets(device, width, height, format.depthFormat, format.samples);
   if (!targets) return targets.status();
   frame->targets = std::move(*targets);
+  std::vector<VkImageView> passViews;
+  for (const DepthPass& pass : request.depthPasses) {
+    auto image = detail::Image::create(device, kShadowFormat,
+                                       VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT | VK_IMAGE_USAGE_SAMPLED_BIT,
+                                       VK_IMAGE_ASPECT_DEPTH_BIT, pass.width, pass.height, VK_SAMPLE_COUNT_1_BIT);
+    if (!image) return image.status().prefixed("depth pass");
+    passViews.push_back(image->view());
+    frame->depthPassImages.push_back(std::move(*image));
+  }
   auto host = detail::createHostImages(device, frame->targets, request.depthFormat);
   if (!host) return host.status();
   frame->host = std::move(*host);
@@ -106,17 +152,24 @@ Result<PreparedFrame> Renderer::prepare(const FrameRequest& request) {
   auto uniforms = detail::UniformSet::create(device, impl_->pipelines->uniformSetLayout(), frame->geometry);
   if (!uniforms) return uniforms.status();
   frame->uniforms = std::move(*uniforms);
-  auto textures = detail::FrameTextures::create(device, impl_->pipelines->textureSetLayout(), drawn);
+  auto textures = detail::FrameTextures::create(device, impl_->pipelines->textureSetLayout(), drawn, passViews);
   if (!textures) return textures.status();
   frame->textures = std::move(*textures);
 
   std::vector<detail::PassDraw> passDraws(drawn.size());
   detail::PipelineCache::FrameMemo memo;
+  std::size_t pass = 0;  // the depth pass drawn[i] belongs to, while i < firstOwn
   for (std::size_t i = 0; i < drawn.size(); ++i) {
     const DrawCall& d = *drawn[i];
-    auto pipeline = impl_->pipelines->get(d, format, memo);
-    if (!pipeline)
-      return pipeline.status().prefixed("draw " + std::to_string(numbers[i]) + " (program '" + d.program->name + "')");
+    while (pass < passes && i >= passBegin[pass + 1]) ++pass;
+    detail::TargetFormat target = format;
+    if (i < firstOwn) {
+      const DepthPass& p = request.depthPasses[pass];
+      target = {.width = p.width, .height = p.height, .depthFormat = kShadowFormat, .samples = VK_SAMPLE_COUNT_1_BIT,
+                .colour = false};
+    }
+    auto pipeline = impl_->pipelines->get(d, target, memo);
+    if (!pipeline) return pipeline.status().prefixed(names[i] + " (program '" + d.program->name + "')");
     detail::PassDraw& p = passDraws[i];
     p.pipeline = *pipeline;
     p.bindVertices = !d.program->attributes.empty();
@@ -129,19 +182,30 @@ Result<PreparedFrame> Renderer::prepare(const FrameRequest& request) {
     p.uniformOffset = frame->geometry.ranges[i].uniformOffset;
     p.textures = frame->textures.setOf(i);
   }
+  std::vector<detail::DepthPassRecord> passRecords;
+  for (std::size_t k = 0; k < passes; ++k) {
+    const DepthPass& p = request.depthPasses[k];
+    passRecords.push_back({.image = frame->depthPassImages[k].handle(),
+                           .view = frame->depthPassImages[k].view(),
+                           .width = p.width,
+                           .height = p.height,
+                           .clearDepth = p.clearDepth,
+                           .draws = std::span(passDraws).subspan(passBegin[k], passBegin[k + 1] - passBegin[k])});
+  }
 
   auto commands = detail::Commands::create(device);
   if (!commands) return commands.status();
   frame->commands = std::move(*commands);
-  const detail::FramePass pass{.targets = &frame->targets,
-                               .clearColour = request.clearColour,
-                               .clearDepth = request.clearDepth,
-                               .layout = impl_->pipelines->layout(),
-                               .vertices = frame->geometry.vertices.handle(),
-                               .indices = frame->geometry.indices.handle(),
-                               .uniforms = frame->uniforms.handle(),
-                               .draws = passDraws};
-  if (Status s = detail::recordRenderPass(frame->commands->render(), pass); !s) return s;
+  const detail::FramePass framePass{.targets = &frame->targets,
+                                    .clearColour = request.clearColour,
+                                    .clearDepth = request.clearDepth,
+                                    .layout = impl_->pipelines->layout(),
+                                    .vertices = frame->geometry.vertices.handle(),
+                                    .indices = frame->geometry.indices.handle(),
+                                    .uniforms = frame->uniforms.handle(),
+                                    .draws = std::span(passDraws).subspan(firstOwn),
+                                    .depthPasses = passRecords};
+  if (Status s = detail::recordRenderPass(frame->commands->render(), framePass); !s) return s;
   if (Status s = detail::recordCopies(frame->commands->copy(), frame->targets, frame->host); !s) return s;
   return PreparedFrame(std::move(frame));
 }

@@ -104,19 +104,21 @@ Status upload(const Device& device, std::span<const softraster::Texture* const> 
 }  // namespace
 
 softraster::Result<FrameTextures> FrameTextures::create(const Device& device, VkDescriptorSetLayout layout,
-                                                        std::span<const DrawCall* const> draws) {
+                                                        std::span<const DrawCall* const> draws,
+                                                        std::span<const VkImageView> depthPassViews) {
   FrameTextures f;
   f.device_ = device.device;
-  std::vector<const softraster::Texture*> textures;  // distinct, in first use order
+  std::vector<const softraster::Texture*> textures;  // distinct, in first use order (not the passes' images)
   std::size_t textured = 0;
   for (const DrawCall* d : draws) {
     for (const TextureBinding& b : d->textures) {
-      if (std::find(textures.begin(), textures.end(), b.texture) == textures.end()) textures.push_back(b.texture);
+      if (b.texture != nullptr && std::find(textures.begin(), textures.end(), b.texture) == textures.end())
+        textures.push_back(b.texture);
     }
     textured += d->textures.empty() ? 0 : 1;
   }
   f.sets_.assign(draws.size(), VK_NULL_HANDLE);
-  if (textures.empty()) return f;
+  if (textured == 0) return f;
 
   // Every level of every texture, one after another, in a staging buffer.
   std::vector<VkDeviceSize> offsets;
@@ -125,13 +127,17 @@ softraster::Result<FrameTextures> FrameTextures::create(const Device& device, Vk
     offsets.push_back(total);
     for (std::uint32_t l = 0; l < t->levels(); ++l) total += t->level(l).rgba.size();
   }
-  auto staging = Buffer::create(device, total, VK_BUFFER_USAGE_TRANSFER_SRC_BIT);
-  if (!staging) return staging.status();
+  Buffer staging;
+  if (total > 0) {
+    auto created = Buffer::create(device, total, VK_BUFFER_USAGE_TRANSFER_SRC_BIT);
+    if (!created) return created.status();
+    staging = std::move(*created);
+  }
   for (std::size_t i = 0; i < textures.size(); ++i) {
     VkDeviceSize at = offsets[i];
     for (std::uint32_t l = 0; l < textures[i]->levels(); ++l) {
       const std::vector<std::uint8_t>& bytes = textures[i]->level(l).rgba;
-      std::memcpy(static_cast<std::byte*>(staging->mapped()) + at, bytes.data(), bytes.size());
+      std::memcpy(static_cast<std::byte*>(staging.mapped()) + at, bytes.data(), bytes.size());
       at += bytes.size();
     }
     auto image = Image::create(device, formatOf(textures[i]->format()),
@@ -140,7 +146,9 @@ softraster::Result<FrameTextures> FrameTextures::create(const Device& device, Vk
     if (!image) return image.status();
     f.images_.push_back(std::move(*image));
   }
-  if (Status s = upload(device, textures, f.images_, *staging, offsets); !s) return s;
+  if (!textures.empty()) {
+    if (Status s = upload(device, textures, f.images_, staging, offsets); !s) return s;
+  }
 
   const VkDescriptorPoolSize size{VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, static_cast<std::uint32_t>(textured * kMaxTextures)};
   const VkDescriptorPoolCreateInfo poolInfo{.sType = VK_STRUCTURE_TYPE_DESCRIPTOR_POOL_CREATE_INFO,
@@ -172,8 +180,8 @@ softraster::Result<FrameTextures> FrameTextures::create(const Device& device, Vk
                                             .mipLodBias = st.mipLodBias,
                                             .anisotropyEnable = VK_FALSE,
                                             .maxAnisotropy = 1.0f,
-                                            .compareEnable = VK_FALSE,
-                                            .compareOp = VK_COMPARE_OP_ALWAYS,
+                                            .compareEnable = st.compareEnable ? VK_TRUE : VK_FALSE,
+                                            .compareOp = static_cast<VkCompareOp>(st.compareOp),  // same order as Vulkan's
                                             .minLod = st.minLod,
                                             .maxLod = st.maxLod,
                                             .borderColor = borderOf(st.borderColor),
@@ -182,6 +190,11 @@ softraster::Result<FrameTextures> FrameTextures::create(const Device& device, Vk
       if (Status s = check(vkCreateSampler(device.device, &samplerInfo, nullptr, &sampler), "vkCreateSampler"); !s)
         return s;
       f.samplers_.push_back(sampler);
+      if (b.texture == nullptr) {  // a depth pass's image, left in this layout by its pass
+        infos.push_back({sampler, depthPassViews[static_cast<std::size_t>(b.depthPass)],
+                         VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL});
+        continue;
+      }
       const std::size_t image = static_cast<std::size_t>(std::find(textures.begin(), textures.end(), b.texture) - textures.begin());
       infos.push_back({sampler, f.images_[image].view(), VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL});
     }

@@ -13,12 +13,20 @@
 // its piecewise-linear log2, mip selection, LOD bias and clamps, the min/mag switch.
 // Sampler2D::validate() refuses the one combination not matched yet (different min and mag
 // filters on the float path), so a scene using it is an error, not a silent difference.
-// Deliberately absent: 1D/3D/cube/array textures, anisotropy, compare samplers (shadow maps),
-// texel offsets, explicit LOD and gradients, unnormalized coordinates.
+// Depth textures (shadow maps): a D32_SFLOAT Texture made from a Framebuffer's depth
+// (Texture::fromDepth), one level, sampled on the float path either as a colour (depth, 0, 0, 1)
+// by texture() or through a comparison sampler (SamplerState::compareEnable, GLSL's
+// sampler2DShadow) by textureShadow(): the texel compared with the reference, 1 or 0. Nearest
+// filtering only: lavapipe gives depth formats no SAMPLED_IMAGE_FILTER_LINEAR, so Vulkan forbids
+// a linear filter on them there (percentage-closer filtering is the shader's to do, tap by tap).
+// Deliberately absent: 1D/3D/cube/array textures, anisotropy, texel offsets, explicit LOD and
+// gradients, unnormalized coordinates, mipmapped or UNORM depth textures.
 #pragma once
 
+#include <softraster/framebuffer.hpp>
 #include <softraster/math.hpp>
 #include <softraster/simd.hpp>
+#include <softraster/state.hpp>
 #include <softraster/status.hpp>
 
 #include <cstdint>
@@ -28,9 +36,10 @@
 
 namespace softraster {
 
-enum class TextureFormat : std::uint8_t { R8G8B8A8Unorm, R8G8B8A8Srgb };
+enum class TextureFormat : std::uint8_t { R8G8B8A8Unorm, R8G8B8A8Srgb, D32Sfloat };
 
-// One mip level: width x height texels of 4 bytes (R, G, B, A), row 0 first.
+// One mip level: width x height texels of 4 bytes, row 0 first: R, G, B, A, or for D32Sfloat
+// the depth float's bytes (native order).
 struct TextureLevel {
   std::uint32_t width = 0, height = 0;
   std::vector<std::uint8_t> rgba;
@@ -52,6 +61,11 @@ class Texture {
   // neighbour's copy). Bytes are averaged as stored (for sRGB too: the one chain both renderers
   // upload, not a linear-light filter).
   static TextureLevel generateMipLevel(const TextureLevel& level);
+
+  // A D32_SFLOAT texture of one level from the depth of a single-sample D32_SFLOAT framebuffer
+  // (pixel (x, y) of the framebuffer is texel (x, y)): a shadow map from its pass. Errors: another
+  // depth format, or a multisampled framebuffer.
+  static Result<Texture> fromDepth(const Framebuffer& framebuffer);
 
   Texture() = default;  // no texels; sampling it gives (0, 0, 0, 0)
   TextureFormat format() const { return format_; }
@@ -81,6 +95,8 @@ struct SamplerState {
   float minLod = 0.0f;
   float maxLod = 1000.0f;  // VK_LOD_CLAMP_NONE
   BorderColor borderColor = BorderColor::TransparentBlack;
+  bool compareEnable = false;             // a comparison sampler: textureShadow() only
+  CompareOp compareOp = CompareOp::Never;  // reference OP texel gives 1, else 0
 };
 
 // What a `sampler2D` uniform is: a texture (not owned; it must outlive the draws) and a sampler.
@@ -96,6 +112,11 @@ struct Sampler2D {
 
 // GLSL texture(sampler, vec2(u, v)) over the two quads of a batch, implicit LOD.
 inline Vec4T<FloatBatch> texture(const Sampler2D& sampler, FloatBatch u, FloatBatch v);
+
+// GLSL texture(sampler2DShadow, vec3(u, v, reference)): per lane, 1 where `reference compareOp
+// texel` holds for the nearest texel (an ordered compare; NotEqual is unordered), else 0. The sampler
+// must be a comparison sampler on a depth texture (validate()); otherwise every lane is 0.
+inline FloatBatch textureShadow(const Sampler2D& sampler, FloatBatch u, FloatBatch v, FloatBatch reference);
 
 }  // namespace softraster
 

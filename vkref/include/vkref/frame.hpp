@@ -1,6 +1,7 @@
 // vkref frames: what a caller hands the Renderer (a FrameRequest of DrawCalls, each with its
 // ShaderProgram and softraster::PipelineState), what it gets back (FrameImages: colour, depth as
 // floats and depth as stored) and the handle of a frame prepared once and submitted many times.
+// A frame may render depth passes first (shadow maps) whose depth its draws then sample.
 // Deliberately plain values: no Vulkan type appears here, and nothing in a request is kept after
 // Renderer::prepare returns (vertices, indices and uniform blocks are uploaded, push constants recorded).
 #pragma once
@@ -33,9 +34,13 @@ struct ShaderProgram {
 // A texture a draw samples: a combined image sampler at set 1, binding i (i its place in
 // DrawCall::textures), visible to the fragment stage. Every level is uploaded by prepare, once per
 // texture however many draws sample it; nothing of it is kept after prepare returns.
+// Or, with depthPass >= 0, the depth image FrameRequest::depthPasses[depthPass] rendered earlier in
+// the same frame (a shadow map; `texture` then stays null), sampled with `sampler` (a comparison
+// sampler for sampler2DShadow, or a plain one).
 struct TextureBinding {
   const softraster::Texture* texture = nullptr;
   softraster::SamplerState sampler;
+  int depthPass = -1;
 };
 
 // Combined image samplers a draw may bind (set 1, bindings 0..kMaxTextures-1).
@@ -55,6 +60,15 @@ struct DrawCall {
   std::vector<TextureBinding> textures;     // at most kMaxTextures
 };
 
+// A pass that renders depth alone, before the frame's own draws, into a D32_SFLOAT image of its
+// own size with no colour attachment (its draws' programs write no colour), then left for later
+// draws to sample (TextureBinding::depthPass). Its draws sample nothing themselves.
+struct DepthPass {
+  std::uint32_t width = 0, height = 0;
+  float clearDepth = 1.0f;
+  std::vector<DrawCall> draws;
+};
+
 struct FrameRequest {
   std::uint32_t width = 0, height = 0;
   std::array<float, 4> clearColour{0, 0, 0, 0};
@@ -63,6 +77,7 @@ struct FrameRequest {
   std::uint32_t samples = 1;  // 1, or 4: rendered multisampled, colour resolved (average) and
                               // depth resolved (sample 0) before read-back
   std::vector<DrawCall> draws;  // drawn in order; a draw with nothing to assemble is skipped
+  std::vector<DepthPass> depthPasses;  // rendered first, in order, each with the barriers its samplers need
 };
 
 struct FrameImages {

@@ -4,7 +4,7 @@
 // draws with; a state Vulkan here cannot express is reported as an error, never defaulted.
 // A frame is prepared once (images, uploads, pipelines, recorded commands) and submitted as often
 // as wanted, so a benchmark times steady-state frames; render() does all three steps at once.
-// Deliberately not a general Vulkan wrapper: no window, no swapchain, no textures, one queue.
+// Deliberately not a general Vulkan wrapper: no window, no swapchain, 2D textures and depth passes only, one queue.
 // Errors are softraster::Status / Result values of one line; the library never prints.
 #pragma once
 

@@ -18,7 +18,9 @@
 // and cvttps2dq (truncate), both giving INT_MIN for NaN and out-of-range values; floor is roundps.
 //   6. where the 8-bit path does not apply (sRGB; mirrored repeat or clamp to border on an axis),
 //      lavapipe's float path instead: texels to float first (sRGB through its cubic), float
-//      coordinates, fmuladd lerps, the border colour outside the level.
+//      coordinates, fmuladd lerps, the border colour outside the level;
+//   7. depth textures (D32_SFLOAT, one level, nearest) on the float path too; with a comparison
+//      sampler the texel is compared with the reference (lp_build_sample_comparefunc).
 // Deliberately absent: the float path's per-pixel min/mag switch (lp_build_sample_mipmap_both),
 // which Sampler2D::validate refuses; denormal flushing of the derivatives; a build for CPUs
 // without FMA (the float path's lerps are fused, as lavapipe's are on FMA CPUs).
@@ -32,6 +34,7 @@
 #include <bit>
 #include <cmath>
 #include <cstdint>
+#include <cstring>
 #include <iterator>
 
 namespace softraster {
@@ -361,10 +364,18 @@ inline TexelFloat borderColour(BorderColor c) {
 
 // lp_build_sample_texel_soa: the texel at (x, y), or the border colour where a clamp-to-border
 // axis falls outside the level; converted to float.
-inline TexelFloat fetchFloat(const TextureLevel& level, bool srgb, const SamplerState& s, std::int32_t x, std::int32_t y) {
+inline TexelFloat fetchFloat(const TextureLevel& level, TextureFormat format, const SamplerState& s, std::int32_t x,
+                             std::int32_t y) {
   const bool outsideU = s.addressModeU == AddressMode::ClampToBorder && (x < 0 || x >= static_cast<std::int32_t>(level.width));
   const bool outsideV = s.addressModeV == AddressMode::ClampToBorder && (y < 0 || y >= static_cast<std::int32_t>(level.height));
   if (outsideU || outsideV) return borderColour(s.borderColor);
+  if (format == TextureFormat::D32Sfloat) {  // Z32_FLOAT's swizzle: (depth, 0, 0, 1)
+    const std::uint8_t* p = level.rgba.data() + (static_cast<std::size_t>(y) * level.width + static_cast<std::uint32_t>(x)) * 4;
+    float depth;
+    std::memcpy(&depth, p, sizeof depth);
+    return {depth, 0.0f, 0.0f, 1.0f};
+  }
+  const bool srgb = format == TextureFormat::R8G8B8A8Srgb;
   const Texel t = fetch(level, static_cast<std::uint32_t>(x), static_cast<std::uint32_t>(y));
   constexpr float kUnorm = static_cast<float>(1.0 / 255.0);
   if (srgb) return {srgbToLinear(t[0]), srgbToLinear(t[1]), srgbToLinear(t[2]), static_cast<float>(t[3]) * kUnorm};
@@ -375,16 +386,16 @@ inline TexelFloat fetchFloat(const TextureLevel& level, bool srgb, const Sampler
 inline float lerpFloat(float w, float v0, float v1) { return std::fma(w, v1 - v0, v0); }  // lp_build_lerp: fmuladd
 
 // One pixel's colour from one level through the float path.
-inline TexelFloat sampleLevelFloat(const TextureLevel& level, Filter filter, const SamplerState& s, bool srgb,
+inline TexelFloat sampleLevelFloat(const TextureLevel& level, Filter filter, const SamplerState& s, TextureFormat format,
                                    bool potWidth, bool potHeight, float u, float v) {
   if (filter == Filter::Nearest) {
-    return fetchFloat(level, srgb, s, nearestTexelFloat(u, level.width, potWidth, s.addressModeU),
+    return fetchFloat(level, format, s, nearestTexelFloat(u, level.width, potWidth, s.addressModeU),
                       nearestTexelFloat(v, level.height, potHeight, s.addressModeV));
   }
   const AxisTexelsFloat x = linearTexelsFloat(u, level.width, potWidth, s.addressModeU);
   const AxisTexelsFloat y = linearTexelsFloat(v, level.height, potHeight, s.addressModeV);
-  const TexelFloat c00 = fetchFloat(level, srgb, s, x.i0, y.i0), c01 = fetchFloat(level, srgb, s, x.i1, y.i0);
-  const TexelFloat c10 = fetchFloat(level, srgb, s, x.i0, y.i1), c11 = fetchFloat(level, srgb, s, x.i1, y.i1);
+  const TexelFloat c00 = fetchFloat(level, format, s, x.i0, y.i0), c01 = fetchFloat(level, format, s, x.i1, y.i0);
+  const TexelFloat c10 = fetchFloat(level, format, s, x.i0, y.i1), c11 = fetchFloat(level, format, s, x.i1, y.i1);
   TexelFloat out;
   for (int c = 0; c < 4; ++c) {
     out[c] = lerpFloat(y.weight, lerpFloat(x.weight, c00[c], c01[c]), lerpFloat(x.weight, c10[c], c11[c]));
@@ -395,7 +406,36 @@ inline TexelFloat sampleLevelFloat(const TextureLevel& level, Filter filter, con
 // Whether lavapipe samples this in float rather than in 8-bit fixed point (use_aos is false).
 inline bool usesFloatPath(TextureFormat format, const SamplerState& s) {
   const auto simple = [](AddressMode m) { return m == AddressMode::Repeat || m == AddressMode::ClampToEdge; };
-  return format == TextureFormat::R8G8B8A8Srgb || !simple(s.addressModeU) || !simple(s.addressModeV);
+  return format != TextureFormat::R8G8B8A8Unorm || !simple(s.addressModeU) || !simple(s.addressModeV);
+}
+
+// lp_build_sample_comparefunc: reference OP texel, an ordered compare (false with a NaN) for
+// every op but NotEqual, which is unordered (true with a NaN), as D3D10's rules say.
+inline bool compareDepth(CompareOp op, float reference, float texel) {
+  switch (op) {
+    case CompareOp::Never: return false;
+    case CompareOp::Less: return reference < texel;
+    case CompareOp::Equal: return reference == texel;
+    case CompareOp::LessOrEqual: return reference <= texel;
+    case CompareOp::Greater: return reference > texel;
+    case CompareOp::NotEqual: return !(reference == texel);
+    case CompareOp::GreaterOrEqual: return reference >= texel;
+    case CompareOp::Always: return true;
+  }
+  return false;
+}
+
+// One pixel's comparison result from one level (lp_build_sample_image_nearest with a compare
+// mode): the texel fetched as the float path fetches it (the border colour's red outside a
+// clamp-to-border level), compared, 1 or 0. Nearest only: lavapipe gives depth formats no
+// SAMPLED_IMAGE_FILTER_LINEAR, so a linear (percentage-closer) filter is invalid there
+// (Sampler2D::validate refuses it).
+inline float sampleLevelShadow(const TextureLevel& level, const SamplerState& s, bool potWidth, bool potHeight, float u,
+                               float v, float reference) {
+  const TexelFloat texel = fetchFloat(level, TextureFormat::D32Sfloat, s,
+                                      nearestTexelFloat(u, level.width, potWidth, s.addressModeU),
+                                      nearestTexelFloat(v, level.height, potHeight, s.addressModeV));
+  return compareDepth(s.compareOp, reference, texel[0]) ? 1.0f : 0.0f;
 }
 
 }  // namespace detail::texture
@@ -418,7 +458,7 @@ namespace detail::texture {
   const StaticSampler d = staticSampler(s, tex->levels());
   const bool potWidth = isPowerOfTwo(tex->width()), potHeight = isPowerOfTwo(tex->height());
   const float width = static_cast<float>(tex->width()), height = static_cast<float>(tex->height());
-  const bool floatPath = usesFloatPath(tex->format(), s), srgb = tex->format() == TextureFormat::R8G8B8A8Srgb;
+  const bool floatPath = usesFloatPath(tex->format(), s);
   for (int quad = 0; quad < 2; ++quad) {
     float mipFraction = 0.0f;
     const int tl = 2 * quad, tr = tl + 1, bl = tl + 4;
@@ -432,10 +472,10 @@ namespace detail::texture {
     if (d.minFilter != d.magFilter && !lod.minified) filter = d.magFilter, mipLinear = false;
     for (int lane : {tl, tr, bl, bl + 1}) {
       if (floatPath) {
-        TexelFloat c = sampleLevelFloat(tex->level(lod.level0), filter, s, srgb, potWidth, potHeight, u[lane], v[lane]);
+        TexelFloat c = sampleLevelFloat(tex->level(lod.level0), filter, s, tex->format(), potWidth, potHeight, u[lane], v[lane]);
         if (mipLinear) {
           const TexelFloat c1 =
-              sampleLevelFloat(tex->level(lod.level1), filter, s, srgb, potWidth, potHeight, u[lane], v[lane]);
+              sampleLevelFloat(tex->level(lod.level1), filter, s, tex->format(), potWidth, potHeight, u[lane], v[lane]);
           for (int ch = 0; ch < 4; ++ch) c[ch] = lerpFloat(mipFraction, c[ch], c1[ch]);
         }
         for (int ch = 0; ch < 4; ++ch) out[ch][lane] = c[ch];
@@ -451,7 +491,33 @@ namespace detail::texture {
   }
 }
 
+// The comparison results of a batch's lanes (textureShadow). No LOD: a depth texture has one
+// level and nearest filters (Sampler2D::validate), so lavapipe computes none. Out of line, as sampleQuads.
+[[gnu::noinline]] inline void sampleShadowLanes(const Sampler2D& sampler, const float (&u)[kBatchLanes],
+                                                const float (&v)[kBatchLanes], const float (&reference)[kBatchLanes],
+                                                float (&out)[kBatchLanes]) {
+  const Texture* tex = sampler.texture;
+  const SamplerState& s = sampler.sampler;
+  if (tex == nullptr || tex->levels() == 0 || tex->format() != TextureFormat::D32Sfloat || !s.compareEnable) {
+    std::fill(std::begin(out), std::end(out), 0.0f);
+    return;
+  }
+  const bool potWidth = isPowerOfTwo(tex->width()), potHeight = isPowerOfTwo(tex->height());
+  for (int lane = 0; lane < kBatchLanes; ++lane) {
+    out[lane] = sampleLevelShadow(tex->level(0), s, potWidth, potHeight, u[lane], v[lane], reference[lane]);
+  }
+}
+
 }  // namespace detail::texture
+
+inline FloatBatch textureShadow(const Sampler2D& sampler, FloatBatch u, FloatBatch v, FloatBatch reference) {
+  alignas(32) float us[kBatchLanes], vs[kBatchLanes], refs[kBatchLanes], out[kBatchLanes];
+  u.store(us);
+  v.store(vs);
+  reference.store(refs);
+  detail::texture::sampleShadowLanes(sampler, us, vs, refs, out);
+  return FloatBatch::load(out);
+}
 
 inline Vec4T<FloatBatch> texture(const Sampler2D& sampler, FloatBatch u, FloatBatch v) {
   alignas(32) float us[kBatchLanes], vs[kBatchLanes], out[4][kBatchLanes];
