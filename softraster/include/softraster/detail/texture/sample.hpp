@@ -26,6 +26,7 @@
 // without FMA (the float path's lerps are fused, as lavapipe's are on FMA CPUs).
 #pragma once
 
+#include <softraster/detail/fragment/depth.hpp>
 #include <softraster/math.hpp>
 #include <softraster/simd.hpp>
 
@@ -410,20 +411,9 @@ inline bool usesFloatPath(TextureFormat format, const SamplerState& s) {
 }
 
 // lp_build_sample_comparefunc: reference OP texel, an ordered compare (false with a NaN) for
-// every op but NotEqual, which is unordered (true with a NaN), as D3D10's rules say.
-inline bool compareDepth(CompareOp op, float reference, float texel) {
-  switch (op) {
-    case CompareOp::Never: return false;
-    case CompareOp::Less: return reference < texel;
-    case CompareOp::Equal: return reference == texel;
-    case CompareOp::LessOrEqual: return reference <= texel;
-    case CompareOp::Greater: return reference > texel;
-    case CompareOp::NotEqual: return !(reference == texel);
-    case CompareOp::GreaterOrEqual: return reference >= texel;
-    case CompareOp::Always: return true;
-  }
-  return false;
-}
+// every op but NotEqual, which is unordered (true with a NaN), as D3D10's rules say: the depth
+// test's compare (fragment/depth.hpp), whose C++ operators have exactly these semantics.
+inline bool compareDepth(CompareOp op, float reference, float texel) { return detail::compare(op, reference, texel); }
 
 // One pixel's comparison result from one level (lp_build_sample_image_nearest with a compare
 // mode): the texel fetched as the float path fetches it (the border colour's red outside a
