@@ -9,7 +9,11 @@
 //   reflect(i, n)     i - n * (dot(i, n) * 2)
 //   cross(a, b)       a.yzx * b.zxy - a.zxy * b.yzx, each product rounded
 //   maxConstant(x, c) max(x, c) with c a constant: SSE maxps(x, c) (a NaN x gives c)
+//   selectLessEqual(a, b, x, y)  a <= b ? x : y, the compare ordered (false with a NaN)
 //   pow(x, y)         exp2(log2_safe(x) * y), 0 where x == 0 or x is NaN; gallivm's polynomials
+// Each has a float and a FloatBatch form; the batch form is vector code throughout (FloatBatch's
+// sqrt, fma and floor, integer lanes for the exponent bits), step for step the float form, so
+// every lane gets the float form's bits (tests/crosscheck/lighting_test.cpp checks it).
 // The polynomials use fmuladd as gallivm does on a CPU with FMA (every x86-64 CPU this project
 // targets has it); a lavapipe on a CPU without FMA rounds them differently.
 // Deliberately absent: denormal flushing (lavapipe's shaders run with DAZ/FTZ; the lit scenes
@@ -55,32 +59,18 @@ Vec3T<F> operator/(const Vec3T<F>& a, const F& s) {
   return {a.x / s, a.y / s, a.z / s};
 }
 
-// ---- Lane-wise application of a float function to a batch ----
+// ---- a <= b ? x : y (an ordered compare: false where a or b is NaN) ----
 
-namespace detail {
-template <class Function>
-softraster::FloatBatch lanewise(softraster::FloatBatch a, Function f) {
-  alignas(32) float lanes[softraster::kBatchLanes];
-  a.store(lanes);
-  for (float& lane : lanes) lane = f(lane);
-  return softraster::FloatBatch::load(lanes);
+inline float selectLessEqual(float a, float b, float x, float y) { return a <= b ? x : y; }
+inline softraster::FloatBatch selectLessEqual(softraster::FloatBatch a, softraster::FloatBatch b,
+                                              softraster::FloatBatch x, softraster::FloatBatch y) {
+  return softraster::FloatBatch(a.native() <= b.native() ? x.native() : y.native());
 }
-template <class Function>
-softraster::FloatBatch lanewise(softraster::FloatBatch a, softraster::FloatBatch b, Function f) {
-  alignas(32) float x[softraster::kBatchLanes], y[softraster::kBatchLanes];
-  a.store(x);
-  b.store(y);
-  for (int i = 0; i < softraster::kBatchLanes; ++i) x[i] = f(x[i], y[i]);
-  return softraster::FloatBatch::load(x);
-}
-}  // namespace detail
 
 // ---- sqrt: IEEE (llvm.sqrt) ----
 
+// softraster::sqrt for a FloatBatch (simd.hpp), found by argument-dependent lookup.
 inline float sqrt(float x) { return std::sqrt(x); }
-inline softraster::FloatBatch sqrt(softraster::FloatBatch x) {
-  return detail::lanewise(x, [](float v) { return std::sqrt(v); });
-}
 
 // ---- Geometric functions ----
 
@@ -126,22 +116,23 @@ namespace detail {
 // lp_build_polynomial: x2 = x*x; even and odd coefficients each walked from the highest index
 // down, the first taken as it is, each later one fmuladd(x2, value, coeff); then
 // fmuladd(odd, x, even). Coefficients are rounded to float.
-template <std::size_t N>
-float polynomial(float x, const double (&coefficients)[N]) {
-  const float x2 = x * x;
-  float even = 0, odd = 0;
+template <class F, std::size_t N>
+F polynomial(F x, const double (&coefficients)[N]) {
+  using std::fma;  // fma(float...) or FloatBatch's, found by argument-dependent lookup
+  const F x2 = x * x;
+  F even = 0, odd = 0;
   bool haveEven = false, haveOdd = false;
   for (std::size_t i = N; i-- > 0;) {
-    const auto c = static_cast<float>(coefficients[i]);
+    const auto c = F(static_cast<float>(coefficients[i]));
     if (i % 2 == 0) {
-      even = haveEven ? std::fma(x2, even, c) : c;
+      even = haveEven ? fma(x2, even, c) : c;
       haveEven = true;
     } else {
-      odd = haveOdd ? std::fma(x2, odd, c) : c;
+      odd = haveOdd ? fma(x2, odd, c) : c;
       haveOdd = true;
     }
   }
-  return haveOdd ? std::fma(odd, x, even) : even;
+  return haveOdd ? fma(odd, x, even) : even;
 }
 
 // lp_build_exp2_polynomial, EXP_POLY_DEGREE 5: 2^x on [0, 1).
@@ -157,6 +148,27 @@ inline constexpr double kLog2Polynomial[] = {2.88539009343309178325, 0.961791550
 inline std::int32_t truncateToInt(float x) {
   if (!(x > -2147483904.0f && x < 2147483648.0f)) return std::numeric_limits<std::int32_t>::min();
   return static_cast<std::int32_t>(x);
+}
+
+// The batch's lanes as integers: the int32 lanes, and their bits unsigned (which wrap).
+using IntLanes = softraster::FloatBatch::NativeMask;
+using BitLanes = std::uint32_t __attribute__((vector_size(32)));
+
+inline BitLanes bitsOf(softraster::FloatBatch x) { return reinterpret_cast<BitLanes>(x.native()); }
+inline softraster::FloatBatch fromBits(BitLanes bits) {
+  return softraster::FloatBatch(reinterpret_cast<softraster::FloatBatch::Native>(bits));
+}
+// Per lane: `mask` (-1 or 0 per lane) ? a : b.
+inline softraster::FloatBatch select(IntLanes mask, softraster::FloatBatch a, softraster::FloatBatch b) {
+  return softraster::FloatBatch(mask ? a.native() : b.native());
+}
+
+// truncateToInt per lane.
+inline IntLanes truncateToInt(softraster::FloatBatch x) {
+  const softraster::FloatBatch::Native v = x.native();
+  const IntLanes inRange = (v > -2147483904.0f) & (v < 2147483648.0f);
+  const IntLanes whole = __builtin_convertvector(inRange ? v : softraster::FloatBatch::Native{}, IntLanes);
+  return inRange ? whole : IntLanes{} + std::numeric_limits<std::int32_t>::min();
 }
 
 }  // namespace detail
@@ -190,8 +202,37 @@ inline float pow(float x, float y) {
   return (x == 0.0f || std::isnan(x)) ? 0.0f : result;
 }
 
+// The same three over a batch, step for step (each lane gets the float version's bits).
+inline softraster::FloatBatch exp2(softraster::FloatBatch x) {
+  using softraster::FloatBatch;
+  x = sseMin(FloatBatch(128.0f), x);
+  x = sseMax(FloatBatch(-126.99999f), x);
+  const FloatBatch whole = softraster::floor(x);
+  const FloatBatch fraction = x - whole;
+  const detail::BitLanes exponent = (reinterpret_cast<detail::BitLanes>(detail::truncateToInt(whole)) + 127u) << 23;
+  return detail::fromBits(exponent) * detail::polynomial(fraction, detail::kExp2Polynomial);
+}
+
+inline softraster::FloatBatch log2Safe(softraster::FloatBatch x) {
+  using softraster::FloatBatch;
+  const detail::BitLanes bits = detail::bitsOf(x);
+  const FloatBatch exponent(__builtin_convertvector(
+      reinterpret_cast<detail::IntLanes>((bits & 0x7f800000u) >> 23) - 127, FloatBatch::Native));
+  const FloatBatch mantissa = detail::fromBits((bits & 0x007fffffu) | 0x3f800000u);
+  const FloatBatch y = (mantissa - 1.0f) / (mantissa + 1.0f);
+  const FloatBatch z = y * y;
+  FloatBatch result = softraster::fma(y, detail::polynomial(z, detail::kLog2Polynomial), exponent);
+  const FloatBatch::Native v = x.native();
+  result = detail::select(v >= std::numeric_limits<float>::infinity(), FloatBatch(std::numeric_limits<float>::infinity()), result);
+  result = detail::select(v == 0.0f, FloatBatch(-std::numeric_limits<float>::infinity()), result);
+  result = detail::select(v < 0.0f, detail::fromBits(detail::BitLanes{} + 0x7fc00000u), result);
+  return result;
+}
+
 inline softraster::FloatBatch pow(softraster::FloatBatch x, softraster::FloatBatch y) {
-  return detail::lanewise(x, y, [](float a, float b) { return pow(a, b); });
+  const softraster::FloatBatch result = exp2(log2Safe(x) * y);
+  const softraster::FloatBatch::Native v = x.native();
+  return detail::select((v == 0.0f) | (v != v), softraster::FloatBatch(0.0f), result);
 }
 
 }  // namespace shaders::glsl

@@ -76,7 +76,7 @@ struct LitShadowedShader {
       return softraster::textureShadow(uniforms.shadowMap, s, t, reference);
     } else {
       const F depth = softraster::texture(uniforms.shadowMap, s, t).x;
-      return glsl::detail::lanewise(reference, depth, [](float r, float d) { return r <= d ? 1.0f : 0.0f; });
+      return glsl::selectLessEqual(reference, depth, F(1.0f), F(0.0f));
     }
   }
 

@@ -114,8 +114,9 @@ TEST(LavapipeBuiltins, PowIsCloseToLibmWithLavapipesEdgeCases) {
   EXPECT_EQ(shaders::glsl::log2Safe(0.0f), -INFINITY);
 }
 
-// The batch built-ins (on the fast path) give each lane the float version's bits: over random bit patterns (NaN, infinities, negatives, denormals) and over
-// the range the lit models use. A batch is only evaluated on an AVX2 + FMA CPU, inside one
+// The batch built-ins (on the fast path) give each lane the float version's bits: over random bit
+// patterns (NaN, infinities, negatives, denormals) and over the range the lit models use; exp2
+// also over the clamp's edges and every integer step in between (x itself, not only log2's results). A batch is only evaluated on an AVX2 + FMA CPU, inside one
 // flattened AVX2 function as the fast path does it (simd.hpp): without flatten, an optimizer that
 // leaves a batch function out of line (-O1 with AddressSanitizer does) compiles it without AVX
 // and passes its vectors by another ABI, which gave 286 867 wrong lanes there.
@@ -133,11 +134,17 @@ TEST(LavapipeBuiltins, PowIsCloseToLibmWithLavapipesEdgeCases) {
       y[k] = static_cast<float>(random() % 2000) / 10.0f;
     }
     x[3] = 0.0f;
+    x[5] = static_cast<float>(random() % 280001) / 1000.0f - 140.0f;  // exp2's clamps and integer steps
     const FloatBatch bx = FloatBatch::load(x), by = FloatBatch::load(y);
-    const FloatBatch p = shaders::glsl::pow(bx, by), s = shaders::glsl::sqrt(bx);
+    const FloatBatch p = shaders::glsl::pow(bx, by), s = softraster::sqrt(bx);
+    const FloatBatch e = shaders::glsl::exp2(bx), l = shaders::glsl::log2Safe(bx);
+    const FloatBatch sel = shaders::glsl::selectLessEqual(bx, by, FloatBatch(1.0f), FloatBatch(0.0f));
     for (int k = 0; k < softraster::kBatchLanes; ++k) {
       mismatches += differ(p[k], shaders::glsl::pow(x[k], y[k]));
       mismatches += differ(s[k], shaders::glsl::sqrt(x[k]));
+      mismatches += differ(e[k], shaders::glsl::exp2(x[k]));
+      mismatches += differ(l[k], shaders::glsl::log2Safe(x[k]));
+      mismatches += differ(sel[k], shaders::glsl::selectLessEqual(x[k], y[k], 1.0f, 0.0f));
     }
   }
   return mismatches;

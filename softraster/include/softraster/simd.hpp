@@ -13,13 +13,23 @@
 // shader twin would have to be compiled once per target inside the library's dispatch machinery.
 //
 // Helpers here follow lavapipe's shader arithmetic (see docs/lavapipe-rules.md): sseMin/sseMax
-// are SSE minps/maxps (the second operand when either is NaN).
+// are SSE minps/maxps (the second operand when either is NaN). The lane-wise primitives the
+// shaders' built-ins are made of (sqrt, fma, floor, truncation to int32, the lanes' bits) are
+// written so that they need no instruction set of their own either: sqrt is SSE's sqrtps on each
+// half (baseline x86-64; two 128-bit square roots cost what one 256-bit one does), fma a loop of
+// fmaf that GCC turns into one vfmadd where FMA is on, floor and truncation the vector
+// conversions; each gives exactly its float counterpart's bits. Integer work on the lanes (a
+// float's bits, an exponent) uses NativeMask, the int32 vector, through native().
 // Deliberately absent until a shader needs them: transcendental functions (lavapipe's own
-// polynomials), integer batches for shaders, gathers.
+// polynomials live with the shaders' built-ins, shaders/lavapipe_builtins.hpp), gathers.
 #pragma once
 
+#include <cmath>
 #include <cstdint>
 #include <cstring>
+#if defined(__x86_64__)
+#include <xmmintrin.h>
+#endif
 
 // The batch type is 32 bytes wide; outside AVX code GCC notes that passing it by value has a
 // different ABI there. Every function taking one is inline and the fast path inlines them all
@@ -42,7 +52,7 @@ class FloatBatch {
 
   FloatBatch() : v_{} {}
   // Every lane s (implicit, so a shader writes `c * 0.5f` for both of its float types).
-  FloatBatch(float s) : v_(Native{} + s) {}  // NOLINT(google-explicit-constructor); a vector-scalar add broadcasts in one instruction
+  FloatBatch(float s) : v_(Native{s, s, s, s, s, s, s, s}) {}  // NOLINT(google-explicit-constructor); -0 stays -0
   explicit FloatBatch(Native v) : v_(v) {}
 
   static FloatBatch load(const float* p) {
@@ -72,6 +82,45 @@ class FloatBatch {
  private:
   Native v_;
 };
+
+// Lane-wise std::sqrt (IEEE, correctly rounded).
+inline FloatBatch sqrt(FloatBatch a) {
+  const FloatBatch::Native v = a.native();
+#if defined(__x86_64__)
+  using Half = float __attribute__((vector_size(16)));
+  const auto root = [](Half h) { return reinterpret_cast<Half>(_mm_sqrt_ps(reinterpret_cast<__m128>(h))); };
+  const Half low = root(__builtin_shufflevector(v, v, 0, 1, 2, 3));
+  const Half high = root(__builtin_shufflevector(v, v, 4, 5, 6, 7));
+  return FloatBatch(__builtin_shufflevector(low, high, 0, 1, 2, 3, 4, 5, 6, 7));
+#else
+  FloatBatch::Native r;
+  for (int i = 0; i < kBatchLanes; ++i) r[i] = std::sqrt(v[i]);
+  return FloatBatch(r);
+#endif
+}
+
+// Lane-wise std::fma: a * b + c rounded once.
+inline FloatBatch fma(FloatBatch a, FloatBatch b, FloatBatch c) {
+  const FloatBatch::Native x = a.native(), y = b.native(), z = c.native();
+  FloatBatch::Native r;
+  for (int i = 0; i < kBatchLanes; ++i) r[i] = __builtin_fmaf(x[i], y[i], z[i]);
+  return FloatBatch(r);
+}
+
+// Lane-wise std::floor: -0 stays -0; NaN, infinities and lanes of magnitude 2^23 or more (whole
+// already) pass as they are.
+inline FloatBatch floor(FloatBatch a) {
+  using Native = FloatBatch::Native;
+  using Ints = FloatBatch::NativeMask;
+  const Native v = a.native();
+  const Ints small = (v < 8388608.0f) & (v > -8388608.0f);  // false for NaN
+  const Native whole = __builtin_convertvector(__builtin_convertvector(small ? v : Native{}, Ints), Native);
+  const Native down = whole > v ? whole - 1.0f : whole;
+  // A lane that comes down to zero keeps its sign: floor(-0) is -0, floor(0.5) is +0.
+  const Ints sign = reinterpret_cast<Ints>(v) & (down == 0.0f) & (Ints{} + INT32_MIN);
+  const Native signedDown = reinterpret_cast<Native>(reinterpret_cast<Ints>(down) | sign);
+  return FloatBatch(small ? signedDown : v);
+}
 
 // The same helpers for plain float, so a shader twin calls them unqualified for either type.
 inline float sseMin(float a, float b) { return a < b ? a : b; }
