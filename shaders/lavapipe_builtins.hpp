@@ -153,18 +153,21 @@ inline std::int32_t truncateToInt(float x) {
 // The batch's lanes as integers: the int32 lanes, and their bits unsigned (which wrap).
 using IntLanes = softraster::FloatBatch::NativeMask;
 using BitLanes = std::uint32_t __attribute__((vector_size(32)));
+// Always inlined, as FloatBatch's own Native functions: a 32-byte vector passed by value is in a
+// ymm register for AVX code and in memory for baseline code, so a call between the two must not
+// exist (simd.hpp).
 
-inline BitLanes bitsOf(softraster::FloatBatch x) { return reinterpret_cast<BitLanes>(x.native()); }
-inline softraster::FloatBatch fromBits(BitLanes bits) {
+[[gnu::always_inline]] inline BitLanes bitsOf(softraster::FloatBatch x) { return reinterpret_cast<BitLanes>(x.native()); }
+[[gnu::always_inline]] inline softraster::FloatBatch fromBits(BitLanes bits) {
   return softraster::FloatBatch(reinterpret_cast<softraster::FloatBatch::Native>(bits));
 }
 // Per lane: `mask` (-1 or 0 per lane) ? a : b.
-inline softraster::FloatBatch select(IntLanes mask, softraster::FloatBatch a, softraster::FloatBatch b) {
+[[gnu::always_inline]] inline softraster::FloatBatch select(IntLanes mask, softraster::FloatBatch a, softraster::FloatBatch b) {
   return softraster::FloatBatch(mask ? a.native() : b.native());
 }
 
 // truncateToInt per lane.
-inline IntLanes truncateToInt(softraster::FloatBatch x) {
+[[gnu::always_inline]] inline IntLanes truncateToInt(softraster::FloatBatch x) {
   const softraster::FloatBatch::Native v = x.native();
   const IntLanes inRange = (v > -2147483904.0f) & (v < 2147483648.0f);
   const IntLanes whole = __builtin_convertvector(inRange ? v : softraster::FloatBatch::Native{}, IntLanes);

@@ -31,9 +31,9 @@
 #include <xmmintrin.h>
 #endif
 
-// The batch type is 32 bytes wide; outside AVX code GCC notes that passing it by value has a
-// different ABI there. Every function taking one is inline and the fast path inlines them all
-// into its own AVX2 entry point, so no call with that ABI exists.
+// The native vectors are 32 bytes wide; outside AVX code GCC notes that passing one by value has
+// a different ABI there. FloatBatch itself never travels in a register (its copy constructor says
+// why), and the functions that take or return a Native vector are always inlined.
 #pragma GCC diagnostic push
 #pragma GCC diagnostic ignored "-Wpsabi"
 #if defined(__clang__)  // every lane rounds on its own, whatever the user's flags (math.hpp says why)
@@ -53,7 +53,15 @@ class FloatBatch {
   FloatBatch() : v_{} {}
   // Every lane s (implicit, so a shader writes `c * 0.5f` for both of its float types).
   FloatBatch(float s) : v_(Native{s, s, s, s, s, s, s, s}) {}  // NOLINT(google-explicit-constructor); -0 stays -0
-  explicit FloatBatch(Native v) : v_(v) {}
+  [[gnu::always_inline]] explicit FloatBatch(Native v) : v_(v) {}
+  // User-provided on purpose: it makes FloatBatch "non-trivial for the purposes of calls", so the
+  // C++ ABI passes and returns it through memory whatever the instruction set. A trivially
+  // copyable 32-byte vector travels in a ymm register between AVX functions but through memory
+  // from baseline ones, so an AVX2 draw loop calling a shader function that was not inlined (the
+  // sanitizer build does not flatten) read its arguments from the wrong place. Inlined code, and
+  // so every flattened draw, is unchanged.
+  FloatBatch(const FloatBatch& other) : v_(other.v_) {}
+  FloatBatch& operator=(const FloatBatch& other) = default;
 
   static FloatBatch load(const float* p) {
     Native v;
@@ -63,7 +71,7 @@ class FloatBatch {
   void store(float* p) const { std::memcpy(p, &v_, sizeof v_); }
 
   float operator[](int lane) const { return v_[lane]; }
-  Native native() const { return v_; }
+  [[gnu::always_inline]] Native native() const { return v_; }
 
   friend FloatBatch operator+(FloatBatch a, FloatBatch b) { return FloatBatch(a.v_ + b.v_); }
   friend FloatBatch operator-(FloatBatch a, FloatBatch b) { return FloatBatch(a.v_ - b.v_); }
