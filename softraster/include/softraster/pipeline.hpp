@@ -95,11 +95,14 @@ class Context {
     if constexpr (!checkShaderInterface<Shader>()) {
       return Status::error("not a shader");  // unreachable: checkShaderInterface has failed the build
     } else {
-      for (std::size_t i = 0; i < indices.size(); ++i) {
-        if (indices[i] >= vertices.size()) {
-          return Status::error("index " + std::to_string(i) + " (" + std::to_string(indices[i]) +
-                               ") is past the last vertex (" + std::to_string(vertices.size()) + " vertices)");
-        }
+      // The largest index first (a loop the compiler vectorises), the offending one only on failure.
+      std::uint32_t largest = 0;
+      for (const std::uint32_t index : indices) largest = std::max(largest, index);
+      if (!indices.empty() && largest >= vertices.size()) {
+        const auto past = std::find_if(indices.begin(), indices.end(), [&](std::uint32_t i) { return i >= vertices.size(); });
+        const auto i = static_cast<std::size_t>(past - indices.begin());
+        return Status::error("index " + std::to_string(i) + " (" + std::to_string(*past) +
+                             ") is past the last vertex (" + std::to_string(vertices.size()) + " vertices)");
       }
       const detail::ScratchPool::Lease scratch = scratch_->lease();
       return drawPrimitives<Shader, Formats...>(state, uniforms, vertices, indices, framebuffer, *scratch);
