@@ -6,6 +6,12 @@
 //   (fragment/shade, over exact/rasterizer and exact/interpolation).
 // Primitives reach the fragment stage in submission order; with more than one thread the band
 // queue (fast/bands.hpp) draws them band by band in parallel, each band in that order.
+// With more than one thread the front end runs in parallel too, in rounds of kRoundPrimitives
+// primitives: the vertices are shaded in ranges, and a round's primitives are cut into
+// consecutive ranges (whole vertex batches for triangles), each run by one front-end worker
+// (its clipping scratch, and a recorder of the band queue with a list of its own); then the
+// band queue draws the round. A worker's range follows the one before it in the draw, so the
+// bands see the primitives in submission order and the output does not depend on the threads.
 // The same loop serves the scalar path and the fast path: only the fragment stage differs. It
 // serves the course's methods too (course/draw.hpp): with Course a course::CourseTriangles, every
 // filled triangle goes to it after the front end, instead of snapping, setup and the fragment
@@ -86,7 +92,7 @@ class ExactDraw {
     } else {
       drawTriangles(indices);
     }
-    fragments_.finish();
+    fragments_.endRound();
   }
 
  private:
@@ -102,32 +108,105 @@ class ExactDraw {
     }
   }
 
+  using Queue = BandQueue<Fragments, typename Shader::Uniforms, N>;
+
+  // One front-end worker: where its set-up primitives go and its clipping scratch.
+  struct Worker {
+    typename Queue::Recorder sink;
+    ClippedPolygon<N> polygon;
+  };
+
+  // Primitives per round of the parallel front end (the top comment), and the fewest a draw
+  // needs before its front end is shared out: fewer are set up by the calling thread in one round.
+  static constexpr std::size_t kRoundPrimitives = 1u << 15;
+  static constexpr std::size_t kParallelPrimitives = 2048;
+  static constexpr std::size_t kVertexRange = 4096;  // vertices per task of the parallel vertex stage
+
+  // run(worker, begin, end) over [0, count) in rounds, each cut into consecutive ranges that
+  // start at a multiple of `align` (the vertex batches), one per worker, on the pool's threads
+  // when there are enough primitives; the band queue draws each round.
+  template <class Range>
+  void forEachRange(std::size_t count, std::size_t align, Range&& range) {
+    ThreadPool* pool = fragments_.pool();
+    if (pool == nullptr || count < kParallelPrimitives) {
+      Worker worker{fragments_.recorder(0), {}};
+      range(worker, 0, count);
+      return;
+    }
+    const std::size_t workers = fragments_.workers();
+    const std::size_t round = std::max<std::size_t>(1, kRoundPrimitives / align) * align;  // rounds start on a batch too
+    for (std::size_t start = 0; start < count; start += round) {
+      const std::size_t end = std::min(count, start + round);
+      const std::size_t per = ((end - start + workers - 1) / workers + align - 1) / align * align;
+      pool->run(workers, [&](std::size_t k) {
+        const std::size_t begin = std::min(end, start + k * per);
+        Worker worker{fragments_.recorder(static_cast<unsigned>(k)), {}};
+        range(worker, begin, std::min(end, begin + per));
+      });
+      fragments_.endRound();
+    }
+  }
+
   void shadeVertices(std::span<const typename Shader::Vertex> vertices) {
     shaded_.resize(vertices.size());
-    for (std::size_t i = 0; i < vertices.size(); ++i) {
+    ThreadPool* pool = fragments_.pool();
+    if (pool == nullptr || vertices.size() < 2 * kVertexRange) {
+      shadeVertexRange(vertices, 0, vertices.size());
+      return;
+    }
+    pool->run((vertices.size() + kVertexRange - 1) / kVertexRange, [&](std::size_t k) {
+      const std::size_t begin = k * kVertexRange;
+      // Reached through std::function, outside the flattened entry point: compiled again for the
+      // stage's instruction set, so fmuladd stays one instruction.
+      callCompiledFor<Fragments::kInstructionSet, &ExactDraw::shadeVertexRange>(
+          *this, vertices, begin, std::min(vertices.size(), begin + kVertexRange));
+    });
+  }
+
+  void shadeVertexRange(std::span<const typename Shader::Vertex> vertices, std::size_t begin, std::size_t end) {
+    for (std::size_t i = begin; i < end; ++i) {
       shaded_[i] = shadeVertex<Shader, Fused>(uniforms_, vertices[i], transform_, !rs_.depthClampEnable);
     }
   }
 
+  // A range of the front end run by a worker, compiled for the stage's instruction set (a task of
+  // the pool runs outside the flattened entry point).
+  template <auto Member, class... Args>
+  void runRange(Worker& worker, Args&&... args) {
+    callCompiledFor<Fragments::kInstructionSet, Member>(*this, worker, std::forward<Args>(args)...);
+  }
+
   void drawPoints(std::span<const std::uint32_t> indices) {
+    forEachRange(indices.size(), 1, [&](Worker& worker, std::size_t begin, std::size_t end) {
+      runRange<&ExactDraw::drawPointRange>(worker, indices.subspan(begin, end - begin));
+    });
+  }
+
+  void drawPointRange(Worker& worker, std::span<const std::uint32_t> indices) {
     for (const std::uint32_t index : indices) {
       const Vertex& v = shaded_[index];
-      if (pointSurvivesClipping(v)) drawPoint(v);
+      if (pointSurvivesClipping(v)) drawPointHere(worker, v);
     }
   }
 
   void drawLines(std::span<const std::uint32_t> indices) {
-    Vertex clippedA, clippedB;
     assembleLines(state_.topology, indices, lines_);
-    for (const LineIndices& l : lines_) {
+    forEachRange(lines_.size(), 1, [&](Worker& worker, std::size_t begin, std::size_t end) {
+      runRange<&ExactDraw::drawLineRange>(worker, std::span<const LineIndices>(lines_).subspan(begin, end - begin));
+    });
+  }
+
+  void drawLineRange(Worker& worker, std::span<const LineIndices> lines) {
+    Vertex clippedA, clippedB;
+    for (const LineIndices& l : lines) {
       const Vertex& a = shaded_[l[0]];
       const Vertex& b = shaded_[l[1]];
       const std::uint32_t outside = a.clipMask | b.clipMask;
       if (outside == 0) {
-        drawLine(a, b);
+        drawLineHere(worker, a, b);
       } else if ((a.clipMask & b.clipMask) == 0 &&
                  clipLine(a, b, outside, transform_, kInterpolation, clippedA, clippedB)) {
-        drawLine(clippedA, clippedB);
+        drawLine(worker, clippedA, clippedB);
       }
     }
   }
@@ -137,81 +216,93 @@ class ExactDraw {
   void drawTriangles(std::span<const std::uint32_t> indices) {
     winding_ = windingFilter(rs_);
     if (!winding_.drawClockwise && !winding_.drawCounterClockwise) return;
-    const bool unfilled = rs_.polygonMode != PolygonMode::Fill;
     assembleTriangles(state_.topology, indices, triangles_);
-    const std::vector<TriangleIndices>& triangles = triangles_;
+    const std::size_t batchSize = trianglesPerBatch(state_.topology);
+    forEachRange(triangles_.size(), batchSize, [&](Worker& worker, std::size_t begin, std::size_t end) {
+      runRange<&ExactDraw::drawTriangleRange>(worker,
+                                              std::span<const TriangleIndices>(triangles_).subspan(begin, end - begin));
+    });
+  }
+
+  // `triangles` starts a vertex batch.
+  void drawTriangleRange(Worker& worker, std::span<const TriangleIndices> triangles) {
+    const bool unfilled = rs_.polygonMode != PolygonMode::Fill;
     const std::size_t batchSize = trianglesPerBatch(state_.topology);
     for (std::size_t start = 0; start < triangles.size(); start += batchSize) {
-      const auto batch = std::span(triangles).subspan(start, std::min(batchSize, triangles.size() - start));
+      const auto batch = triangles.subspan(start, std::min(batchSize, triangles.size() - start));
       const bool throughDrawPipeline = unfilled || batchNeedsClipping(batch, shaded_);
       for (const TriangleIndices& t : batch) {
         const Vertex& v0 = shaded_[t[0]];
         const Vertex& v1 = shaded_[t[1]];
         const Vertex& v2 = shaded_[t[2]];
         if (throughDrawPipeline) {
-          drawThroughPipeline(v0, v1, v2);
+          drawThroughPipeline(worker, v0, v1, v2);
         } else {
-          drawTriangle(v0, v1, v2);
+          drawTriangleHere(worker, v0, v1, v2);
         }
       }
     }
   }
 
+  // The straight path of a range inlines the set-up of a triangle, a line or a point; the draw
+  // pipeline (clipping, the unfilled stage) calls them from several places, through one copy
+  // each compiled for the stage's instruction set (detail/instruction_set.hpp) rather than a
+  // copy in every caller.
+  void drawTriangle(Worker& worker, const Vertex& a, const Vertex& b, const Vertex& c) {
+    callCompiledFor<Fragments::kInstructionSet, &ExactDraw::drawTriangleHere>(*this, worker, a, b, c);
+  }
+  void drawLine(Worker& worker, const Vertex& a, const Vertex& b) {
+    callCompiledFor<Fragments::kInstructionSet, &ExactDraw::drawLineHere>(*this, worker, a, b);
+  }
+  void drawPoint(Worker& worker, const Vertex& v) {
+    callCompiledFor<Fragments::kInstructionSet, &ExactDraw::drawPointHere>(*this, worker, v);
+  }
+
   // Mesa's draw pipeline for one triangle: clip, float cull, then fill or the unfilled stage.
-  void drawThroughPipeline(const Vertex& v0, const Vertex& v1, const Vertex& v2) {
+  void drawThroughPipeline(Worker& worker, const Vertex& v0, const Vertex& v1, const Vertex& v2) {
     const std::uint32_t outside = v0.clipMask | v1.clipMask | v2.clipMask;
     if (outside == 0) {
-      if (survivesPipelineCull(v0.window, v1.window, v2.window, rs_)) drawCulled(v0, v1, v2, 7u);
+      if (survivesPipelineCull(v0.window, v1.window, v2.window, rs_)) drawCulled(worker, v0, v1, v2, 7u);
       return;
     }
     if ((v0.clipMask & v1.clipMask & v2.clipMask) != 0) return;  // entirely outside one plane
-    if (!clipTriangle(v0, v1, v2, outside, transform_, kInterpolation, polygon_,
-                      rs_.polygonMode == PolygonMode::Point)) {
+    ClippedPolygon<N>& polygon = worker.polygon;
+    if (!clipTriangle(v0, v1, v2, outside, transform_, kInterpolation, polygon, rs_.polygonMode == PolygonMode::Point)) {
       return;
     }
-    for (int i = 2; i < polygon_.count; ++i) {  // emitted as a fan from vertex 0
-      const Vertex& p0 = polygon_.vertices[0];
-      const Vertex& p1 = polygon_.vertices[static_cast<std::size_t>(i - 1)];
-      const Vertex& p2 = polygon_.vertices[static_cast<std::size_t>(i)];
+    for (int i = 2; i < polygon.count; ++i) {  // emitted as a fan from vertex 0
+      const Vertex& p0 = polygon.vertices[0];
+      const Vertex& p1 = polygon.vertices[static_cast<std::size_t>(i - 1)];
+      const Vertex& p2 = polygon.vertices[static_cast<std::size_t>(i)];
       if (survivesPipelineCull(p0.window, p1.window, p2.window, rs_)) {
-        drawCulled(p0, p1, p2, fanTriangleEdgeFlags(polygon_, i));
+        drawCulled(worker, p0, p1, p2, fanTriangleEdgeFlags(polygon, i));
       }
     }
   }
 
   // A triangle past the draw pipeline's cull: filled, or as lines or points.
-  void drawCulled(const Vertex& a, const Vertex& b, const Vertex& c, unsigned edgeFlags) {
+  void drawCulled(Worker& worker, const Vertex& a, const Vertex& b, const Vertex& c, unsigned edgeFlags) {
     if (rs_.polygonMode == PolygonMode::Fill) {
-      drawTriangle(a, b, c);
+      drawTriangle(worker, a, b, c);
       return;
     }
     drawUnfilledTriangle(
-        rs_.polygonMode, a, b, c, edgeFlags, kInterpolation, [&](const Vertex& p, const Vertex& q) { drawLine(p, q); },
-        [&](const Vertex& p) { drawPoint(p); });
+        rs_.polygonMode, a, b, c, edgeFlags, kInterpolation,
+        [&](const Vertex& p, const Vertex& q) { drawLine(worker, p, q); },
+        [&](const Vertex& p) { drawPoint(worker, p); });
   }
-
-  // drawTriangle, drawLine and drawPoint are called from several places (straight, after
-  // clipping, from the unfilled stage): each is compiled once, for the fragment stage's
-  // instruction set (detail/instruction_set.hpp), rather than copied into every caller.
-  void drawTriangle(const Vertex& a, const Vertex& b, const Vertex& c) {
-    callCompiledFor<Fragments::kInstructionSet, &ExactDraw::drawTriangleHere>(*this, a, b, c);
-  }
-  void drawLine(const Vertex& a, const Vertex& b) {
-    callCompiledFor<Fragments::kInstructionSet, &ExactDraw::drawLineHere>(*this, a, b);
-  }
-  void drawPoint(const Vertex& v) { callCompiledFor<Fragments::kInstructionSet, &ExactDraw::drawPointHere>(*this, v); }
 
   // Snapping, the fixed-point cull, setup and fragments of one filled triangle; or the course
   // method's own cull, setup, coverage and interpolation.
-  void drawTriangleHere(const Vertex& a, const Vertex& b, const Vertex& c) {
+  void drawTriangleHere(Worker& worker, const Vertex& a, const Vertex& b, const Vertex& c) {
     if constexpr (kCourse) {
       course_.drawTriangle(a, b, c, winding_);
     } else {
-      drawExactTriangle(a, b, c);
+      drawExactTriangle(worker, a, b, c);
     }
   }
 
-  void drawExactTriangle(const Vertex& a, const Vertex& b, const Vertex& c) {
+  void drawExactTriangle(Worker& worker, const Vertex& a, const Vertex& b, const Vertex& c) {
     const float pixelOffset = multisample_ ? 0.0f : kPixelCentreOffset;
     FixedTriangle fixed = snapTriangle(a.window, b.window, c.window, pixelOffset);
     const int area = fixedAreaSign(fixed);
@@ -228,23 +319,23 @@ class ExactDraw {
     const TriangleInterpolants<N> interpolants =
         setupInterpolants(a, v1, v2, kInterpolation, rs_.depthBias, Format, pixelOffset);
     if (multisample_) {
-      fragments_.shadeSamples(edges.edges, edges.bounds, interpolants);
+      worker.sink.shadeSamples(edges.edges, edges.bounds, interpolants);
     } else {
-      fragments_.shadePixels(edges.edges, edges.bounds, interpolants);
+      worker.sink.shadePixels(edges.edges, edges.bounds, interpolants);
     }
   }
 
-  void drawLineHere(const Vertex& a, const Vertex& b) {
+  void drawLineHere(Worker& worker, const Vertex& a, const Vertex& b) {
     const auto line = rs_.lineRasterization == LineRasterization::Bresenham
                           ? setupBresenhamLine(a.window, b.window, rs_.lineWidth)
                           : setupRectangularLine(a.window, b.window, rs_.lineWidth);
     if (!line) return;
-    fragments_.shadePixels(line->quad.edges, line->quad.bounds, setupLineInterpolants(a, b, *line, kInterpolation));
+    worker.sink.shadePixels(line->quad.edges, line->quad.bounds, setupLineInterpolants(a, b, *line, kInterpolation));
   }
 
-  void drawPointHere(const Vertex& v) {
+  void drawPointHere(Worker& worker, const Vertex& v) {
     const QuadEdges quad = setupPoint(v.window, v.pointSize);
-    fragments_.shadePixels(quad.edges, quad.bounds, setupPointInterpolants(v, kInterpolation));
+    worker.sink.shadePixels(quad.edges, quad.bounds, setupPointInterpolants(v, kInterpolation));
   }
 
   // Constant for the draw.
@@ -255,13 +346,12 @@ class ExactDraw {
   ViewportTransform transform_;
   PixelRect region_;
   bool multisample_;
-  BandQueue<Fragments, typename Shader::Uniforms, N> fragments_;  // the stage, on one thread or in bands
+  Queue fragments_;  // the stage, on one thread or in bands
   WindingFilter winding_{true, true};
-  // Scratch: the Context's, reused across draws; polygon_ across primitives.
+  // Scratch: the Context's, reused across draws.
   std::vector<Vertex>& shaded_;
   std::vector<TriangleIndices>& triangles_;
   std::vector<LineIndices>& lines_;
-  ClippedPolygon<N> polygon_;
   [[no_unique_address]] Course course_;  // after viewport_ and region_, which it is made from
 };
 

@@ -1,17 +1,22 @@
 // BandQueue: the fragment stage the draw loop talks to when the Context has more than one
-// thread. It records each set-up primitive (its edges, bounds and interpolants) instead of
-// shading it, bins the records into bands of kBandRows rows of the draw region, and then draws
-// the bands in parallel (ThreadPool, fast/pool.hpp): each band by one thread, with its own
-// fragment stage clipped to the band, replaying its records in submission order.
-// Every pixel belongs to exactly one band and sees its primitives in submission order, so the
-// output is the same bits whatever the thread count (tests/softraster/fast_path_test.cpp).
-// Records are drawn in chunks of kChunk primitives, so memory stays bounded for any draw; the
-// records and bins are the Context's scratch (exact/scratch.hpp), so a draw allocates none.
-// A clear pending on the framebuffer (Framebuffer::clear) is written by the first chunk, each
+// thread. The draw loop's front end hands it each set-up primitive (its edges, bounds and
+// interpolants) through a Recorder; the queue keeps the primitive as a record instead of shading
+// it, binned into the bands of kBandRows rows of the draw region it touches, and at the end of
+// each round of primitives draws the bands in parallel (ThreadPool, fast/pool.hpp): each band by
+// one thread, with its own fragment stage clipped to the band, replaying its records in
+// submission order.
+// The front end itself may run on several threads (exact/draw.hpp): within a round, front-end
+// worker k records into list k, its own records and bins, and a band replays list 0's records,
+// then list 1's, and so on; worker k's primitives come after worker k-1's in the draw, so that is
+// submission order. Every pixel belongs to exactly one band and sees its primitives in submission
+// order, so the output is the same bits whatever the thread count (tests/crosscheck/fast_path_test.cpp).
+// Rounds are bounded by the draw loop (kRoundPrimitives there), so memory stays bounded for any
+// draw; the records and bins are the Context's scratch (exact/scratch.hpp), so a draw allocates none.
+// A clear pending on the framebuffer (Framebuffer::clear) is written by the first round, each
 // band's rows (full width) by the band's thread just before it draws them; rows outside the
 // draw region by the calling thread.
-// With no pool (one thread) it forwards every call straight to one stage (whose framebuffer
-// access writes a pending clear whole).
+// With no pool (one thread) every Recorder forwards its calls straight to one stage (whose
+// framebuffer access writes a pending clear whole).
 // Deliberately absent: square tiles (bands are simpler to bin and balance as well on 2-8 threads),
 // a per-tile depth range.
 #pragma once
@@ -35,9 +40,19 @@ namespace softraster::detail {
 
 template <class Stage, class Uniforms, int N>
 class BandQueue {
+  enum class Kind : std::uint8_t { Triangle, Quad, SampledTriangle };
+  struct Record {
+    Kind kind;
+    EdgeFunction edges[4];
+    PixelRect bounds;
+    TriangleInterpolants<N> interpolants;
+  };
+
  public:
   static constexpr int kBandRows = 32;
-  static constexpr std::size_t kChunk = 16384;  // ~3 MB of records: few enough hand-overs to the threads
+  // Front-end workers per thread: more lists than threads, so a round's work is shared out
+  // evenly when some parts of the draw cost more than others (clipping, culled runs).
+  static constexpr unsigned kListsPerThread = 4;
 
   BandQueue(ThreadPool* pool, DrawScratch& scratch, const PipelineState& state, const Uniforms& uniforms,
             Framebuffer& framebuffer, const Viewport& viewport, const PixelRect& region, bool inverseZ)
@@ -48,76 +63,94 @@ class BandQueue {
         viewport_(viewport),
         region_(region),
         inverseZ_(inverseZ),
-        records_(scratch.vector<Record>(ScratchSlot::BandRecords)),
+        bands_(region.empty() ? 0 : (region.y1 - region.y0) / kBandRows + 1),
+        lists_(scratch.vector<std::vector<Record>>(ScratchSlot::BandRecords)),
         bins_(scratch.vector<std::vector<std::uint32_t>>(ScratchSlot::BandBins)) {
-    records_.clear();
-    if (pool_ == nullptr) direct_.emplace(state, uniforms, framebuffer, viewport, region, inverseZ);
-  }
-
-  template <int E>
-  void shadePixels(const EdgeFunction (&edges)[E], const PixelRect& bounds, const TriangleInterpolants<N>& t) {
-    if (direct_) {
-      direct_->shadePixels(edges, bounds, t);
+    if (pool_ == nullptr) {
+      direct_.emplace(state, uniforms, framebuffer, viewport, region, inverseZ);
       return;
     }
-    Record& r = records_.emplace_back();
-    r.kind = E == 3 ? Kind::Triangle : Kind::Quad;
-    std::copy(edges, edges + E, r.edges);
-    r.bounds = bounds;
-    r.interpolants = t;
-    if (records_.size() == kChunk) flush();
+    lists_.resize(workers());
+    for (auto& list : lists_) list.clear();
+    bins_.resize(workers() * static_cast<std::size_t>(bands_));
+    for (auto& bin : bins_) bin.clear();
   }
 
-  void shadeSamples(const EdgeFunction (&edges)[3], const PixelRect& bounds, const TriangleInterpolants<N>& t) {
-    if (direct_) {
-      direct_->shadeSamples(edges, bounds, t);
-      return;
+  // Where one front-end worker's set-up primitives go: the same calls as a fragment stage.
+  class Recorder {
+   public:
+    Recorder(BandQueue& queue, unsigned list) : queue_(queue), list_(list) {}
+
+    template <int E>
+    void shadePixels(const EdgeFunction (&edges)[E], const PixelRect& bounds, const TriangleInterpolants<N>& t) {
+      if (queue_.direct_) {
+        queue_.direct_->shadePixels(edges, bounds, t);
+      } else {
+        queue_.record(list_, E == 3 ? Kind::Triangle : Kind::Quad, edges, bounds, t);
+      }
     }
-    Record& r = records_.emplace_back();
-    r.kind = Kind::SampledTriangle;
-    std::copy(edges, edges + 3, r.edges);
-    r.bounds = bounds;
-    r.interpolants = t;
-    if (records_.size() == kChunk) flush();
-  }
 
-  // Draws what is still recorded; call once at the end of the draw.
-  void finish() {
-    if (!direct_ && (!records_.empty() || framebuffer_.clearPending())) flush();
+    void shadeSamples(const EdgeFunction (&edges)[3], const PixelRect& bounds, const TriangleInterpolants<N>& t) {
+      if (queue_.direct_) {
+        queue_.direct_->shadeSamples(edges, bounds, t);
+      } else {
+        queue_.record(list_, Kind::SampledTriangle, edges, bounds, t);
+      }
+    }
+
+   private:
+    BandQueue& queue_;
+    unsigned list_;
+  };
+
+  // The threads (nullptr: everything on the calling thread, straight to one stage).
+  ThreadPool* pool() const { return pool_; }
+  // How many recorders a round may use (list k is recorder k's).
+  unsigned workers() const { return pool_ != nullptr ? pool_->threads() * kListsPerThread : 1; }
+  Recorder recorder(unsigned list) { return Recorder(*this, list); }
+
+  // Draws what the recorders recorded in this round; the front end calls it between rounds and
+  // once at the end of the draw.
+  void endRound() {
+    if (direct_) return;
+    bool empty = true;
+    for (const auto& list : lists_) empty = empty && list.empty();
+    if (!empty || framebuffer_.clearPending()) flush();
   }
 
  private:
-  enum class Kind : std::uint8_t { Triangle, Quad, SampledTriangle };
-  struct Record {
-    Kind kind;
-    EdgeFunction edges[4];
-    PixelRect bounds;
-    TriangleInterpolants<N> interpolants;
-  };
+  template <int E>
+  void record(unsigned list, Kind kind, const EdgeFunction (&edges)[E], const PixelRect& bounds,
+              const TriangleInterpolants<N>& t) {
+    const PixelRect box = intersect(bounds, region_);
+    if (box.empty()) return;  // no band would draw it
+    std::vector<Record>& records = lists_[list];
+    const auto index = static_cast<std::uint32_t>(records.size());
+    Record& r = records.emplace_back();
+    r.kind = kind;
+    std::copy(edges, edges + E, r.edges);
+    r.bounds = bounds;
+    r.interpolants = t;
+    const int first = (box.y0 - region_.y0) / kBandRows, last = (box.y1 - region_.y0) / kBandRows;
+    std::vector<std::uint32_t>* bins = bins_.data() + static_cast<std::size_t>(list) * bands_;
+    for (int b = first; b <= last; ++b) bins[b].push_back(index);
+  }
 
   void flush() {
-    const int bands = (region_.y1 - region_.y0) / kBandRows + 1;
-    bins_.resize(static_cast<std::size_t>(bands));
-    for (auto& bin : bins_) bin.clear();
-    for (std::size_t i = 0; i < records_.size(); ++i) {
-      const PixelRect box = intersect(records_[i].bounds, region_);
-      if (box.empty()) continue;
-      const int first = (box.y0 - region_.y0) / kBandRows, last = (box.y1 - region_.y0) / kBandRows;
-      for (int b = first; b <= last; ++b) bins_[static_cast<std::size_t>(b)].push_back(static_cast<std::uint32_t>(i));
-    }
     const std::optional<Framebuffer::PendingClear> clear = framebuffer_.takePendingClear();
     if (clear) {  // the rows no band covers
       if (region_.y0 > 0) framebuffer_.clearRows(*clear, 0, static_cast<std::uint32_t>(region_.y0 - 1));
       framebuffer_.clearRows(*clear, static_cast<std::uint32_t>(region_.y1 + 1), framebuffer_.height() - 1);
     }
-    pool_->run(static_cast<std::size_t>(bands), [this, &clear](std::size_t band) {
+    pool_->run(static_cast<std::size_t>(bands_), [this, &clear](std::size_t band) {
       if (clear) {
         const PixelRect rows = bandRows(band);
         framebuffer_.clearRows(*clear, static_cast<std::uint32_t>(rows.y0), static_cast<std::uint32_t>(rows.y1));
       }
       drawBand(band);
     });
-    records_.clear();
+    for (auto& list : lists_) list.clear();
+    for (auto& bin : bins_) bin.clear();
   }
 
   // The draw region's rows of one band.
@@ -134,16 +167,20 @@ class BandQueue {
   void drawBand(std::size_t band) const { callCompiledFor<Stage::kInstructionSet, &BandQueue::replay>(*this, band); }
 
   void replay(std::size_t band) const {
-    const std::vector<std::uint32_t>& bin = bins_[band];
-    if (bin.empty()) return;
-    const Stage stage(state_, uniforms_, framebuffer_, viewport_, bandRows(band), inverseZ_);
-    for (const std::uint32_t i : bin) {
-      const Record& r = records_[i];
-      const EdgeFunction triangle[3] = {r.edges[0], r.edges[1], r.edges[2]};
-      switch (r.kind) {
-        case Kind::Triangle: stage.shadePixels(triangle, r.bounds, r.interpolants); break;
-        case Kind::Quad: stage.shadePixels(r.edges, r.bounds, r.interpolants); break;
-        case Kind::SampledTriangle: stage.shadeSamples(triangle, r.bounds, r.interpolants); break;
+    std::optional<Stage> stage;  // made when the band has something to draw
+    for (std::size_t list = 0; list < lists_.size(); ++list) {
+      const std::vector<std::uint32_t>& bin = bins_[list * static_cast<std::size_t>(bands_) + band];
+      if (bin.empty()) continue;
+      if (!stage) stage.emplace(state_, uniforms_, framebuffer_, viewport_, bandRows(band), inverseZ_);
+      const std::vector<Record>& records = lists_[list];
+      for (const std::uint32_t i : bin) {
+        const Record& r = records[i];
+        const EdgeFunction triangle[3] = {r.edges[0], r.edges[1], r.edges[2]};
+        switch (r.kind) {
+          case Kind::Triangle: stage->shadePixels(triangle, r.bounds, r.interpolants); break;
+          case Kind::Quad: stage->shadePixels(r.edges, r.bounds, r.interpolants); break;
+          case Kind::SampledTriangle: stage->shadeSamples(triangle, r.bounds, r.interpolants); break;
+        }
       }
     }
   }
@@ -155,9 +192,10 @@ class BandQueue {
   Viewport viewport_;
   PixelRect region_;
   bool inverseZ_;
+  int bands_;
   std::optional<Stage> direct_;
-  std::vector<Record>& records_;                    // the Context's scratch, kept between draws
-  std::vector<std::vector<std::uint32_t>>& bins_;   // (bins keep their capacity too)
+  std::vector<std::vector<Record>>& lists_;        // the Context's scratch, kept between draws: records per list
+  std::vector<std::vector<std::uint32_t>>& bins_;  // bins_[list * bands_ + band]: that list's records in the band
 };
 
 }  // namespace softraster::detail
