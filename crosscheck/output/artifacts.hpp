@@ -1,7 +1,9 @@
 // The images of one compared scene, written as PNG files into one folder while its frames exist:
 // soft.png, vulkan.png, diff.png (diffHeatmap), soft.depth.png and vulkan.depth.png (both depth
 // buffers mapped to grey over one shared range, so equal depths look equal) and depth.diff.png
-// (depthDiffHeatmap); the runner's scenes record what was written. Also the compare command's
+// (depthDiffHeatmap); with a depth/stencil format also soft.stencil.png, vulkan.stencil.png (grey =
+// the stored value) and stencil.diff.png (stencilDiffHeatmap); the runner's scenes record what was
+// written. Also the compare command's
 // five images and the render command's depth view.
 // Also copying a scene's files to another folder (merge).
 // Deliberately PNG only and nothing about how a page shows them (that is report/report.hpp).

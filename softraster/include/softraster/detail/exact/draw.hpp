@@ -225,8 +225,8 @@ class ExactDraw {
       std::swap(fixed.y[1], fixed.y[2]);
     }
     const TriangleEdges edges = setupEdges(fixed);
-    const TriangleInterpolants<N> interpolants =
-        setupInterpolants(a, v1, v2, kInterpolation, rs_.depthBias, Format, pixelOffset);
+    TriangleInterpolants<N> interpolants = setupInterpolants(a, v1, v2, kInterpolation, rs_.depthBias, Format, pixelOffset);
+    interpolants.frontFacing = (area > 0) == (rs_.frontFace == FrontFace::CounterClockwise);  // the stencil face
     if (multisample_) {
       fragments_.shadeSamples(edges.edges, edges.bounds, interpolants);
     } else {
