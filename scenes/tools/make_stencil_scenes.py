@@ -1,5 +1,6 @@
 #!/usr/bin/env python3
-"""Writes the stencil scenes (scenes/stencil_*.json).
+"""Writes the stencil scenes (scenes/stencil_*.json) and the depth bias scene for polygon modes
+line and point (scenes/depth_bias_polygon_modes.json).
 
 Every scene uses the clip_space camera (positions are clip coordinates with w = 1, so z is the
 depth) and the vertex_color model; cells are laid out on a grid of whole pixels. Run from the
@@ -307,6 +308,41 @@ def stencil_polygon_modes():
     })
 
 
+def depth_bias_polygon_modes():
+    # A slanted background; the same triangles again as lines and as points with depth test
+    # less: without bias about half of their fragments fail against the filled copy; with a
+    # negative bias they pass, with a positive one they fail. Slope and constant both matter.
+    w, h = 256, 192
+    tris = [[[-0.95, -0.9, 0.30], [0.2, -0.85, 0.55], [-0.8, 0.2, 0.42]],
+            [[0.1, -0.9, 0.70], [0.95, -0.2, 0.20], [0.3, 0.1, 0.35]],
+            [[-0.9, 0.3, 0.60], [0.0, 0.25, 0.61], [-0.5, 0.95, 0.59]],
+            [[0.1, 0.3, 0.10], [0.9, 0.35, 0.90], [0.4, 0.95, 0.50]]]
+    draws = []
+    for k, pos in enumerate(tris):
+        draws.append({"name": "filled %d" % k, "positions": pos, "colour": [0.3, 0.3, 0.35], "cull": "none"})
+    biases = [("line", {"constant": -2.0, "slope": -1.0}), ("point", {"constant": -3.0, "slope": 0.5}),
+              ("line", {"constant": 1.0, "slope": -2.5, "clamp": -0.0005}), ("point", {"constant": -8.0, "slope": -4.0, "clamp": -0.00002})]
+    for k, pos in enumerate(tris):
+        mode, bias = biases[k]
+        draws.append({"name": "%s mode with bias %d" % (mode, k), "positions": pos, "colour": [0.9, 0.8, 0.2],
+                      "cull": "none", "polygon_mode": mode, "point_size": 2, "depth_compare": "less",
+                      "depth_bias": bias})
+        draws.append({"name": "%s mode with bias %d, back" % (mode, k), "positions": [pos[0], pos[2], pos[1]],
+                      "colour": [0.2, 0.8, 0.9], "cull": "none", "polygon_mode": mode, "point_size": 2,
+                      "depth_compare": "less_or_equal", "depth_write": False,
+                      "depth_bias": {"constant": bias["constant"] * -0.5, "slope": bias["slope"] * 0.5}})
+    write("depth_bias_polygon_modes", {
+        "description": "Depth bias with polygon modes line and point (Mesa's draw-module offset stage, which computes the "
+                       "bias from the whole triangle before it becomes lines or points and saturates each vertex's z): "
+                       "four slanted filled triangles, then the same triangles as lines or points with depth test less "
+                       "and biases of both signs, slope and constant, with and without clamp, so the biased edges "
+                       "pass or fail against the filled copies. D32_SFLOAT here; the test also draws it in D16 and D24.",
+        "framebuffer": {"width": w, "height": h, "clear_colour": [0.05, 0.05, 0.05, 1]},
+        "camera": {"type": "clip_space"},
+        "draws": draws,
+    })
+
+
 if __name__ == "__main__":
     stencil_ops()
     stencil_compare()
@@ -316,3 +352,4 @@ if __name__ == "__main__":
     stencil_two_pass()
     stencil_msaa()
     stencil_polygon_modes()
+    depth_bias_polygon_modes()

@@ -6,7 +6,8 @@
 // path (detail/fast/) where options.hpp's Method::Exact allows it, else the scalar one.
 // Coverage: polygon modes fill, line and point (lavapipe's draw-pipeline path: in point mode x
 // and y are clipped at 2w, measured); 4x MSAA for filled triangles (Framebuffer::resolve()
-// resolves as lavapipe does); depth bias for filled triangles; the course's 1/z depth buffer;
+// resolves as lavapipe does); depth bias for filled triangles and for polygon modes line and point
+// (Mesa's offset stage: geometry/polygon_offset.hpp); the course's 1/z depth buffer;
 // blending with every core factor and op, blend constants and the colour write mask; the stencil
 // test with front and back state on the D24_UNORM_S8_UINT and D32_SFLOAT_S8_UINT formats.
 // Conventions are Vulkan's: clip space x right, y down, z in [0, w]; window origin at the top
@@ -25,8 +26,7 @@
 // detail/course/) take the same loop with their own triangle setup, coverage and interpolation.
 // A shader that samples textures (texture.hpp, kQuads) is shaded in 2x2 quads on both exact
 // paths, so its derivatives are lavapipe's.
-// Deliberately absent: MSAA lines, points and polygon modes, depth bias in polygon modes,
-// dual-source blending (each a later issue).
+// Deliberately absent: MSAA lines, points and polygon modes, dual-source blending (each a later issue).
 #pragma once
 
 #if defined(__clang__)
@@ -146,9 +146,6 @@ class Context {
     }
     if (b.colorBlendOp > BlendOp::Max || b.alphaBlendOp > BlendOp::Max) return Status::error("unknown blend op");
     if (b.colorWriteMask > kColourRGBA) return Status::error("colour write mask has bits other than R, G, B and A");
-    if (rs.polygonMode != PolygonMode::Fill && rs.depthBias.enable) {
-      return Status::error("depth bias with polygon mode line or point is not supported by softraster yet");
-    }
     const DepthState& ds = state.depth;
     if (ds.compareOp > CompareOp::Always) return Status::error("unknown depth compare op");
     for (const StencilOpState* face : {&ds.front, &ds.back}) {

@@ -31,7 +31,8 @@ struct Scissor {
   std::uint32_t width = 0, height = 0;
 };
 
-// Vulkan depth bias (VkPipelineRasterizationStateCreateInfo depthBias*), triangles only.
+// Vulkan depth bias (VkPipelineRasterizationStateCreateInfo depthBias*): triangles, filled or in
+// polygon modes line and point (not line or point topologies).
 struct DepthBias {
   bool enable = false;
   float constantFactor = 0, clamp = 0, slopeFactor = 0;

@@ -1,7 +1,8 @@
 // The exact method's draw loop: one draw call as a list of stage calls, each stage in its file:
 //   vertex processing (geometry/vertex_processing) -> primitive assembly and vertex batches
 //   (geometry/primitive_assembly) -> clipping (geometry/clipping) -> the draw pipeline's float
-//   cull (geometry/culling) -> polygon modes (geometry/unfilled) -> snapping, the fixed-point cull
+//   cull (geometry/culling) -> depth bias of unfilled polygons (geometry/polygon_offset) -> polygon
+//   modes (geometry/unfilled) -> snapping, the fixed-point cull
 //   and setup (exact/triangle_setup, exact/line_point_setup) -> coverage and fragments
 //   (fragment/shade, over exact/rasterizer and exact/interpolation).
 // Primitives reach the fragment stage in submission order; with more than one thread the band
@@ -24,6 +25,7 @@
 #include <softraster/detail/fragment/shade.hpp>
 #include <softraster/detail/geometry/clipping.hpp>
 #include <softraster/detail/geometry/culling.hpp>
+#include <softraster/detail/geometry/polygon_offset.hpp>
 #include <softraster/detail/geometry/primitive_assembly.hpp>
 #include <softraster/detail/geometry/unfilled.hpp>
 #include <softraster/detail/geometry/vertex_processing.hpp>
@@ -179,15 +181,17 @@ class ExactDraw {
     }
   }
 
-  // A triangle past the draw pipeline's cull: filled, or as lines or points.
+  // A triangle past the draw pipeline's cull: filled, or as lines or points (depth-biased first).
   void drawCulled(const Vertex& a, const Vertex& b, const Vertex& c, unsigned edgeFlags) {
     if (rs_.polygonMode == PolygonMode::Fill) {
       drawTriangle(a, b, c);
       return;
     }
+    Vertex biased[3] = {a, b, c};
+    if (rs_.depthBias.enable) offsetUnfilledTriangle(biased[0], biased[1], biased[2], rs_.depthBias, Format);
     drawUnfilledTriangle(
-        rs_.polygonMode, a, b, c, edgeFlags, kInterpolation, [&](const Vertex& p, const Vertex& q) { drawLine(p, q); },
-        [&](const Vertex& p) { drawPoint(p); });
+        rs_.polygonMode, biased[0], biased[1], biased[2], edgeFlags, kInterpolation,
+        [&](const Vertex& p, const Vertex& q) { drawLine(p, q); }, [&](const Vertex& p) { drawPoint(p); });
   }
 
   // drawTriangle, drawLine and drawPoint are called from several places (straight, after
