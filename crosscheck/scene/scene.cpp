@@ -456,6 +456,12 @@ void readDrawState(const json& d, const std::string& place, softraster::Pipeline
   ds.testEnable = readBool(d, "depth_test", place, ds.testEnable);
   ds.writeEnable = readBool(d, "depth_write", place, ds.writeEnable);
   ds.compareOp = readEnum(d, "depth_compare", place, ds.compareOp, compareOps());
+  if (readBool(d, "depth_bounds_test", place, false)) {
+    throw SceneError(placeOf(place, "depth_bounds_test"),
+                     "lavapipe does not offer the depthBounds feature, and Vulkan says \"If the depthBounds feature is "
+                     "not enabled, depthBoundsTestEnable must be VK_FALSE\" "
+                     "(VUID-VkPipelineDepthStencilStateCreateInfo-depthBoundsTestEnable-00598)");
+  }
   if (d.contains("stencil")) readStencil(d["stencil"], placeOf(place, "stencil"), ds);
 }
 
@@ -818,7 +824,7 @@ Draw readDrawMesh(const json& d, const std::string& place, const std::filesystem
                        "texture", "normal_map", "shadow_map", "shading",
                        "transform", "material", "topology", "viewport", "scissor", "cull", "front_face", "depth_clamp",
                        "depth_bias", "line_width", "line_rasterization", "point_size", "polygon_mode", "blend",
-                       "depth_test", "depth_write", "depth_compare", "stencil"});
+                       "depth_test", "depth_write", "depth_compare", "depth_bounds_test", "stencil"});
   Draw draw;
   draw.name = readString(d, "name", place, place);
   draw.shading = readShadingModel(d, place);

@@ -3,7 +3,7 @@
 // there: every op on every path gives the value the Vulkan specification says (an independent
 // table here, not softraster's code), the front and back states both reach the image, lines and
 // points of unfilled polygons take the front state (lavapipe's rule), the mask pass masks. Then
-// the loader's errors for stencil.
+// the loader's errors for stencil and the depth bounds test.
 #include "agreement.hpp"
 
 #include <softraster/formats.hpp>
@@ -136,7 +136,7 @@ TEST(Stencil, LinesAndPointsOfUnfilledPolygonsTakeTheFrontState) {
   EXPECT_EQ(count(f, 0x22), 0u) << "lavapipe gives back-facing unfilled polygons' edges the front state";
 }
 
-TEST(Stencil, SceneErrorsNameTheFileAndTheProblem) {
+TEST(Stencil, SceneErrorsNameTheFileAndTheRule) {
   const std::string s = "stencil_ops.json";
   expectSceneError({"framebuffer.depth_format=\"d32_sfloat\""}, s,
                    "/draws/0/stencil: needs a framebuffer depth_format with stencil");
@@ -148,4 +148,10 @@ TEST(Stencil, SceneErrorsNameTheFileAndTheProblem) {
   expectSceneError({"draws.0.stencil.reference=256"}, s, "/draws/0/stencil/reference: 256 is more than 255");
   expectSceneError({"draws.0.stencil.front={\"write_mask\": -1}"}, s, "/draws/0/stencil/front/write_mask");
   expectSceneError({"draws.0.stencil.sideways={}"}, s, "/draws/0/stencil/sideways: unknown field");
+  expectSceneError({"draws.0.depth_bounds_test=true"}, s,
+                   "/draws/0/depth_bounds_test: lavapipe does not offer the depthBounds feature, and Vulkan says \"If "
+                   "the depthBounds feature is not enabled, depthBoundsTestEnable must be VK_FALSE\" "
+                   "(VUID-VkPipelineDepthStencilStateCreateInfo-depthBoundsTestEnable-00598)");
+  // false is Vulkan's default and allowed.
+  EXPECT_TRUE(crosscheck::loadScene(agreement::kScenes / s, {"draws.0.depth_bounds_test=false"}));
 }

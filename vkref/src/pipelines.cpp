@@ -398,6 +398,7 @@ softraster::Result<VkPipeline> PipelineCache::compile(const Program& p, const so
         .depthTestEnable = state.depth.testEnable ? VK_TRUE : VK_FALSE,
         .depthWriteEnable = state.depth.writeEnable ? VK_TRUE : VK_FALSE,
         .depthCompareOp = static_cast<VkCompareOp>(state.depth.compareOp),
+        .depthBoundsTestEnable = VK_FALSE,  // lavapipe has no depthBounds feature
         .stencilTestEnable = state.depth.stencilTestEnable ? VK_TRUE : VK_FALSE,
         .front = stencilFace(state.depth.front),
         .back = stencilFace(state.depth.back)};

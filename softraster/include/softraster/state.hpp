@@ -6,7 +6,8 @@
 // Deliberately absent until a scene needs it: dual-source blending (the SRC1 blend factors, which
 // need a second fragment output), logic ops, more than one colour attachment, the rest of
 // Vulkan's multisample state (sample shading, sample mask, alpha to coverage), smooth and
-// stippled lines.
+// stippled lines. The depth bounds test is absent for good: lavapipe reports depthBounds = false,
+// so no Vulkan pipeline on it may enable it.
 #pragma once
 
 #include <cstdint>
