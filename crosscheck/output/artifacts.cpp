@@ -91,6 +91,11 @@ softraster::Status writeCompareImages(const std::filesystem::path& dir, const Sc
   if (written) written = writePng(dir / "diff.png", soft.width, soft.height, diffHeatmap(soft, vulkan, scene));
   if (written) written = writeDepthView(dir / "soft.depth.png", soft, scene.clearDepth, 0, 0);
   if (written) written = writeDepthView(dir / "vulkan.depth.png", vulkan, scene.clearDepth, 0, 0);
+  if (written && !soft.stencil.empty() && soft.stencil.size() == vulkan.stencil.size()) {
+    written = writePng(dir / "soft.stencil.png", soft.width, soft.height, stencilToGrey(soft));
+    if (written) written = writePng(dir / "vulkan.stencil.png", vulkan.width, vulkan.height, stencilToGrey(vulkan));
+    if (written) written = writePng(dir / "stencil.diff.png", soft.width, soft.height, stencilDiffHeatmap(soft, vulkan));
+  }
   return written;
 }
 

@@ -231,14 +231,22 @@ def stencil_two_pass():
               "colours": [[1, 0.2, 0.2], [0.2, 1, 0.2], [0.2, 0.2, 1], [1, 1, 0.2]], "indices": [0, 2, 1, 1, 2, 3],
               "cull": "none", "depth_test": False,
               "stencil": {"compare_op": "equal", "reference": 1, "write_mask": 0}},
-             {"name": "outside: where not equal 1", "positions": [[-1, -1, 0.5], [1, -1, 0.5], [-1, 1, 0.5], [1, 1, 0.5]],
+             # A textured model is shaded in whole 2x2 quads: its helper lanes must leave the stencil alone.
+             {"name": "inside, textured: where equal 1", "shading": "textured",
+              "positions": [[-0.5, -0.45, 0.5], [0.45, -0.5, 0.5], [0.5, 0.45, 0.5], [-0.45, 0.5, 0.5]],
+              "texcoords": [[0, 0], [2, 0], [2, 2], [0, 2]], "indices": [0, 1, 2, 0, 2, 3], "cull": "none",
+              "depth_test": False, "texture": {"file": "textures/checker_64.png"},
+              "stencil": {"compare_op": "equal", "reference": 1, "pass_op": "increment_and_clamp", "fail_op": "invert"}},
+             {"name": "outside: where still 0", "positions": [[-1, -1, 0.5], [1, -1, 0.5], [-1, 1, 0.5], [1, 1, 0.5]],
               "colour": [0.15, 0.15, 0.3], "indices": [0, 2, 1, 1, 2, 3], "cull": "none", "depth_test": False,
-              "stencil": {"compare_op": "not_equal", "reference": 1, "pass_op": "increment_and_clamp"}}]
+              "stencil": {"compare_op": "equal", "reference": 0, "pass_op": "increment_and_clamp"}}]
     write("stencil_mask_two_pass", {
         "description": "The stencil as a mask, in two passes: a star is written into the stencil only (reference 1, "
-                       "colour write mask empty, depth off), then a colourful quad is drawn where the stencil equals 1 "
-                       "and a dark one (which also increments the stencil) where it does not. Edges of the star are "
-                       "exactly the star triangle fan's coverage. D24_UNORM_S8_UINT.",
+                       "colour write mask empty, depth off), then a colourful quad is drawn where the stencil equals 1; "
+                       "a textured quad (shaded in 2x2 quads, with helper pixels that must leave the stencil alone) "
+                       "where it equals 1 too, incrementing it there and inverting it where it fails; then a dark quad "
+                       "where the stencil is still 0, incrementing it. Edges of the star are exactly the star triangle "
+                       "fan's coverage. D24_UNORM_S8_UINT.",
         "framebuffer": framebuffer(w, h),
         "camera": {"type": "clip_space"},
         "draws": draws,
