@@ -135,6 +135,12 @@ TEST(Stencil, LinesAndPointsOfUnfilledPolygonsTakeTheFrontState) {
   const crosscheck::Frame f = renderAgreeing("stencil_polygon_modes", {});
   EXPECT_GT(count(f, 0x11), 300u);
   EXPECT_EQ(count(f, 0x22), 0u) << "lavapipe gives back-facing unfilled polygons' edges the front state";
+  // The same triangles filled: one winding of each pair is back-facing and takes the back state.
+  std::vector<std::string> filled;
+  for (int d = 0; d < 4; ++d) filled.push_back("draws." + std::to_string(d) + ".polygon_mode=\"fill\"");
+  const crosscheck::Frame fill = renderAgreeing("stencil_polygon_modes", filled);
+  EXPECT_GT(count(fill, 0x22), 1000u);
+  EXPECT_GT(count(fill, 0x11), 1000u);
 }
 
 TEST(Stencil, SceneErrorsNameTheFileAndTheRule) {
