@@ -19,8 +19,20 @@ std::array<std::uint8_t, 4> clearColourBytes(const Scene& scene) {
           toByte(scene.clearColour.w)};
 }
 
-bool covered(const Frame& f, std::size_t i, const std::array<std::uint8_t, 4>& clear, std::uint32_t clearDepth) {
-  return f.depthStorage[i] != clearDepth || !std::equal(clear.begin(), clear.end(), f.rgba.begin() + static_cast<std::ptrdiff_t>(4 * i));
+// The clear values a pixel is compared with to tell whether anything covered it.
+struct ClearValues {
+  std::array<std::uint8_t, 4> colour;
+  std::uint32_t depth;
+  std::uint8_t stencil;
+};
+
+ClearValues clearValues(const Scene& scene) {
+  return {clearColourBytes(scene), softraster::depthClearValue(scene.depthFormat, scene.clearDepth), scene.clearStencil};
+}
+
+bool covered(const Frame& f, std::size_t i, const ClearValues& clear) {
+  return f.depthStorage[i] != clear.depth || (!f.stencil.empty() && f.stencil[i] != clear.stencil) ||
+         !std::equal(clear.colour.begin(), clear.colour.end(), f.rgba.begin() + static_cast<std::ptrdiff_t>(4 * i));
 }
 
 // |a - b| of two stored depths, in depth units ([0, 1] range): whole steps of 1/(2^n - 1) for
@@ -41,18 +53,18 @@ double depthDelta(std::uint32_t a, std::uint32_t b, softraster::DepthFormat form
 
 Comparison compareFrames(const Frame& a, const Frame& b, const Scene& scene) {
   Comparison c;
-  if (a.width != b.width || a.height != b.height || a.depthFormat != b.depthFormat) {
+  if (a.width != b.width || a.height != b.height || a.depthFormat != b.depthFormat || a.stencil.size() != b.stencil.size()) {
     c.failures.push_back("image sizes or depth formats differ");
     return c;
   }
   const Tolerance& tol = scene.tolerance;
-  const auto clear = clearColourBytes(scene);
-  const std::uint32_t clearDepth = softraster::depthClearValue(scene.depthFormat, scene.clearDepth);
+  const ClearValues clear = clearValues(scene);
   c.pixels = static_cast<std::uint64_t>(a.width) * a.height;
   std::array<std::uint64_t, 4> sums{};
   double squaredErrorRgb = 0;
   for (std::size_t i = 0; i < c.pixels; ++i) {
-    if (covered(a, i, clear, clearDepth) != covered(b, i, clear, clearDepth)) ++c.coverageMismatches;
+    if (covered(a, i, clear) != covered(b, i, clear)) ++c.coverageMismatches;
+    if (!a.stencil.empty() && a.stencil[i] != b.stencil[i]) ++c.stencilMismatches;
     bool over = false;
     for (int ch = 0; ch < 4; ++ch) {
       const int d = std::abs(int{a.rgba[4 * i + ch]} - int{b.rgba[4 * i + ch]});
@@ -74,22 +86,20 @@ Comparison compareFrames(const Frame& a, const Frame& b, const Scene& scene) {
 }
 
 std::uint64_t coveredPixels(const Frame& frame, const Scene& scene) {
-  const auto clear = clearColourBytes(scene);
-  const std::uint32_t clearDepth = softraster::depthClearValue(scene.depthFormat, scene.clearDepth);
+  const ClearValues clear = clearValues(scene);
   std::uint64_t count = 0;
-  for (std::size_t i = 0; i < frame.depthStorage.size(); ++i) count += covered(frame, i, clear, clearDepth);
+  for (std::size_t i = 0; i < frame.depthStorage.size(); ++i) count += covered(frame, i, clear);
   return count;
 }
 
 std::vector<std::uint8_t> diffHeatmap(const Frame& a, const Frame& b, const Scene& scene) {
   const std::size_t pixels = static_cast<std::size_t>(a.width) * a.height;
   std::vector<std::uint8_t> out(4 * pixels, 0);
-  const auto clear = clearColourBytes(scene);
-  const std::uint32_t clearDepth = softraster::depthClearValue(scene.depthFormat, scene.clearDepth);
+  const ClearValues clear = clearValues(scene);
   for (std::size_t i = 0; i < pixels; ++i) {
     std::uint8_t* p = &out[4 * i];
     p[3] = 255;
-    if (covered(a, i, clear, clearDepth) != covered(b, i, clear, clearDepth)) {
+    if (covered(a, i, clear) != covered(b, i, clear)) {
       p[0] = 255, p[1] = 0, p[2] = 255;
       continue;
     }
@@ -130,6 +140,23 @@ std::vector<std::uint8_t> depthDiffHeatmap(const Frame& a, const Frame& b, const
     const double t = std::clamp(std::log2(d / base) / 16.0, 0.0, 1.0);
     p[0] = 255;
     p[1] = static_cast<std::uint8_t>(std::lround(64 + t * 191));
+  }
+  return out;
+}
+
+std::vector<std::uint8_t> stencilToGrey(const Frame& frame) {
+  std::vector<std::uint8_t> out(4 * frame.stencil.size(), 255);
+  for (std::size_t i = 0; i < frame.stencil.size(); ++i) out[4 * i] = out[4 * i + 1] = out[4 * i + 2] = frame.stencil[i];
+  return out;
+}
+
+std::vector<std::uint8_t> stencilDiffHeatmap(const Frame& a, const Frame& b) {
+  if (a.stencil.size() != b.stencil.size()) return {};
+  std::vector<std::uint8_t> out(4 * a.stencil.size(), 0);
+  for (std::size_t i = 0; i < a.stencil.size(); ++i) {
+    std::uint8_t* p = &out[4 * i];
+    p[3] = 255;
+    if (a.stencil[i] != b.stencil[i]) p[0] = 255, p[2] = 255;
   }
   return out;
 }

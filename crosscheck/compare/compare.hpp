@@ -1,7 +1,9 @@
 // Image comparison of two Frames of one scene, within the scene's Tolerance: the metrics
 // (metrics.hpp) and the two difference heatmaps.
-// Coverage: a pixel is covered in a frame when its colour or depth differs from the clear
-// values; a coverage mismatch is a pixel covered in one frame only. (A fragment that writes
+// Coverage: a pixel is covered in a frame when its colour, depth or stencil differs from the
+// clear values; a coverage mismatch is a pixel covered in one frame only. Stencil (with a
+// depth/stencil format) is compared exactly: a stencil mismatch is a pixel whose stored stencil
+// differs. (A fragment that writes
 // exactly the clear colour with depth writes off is invisible to this test.)
 // Deliberately no perceptual metric and no position-deviation tolerance: the exact method is
 // held to the bit, and edge differences are counted, not forgiven.
@@ -19,7 +21,7 @@ namespace crosscheck {
 // Measures the differences and checks them against scene.tolerance (limitFailures).
 Comparison compareFrames(const Frame& result, const Frame& reference, const Scene& scene);
 
-// Pixels covered in a frame (colour or depth differs from the scene's clear values).
+// Pixels covered in a frame (colour, depth or stencil differs from the scene's clear values).
 std::uint64_t coveredPixels(const Frame& frame, const Scene& scene);
 
 // RGBA8 heatmap of the difference: black where equal, blue up to the colour threshold, red to
@@ -31,5 +33,11 @@ std::vector<std::uint8_t> diffHeatmap(const Frame& result, const Frame& referenc
 // of 0 counts from 2^-24), magenta
 // where one depth is NaN and the other is not.
 std::vector<std::uint8_t> depthDiffHeatmap(const Frame& result, const Frame& reference, const Scene& scene);
+
+// RGBA8 view of a frame's stencil (grey = the stored value), and the heatmap of the stencil
+// difference: black where equal, magenta where the stored values differ (stencil has no
+// tolerance). Both empty for frames without stencil.
+std::vector<std::uint8_t> stencilToGrey(const Frame& frame);
+std::vector<std::uint8_t> stencilDiffHeatmap(const Frame& result, const Frame& reference);
 
 }  // namespace crosscheck

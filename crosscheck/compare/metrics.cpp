@@ -21,6 +21,7 @@ std::vector<std::string> limitFailures(const Comparison& c, const Tolerance& tol
     failures.push_back(formatLimit("colour_pixels_over", c.colourPixelsOver, tol.maxColourPixelsOver));
   if (c.depthPixelsOver > tol.maxDepthPixelsOver)
     failures.push_back(formatLimit("depth_pixels_over", c.depthPixelsOver, tol.maxDepthPixelsOver));
+  if (c.stencilMismatches > 0) failures.push_back(formatLimit("stencil_mismatches", c.stencilMismatches, 0));
   return failures;
 }
 

@@ -1,5 +1,5 @@
 // Comparison: what comparing two frames of a scene measured (coverage, colour and depth
-// differences, PSNR) and which of the scene's limits it broke. A plain record, so a run's results
+// differences, PSNR, stencil mismatches) and which of the scene's limits it broke. A plain record, so a run's results
 // can keep it after the frames are gone; compare.hpp measures it.
 // Deliberately no verdict beyond the limits: expectations turn it into an Outcome (run/).
 #pragma once
@@ -22,12 +22,14 @@ struct Comparison {
   double psnr = 0;                           // over RGB; +inf when identical
   double depthMaxDelta = 0;
   std::uint64_t depthPixelsOver = 0;
+  std::uint64_t stencilMismatches = 0;       // pixels whose stored stencil differs (no tolerance: exact)
   std::vector<std::string> failures;         // each "metric value > limit"; empty when passed
   bool passed() const { return failures.empty(); }
 };
 
 // The limits of `tolerance` the measured counts exceed, each "metric value > limit", in the order
-// coverage_mismatches, colour_pixels_over, depth_pixels_over.
+// coverage_mismatches, colour_pixels_over, depth_pixels_over, then stencil_mismatches (allowed: 0,
+// always; stencil values are integers both renderers must agree on exactly).
 std::vector<std::string> limitFailures(const Comparison& measured, const Tolerance& tolerance);
 
 }  // namespace crosscheck

@@ -26,7 +26,7 @@ std::pair<float, float> sharedDepthRange(const Frame& soft, const Frame& vulkan,
 
 // Bit-identical colour and depth (depth compared as bits, so NaN equals NaN and -0 differs from 0).
 bool identicalFrames(const Frame& a, const Frame& b) {
-  return a.width == b.width && a.height == b.height && a.rgba == b.rgba && a.depth.size() == b.depth.size() &&
+  return a.width == b.width && a.height == b.height && a.rgba == b.rgba && a.stencil == b.stencil && a.depth.size() == b.depth.size() &&
          std::memcmp(a.depth.data(), b.depth.data(), a.depth.size() * sizeof(float)) == 0;
 }
 
@@ -76,6 +76,11 @@ softraster::Status writeSceneImages(const std::filesystem::path& root, const std
                     write("soft.depth", "soft.depth.png", soft, depthToGrey(soft.depth, scene.clearDepth, lo, hi)) &&
                     write("vulkan.depth", "vulkan.depth.png", vulkan, depthToGrey(vulkan.depth, scene.clearDepth, lo, hi)) &&
                     write("depth.diff", "depth.diff.png", soft, depthDiffHeatmap(soft, vulkan, scene)));
+  if (status && !soft.stencil.empty() && soft.stencil.size() == vulkan.stencil.size()) {
+    static_cast<void>(write("soft.stencil", "soft.stencil.png", soft, stencilToGrey(soft)) &&
+                      write("vulkan.stencil", "vulkan.stencil.png", vulkan, stencilToGrey(vulkan)) &&
+                      write("stencil.diff", "stencil.diff.png", soft, stencilDiffHeatmap(soft, vulkan)));
+  }
   return status;
 }
 
@@ -86,6 +91,11 @@ softraster::Status writeCompareImages(const std::filesystem::path& dir, const Sc
   if (written) written = writePng(dir / "diff.png", soft.width, soft.height, diffHeatmap(soft, vulkan, scene));
   if (written) written = writeDepthView(dir / "soft.depth.png", soft, scene.clearDepth, 0, 0);
   if (written) written = writeDepthView(dir / "vulkan.depth.png", vulkan, scene.clearDepth, 0, 0);
+  if (written && !soft.stencil.empty() && soft.stencil.size() == vulkan.stencil.size()) {
+    written = writePng(dir / "soft.stencil.png", soft.width, soft.height, stencilToGrey(soft));
+    if (written) written = writePng(dir / "vulkan.stencil.png", vulkan.width, vulkan.height, stencilToGrey(vulkan));
+    if (written) written = writePng(dir / "stencil.diff.png", soft.width, soft.height, stencilDiffHeatmap(soft, vulkan));
+  }
   return written;
 }
 

@@ -1,8 +1,10 @@
 // The images of one compared scene, written as PNG files into one folder while its frames exist:
 // soft.png, vulkan.png, diff.png (diffHeatmap), soft.depth.png and vulkan.depth.png (both depth
 // buffers mapped to grey over one shared range, so equal depths look equal) and depth.diff.png
-// (depthDiffHeatmap); the runner's scenes record what was written. Also the compare command's
-// five images and the render command's depth view.
+// (depthDiffHeatmap); with a depth/stencil format also soft.stencil.png, vulkan.stencil.png (grey =
+// the stored value) and stencil.diff.png (stencilDiffHeatmap); the runner's scenes record what was
+// written. Also the compare command's five images (eight with stencil) and the render command's
+// depth view.
 // Also copying a scene's files to another folder (merge).
 // Deliberately PNG only and nothing about how a page shows them (that is report/report.hpp).
 #pragma once
@@ -44,7 +46,8 @@ softraster::Status writeSceneImages(const std::filesystem::path& root, const std
 softraster::Status copySceneFiles(SceneResult* result, const std::filesystem::path& root);
 
 // The compare command's --out DIR: soft.png, vulkan.png, diff.png, and soft.depth.png and
-// vulkan.depth.png each over its own range (depthToGrey's default); no depth difference.
+// vulkan.depth.png each over its own range (depthToGrey's default); no depth difference; with
+// stencil also soft.stencil.png, vulkan.stencil.png and stencil.diff.png.
 softraster::Status writeCompareImages(const std::filesystem::path& dir, const Scene& scene, const Frame& soft,
                                       const Frame& vulkan);
 

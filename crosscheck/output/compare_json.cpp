@@ -23,6 +23,7 @@ nlohmann::json sceneJson(const SceneResult& r) {
                       {"psnr", finite(c.psnr)},
                       {"depth_max_delta", c.depthMaxDelta},
                       {"depth_pixels_over", c.depthPixelsOver},
+                      {"stencil_mismatches", c.stencilMismatches},
                       {"failures", c.failures},
                       {"tolerance",
                        {{"colour", t.colourThreshold},

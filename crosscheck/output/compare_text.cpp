@@ -40,6 +40,7 @@ void appendScene(std::string& out, const SceneResult& r) {
   append(out, "  depth max %s        %s (threshold %s)\n", kAbsDelta, depthText(c.depthMaxDelta).c_str(),
          depthText(t.depthThreshold).c_str());
   append(out, "  depth pixels over    %llu (allowed %llu)\n", count(c.depthPixelsOver), count(t.maxDepthPixelsOver));
+  append(out, "  stencil mismatches   %llu (allowed 0)\n", count(c.stencilMismatches));
   append(out, "  time soft %.2f ms, vulkan %.2f ms\n", r.softMilliseconds, r.vulkanMilliseconds);
   for (const std::string& f : c.failures) append(out, "  over tolerance: %s\n", f.c_str());
 }

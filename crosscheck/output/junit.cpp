@@ -43,6 +43,7 @@ std::string systemOut(const SceneResult& r) {
     out += "psnr: " + psnrText(c.psnr) + "\n";
     out += "depth_max_delta: " + depthText(c.depthMaxDelta) + " (threshold " + depthText(t.depthThreshold) + ")\n";
     out += "depth_pixels_over: " + std::to_string(c.depthPixelsOver) + " (allowed " + std::to_string(t.maxDepthPixelsOver) + ")\n";
+    out += "stencil_mismatches: " + std::to_string(c.stencilMismatches) + " (allowed 0)\n";
     out += "time_ms: soft " + number("%.3f", r.softMilliseconds) + ", vulkan " + number("%.3f", r.vulkanMilliseconds) +
            ", scene " + number("%.3f", r.milliseconds) + "\n";
     out += "step_ms: load " + number("%.3f", r.timings.load) + ", softraster " + number("%.3f", r.timings.soft) +

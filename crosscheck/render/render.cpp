@@ -100,7 +100,7 @@ softraster::Status SoftrasterScene::render() {
   }
   // The 1/z buffer is cleared to 0 (infinitely far); it is not a Vulkan mode.
   framebuffer_.clear(scene_.clearColour,
-                     options_.depthMode == softraster::DepthMode::InverseZ ? 0.0f : scene_.clearDepth);
+                     options_.depthMode == softraster::DepthMode::InverseZ ? 0.0f : scene_.clearDepth, scene_.clearStencil);
   for (std::size_t i = 0; i < scene_.draws.size(); ++i) {
     const Draw& draw = scene_.draws[i];
     const softraster::Status status = draws_[i].draw(context_, draw.state, draw.indexed, draw.indices, framebuffer_);
@@ -124,9 +124,11 @@ Frame frameFrom(const Scene& scene, softraster::Framebuffer& framebuffer, double
   if (move) {
     frame.rgba = std::move(framebuffer.colour());
     frame.depthStorage = std::move(framebuffer.depthStorage());
+    frame.stencil = std::move(framebuffer.stencilStorage());
   } else {
     frame.rgba = framebuffer.colour();
     frame.depthStorage = framebuffer.depthStorage();
+    frame.stencil = framebuffer.stencilStorage();
   }
   return frame;
 }
@@ -160,6 +162,7 @@ softraster::Result<vkref::PreparedFrame> prepareVulkan(const Scene& scene, vkref
   request.height = scene.height;
   request.clearColour = {scene.clearColour.x, scene.clearColour.y, scene.clearColour.z, scene.clearColour.w};
   request.clearDepth = scene.clearDepth;
+  request.clearStencil = scene.clearStencil;
   request.depthFormat = scene.depthFormat;
   request.samples = scene.samples;
   std::size_t passDraws = 0;
@@ -211,6 +214,7 @@ softraster::Result<Frame> readVulkan(const Scene& scene, vkref::Renderer& render
   frame.depth = std::move(images.depth);
   frame.depthFormat = scene.depthFormat;
   frame.depthStorage = std::move(images.depthStorage);
+  frame.stencil = std::move(images.stencil);
   return frame;
 }
 

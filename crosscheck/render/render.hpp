@@ -1,5 +1,5 @@
-// Renders a Scene with either renderer into a Frame: RGBA8 colour and float depth, row 0 at the
-// top. Both adapters hand the renderers the same vertices and uniforms (made by each draw's row
+// Renders a Scene with either renderer into a Frame: RGBA8 colour, float depth and (with a
+// depth/stencil format) stencil, row 0 at the top. Both adapters hand the renderers the same vertices and uniforms (made by each draw's row
 // of shaders/shading_models.hpp), indices, matrices and PipelineState, and time one span each
 // (Frame::milliseconds). openVulkan is the one place a vkref::Renderer is opened.
 // renderSoftraster / renderVulkan are one call, one frame. For steady-state frames (the bench) a
@@ -29,6 +29,7 @@ struct Frame {
   std::vector<float> depth;                 // as floats in [0, 1], for views
   softraster::DepthFormat depthFormat = softraster::DepthFormat::D32Sfloat;
   std::vector<std::uint32_t> depthStorage;  // as the format stores it, for exact comparison
+  std::vector<std::uint8_t> stencil;        // one byte per pixel with a depth/stencil format, else empty
   double milliseconds = 0;                  // the renderer's timed span (render.cpp): softraster's clear,
                                             // draws and resolve; vkref's submit (the same work)
 };

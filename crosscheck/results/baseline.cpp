@@ -15,7 +15,8 @@ std::vector<std::pair<const char*, double>> tableMetrics(const Comparison& c) {
           {"colour mean |\xCE\x94|", *std::max_element(c.colourMeanDelta.begin(), c.colourMeanDelta.end())},
           {"PSNR", c.psnr},
           {"depth pixels over", double(c.depthPixelsOver)},
-          {"depth max |\xCE\x94|", c.depthMaxDelta}};
+          {"depth max |\xCE\x94|", c.depthMaxDelta},
+          {"stencil mismatches", double(c.stencilMismatches)}};
 }
 
 bool same(double a, double b) { return a == b || (a != a && b != b); }  // NaN equals NaN here

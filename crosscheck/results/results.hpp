@@ -29,7 +29,8 @@
 namespace crosscheck {
 
 struct SceneImage {
-  std::string kind;             // "soft", "vulkan", "diff", "soft.depth", "vulkan.depth", "depth.diff"
+  std::string kind;             // "soft", "vulkan", "diff", "soft.depth", "vulkan.depth", "depth.diff",
+                                // with stencil "soft.stencil", "vulkan.stencil", "stencil.diff"
   std::filesystem::path file;   // relative to SceneResult::imageRoot
 };
 

@@ -41,6 +41,7 @@ json comparisonJson(const Comparison& c) {
           {"psnr", number(c.psnr)},
           {"depth_max_delta", number(c.depthMaxDelta)},
           {"depth_pixels_over", c.depthPixelsOver},
+          {"stencil_mismatches", c.stencilMismatches},
           {"failures", c.failures}};
 }
 
@@ -135,6 +136,10 @@ Comparison readComparison(const json& j, const std::string& place) {
   c.psnr = readNumber(field(j, place, "psnr"), place + "/psnr");
   c.depthMaxDelta = readNumber(field(j, place, "depth_max_delta"), place + "/depth_max_delta");
   c.depthPixelsOver = readInteger<std::uint64_t>(field(j, place, "depth_pixels_over"), place + "/depth_pixels_over");
+  // Absent from files written before stencil was compared: none could mismatch then.
+  if (j.contains("stencil_mismatches")) {
+    c.stencilMismatches = readInteger<std::uint64_t>(j["stencil_mismatches"], place + "/stencil_mismatches");
+  }
   const json& failures = field(j, place, "failures");
   if (!failures.is_array()) bad(place + "/failures", "expected an array");
   for (std::size_t i = 0; i < failures.size(); ++i) {

@@ -134,6 +134,7 @@ Scene hitCountScene(const Scene& scene) {
     draw.mesh.colours.assign(draw.mesh.positions.size(), softraster::Vec4{kStep, kStep, kStep, kStep});
     draw.state.depth.testEnable = false;
     draw.state.depth.writeEnable = false;
+    draw.state.depth.stencilTestEnable = false;  // the stencil would mask what was covered
     softraster::BlendState& blend = draw.state.blend;
     blend.enable = true;
     blend.srcColorBlendFactor = blend.dstColorBlendFactor = softraster::BlendFactor::One;

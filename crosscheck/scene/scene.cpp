@@ -338,6 +338,54 @@ softraster::BlendState readBlend(const json& b, const std::string& place) {
   return state;
 }
 
+const std::vector<std::pair<const char*, softraster::CompareOp>>& compareOps() {
+  using softraster::CompareOp;
+  static const std::vector<std::pair<const char*, CompareOp>> ops = {
+      {"never", CompareOp::Never},     {"less", CompareOp::Less},         {"equal", CompareOp::Equal},
+      {"less_or_equal", CompareOp::LessOrEqual}, {"greater", CompareOp::Greater}, {"not_equal", CompareOp::NotEqual},
+      {"greater_or_equal", CompareOp::GreaterOrEqual}, {"always", CompareOp::Always}};
+  return ops;
+}
+
+// A draw's "stencil" object (scenes/README.md): the op state for both faces, "front" and "back"
+// objects overriding it for one face; "enable" (default true) turns the test on.
+void readStencil(const json& s, const std::string& place, softraster::DepthState& depth) {
+  using softraster::StencilOp;
+  checkKeys(s, place, {"enable", "fail_op", "pass_op", "depth_fail_op", "compare_op", "compare_mask", "write_mask",
+                       "reference", "front", "back"});
+  const std::vector<std::pair<const char*, StencilOp>> ops = {
+      {"keep", StencilOp::Keep},
+      {"zero", StencilOp::Zero},
+      {"replace", StencilOp::Replace},
+      {"increment_and_clamp", StencilOp::IncrementAndClamp},
+      {"decrement_and_clamp", StencilOp::DecrementAndClamp},
+      {"invert", StencilOp::Invert},
+      {"increment_and_wrap", StencilOp::IncrementAndWrap},
+      {"decrement_and_wrap", StencilOp::DecrementAndWrap}};
+  const auto face = [&](const json& f, const std::string& at, softraster::StencilOpState fallback) {
+    softraster::StencilOpState out;
+    out.failOp = readEnum(f, "fail_op", at, fallback.failOp, ops);
+    out.passOp = readEnum(f, "pass_op", at, fallback.passOp, ops);
+    out.depthFailOp = readEnum(f, "depth_fail_op", at, fallback.depthFailOp, ops);
+    out.compareOp = readEnum(f, "compare_op", at, fallback.compareOp, compareOps());
+    // The stencil aspect has 8 bits: Vulkan uses only the low 8 bits of each value.
+    out.compareMask = static_cast<std::uint32_t>(readCount(f, "compare_mask", at, fallback.compareMask, 255));
+    out.writeMask = static_cast<std::uint32_t>(readCount(f, "write_mask", at, fallback.writeMask, 255));
+    out.reference = static_cast<std::uint32_t>(readCount(f, "reference", at, fallback.reference, 255));
+    return out;
+  };
+  depth.stencilTestEnable = readBool(s, "enable", place, true);
+  const softraster::StencilOpState both = face(s, place, {});
+  for (const char* side : {"front", "back"}) {
+    softraster::StencilOpState& out = std::string_view(side) == "front" ? depth.front : depth.back;
+    out = both;
+    if (!s.contains(side)) continue;
+    const std::string at = placeOf(place, side);
+    checkKeys(s[side], at, {"fail_op", "pass_op", "depth_fail_op", "compare_op", "compare_mask", "write_mask", "reference"});
+    out = face(s[side], at, both);
+  }
+}
+
 void readDrawState(const json& d, const std::string& place, softraster::PipelineState& state) {
   using softraster::CompareOp;
   using softraster::CullMode;
@@ -407,11 +455,14 @@ void readDrawState(const json& d, const std::string& place, softraster::Pipeline
   auto& ds = state.depth;
   ds.testEnable = readBool(d, "depth_test", place, ds.testEnable);
   ds.writeEnable = readBool(d, "depth_write", place, ds.writeEnable);
-  ds.compareOp = readEnum(d, "depth_compare", place, ds.compareOp,
-                          {{"never", CompareOp::Never}, {"less", CompareOp::Less}, {"equal", CompareOp::Equal},
-                           {"less_or_equal", CompareOp::LessOrEqual}, {"greater", CompareOp::Greater},
-                           {"not_equal", CompareOp::NotEqual}, {"greater_or_equal", CompareOp::GreaterOrEqual},
-                           {"always", CompareOp::Always}});
+  ds.compareOp = readEnum(d, "depth_compare", place, ds.compareOp, compareOps());
+  if (readBool(d, "depth_bounds_test", place, false)) {
+    throw SceneError(placeOf(place, "depth_bounds_test"),
+                     "lavapipe does not offer the depthBounds feature, and Vulkan says \"If the depthBounds feature is "
+                     "not enabled, depthBoundsTestEnable must be VK_FALSE\" "
+                     "(VUID-VkPipelineDepthStencilStateCreateInfo-depthBoundsTestEnable-00598)");
+  }
+  if (d.contains("stencil")) readStencil(d["stencil"], placeOf(place, "stencil"), ds);
 }
 
 // Limits of a procedural sphere ("sphere": {...}): enough for the bench's 1M triangles, small
@@ -773,7 +824,7 @@ Draw readDrawMesh(const json& d, const std::string& place, const std::filesystem
                        "texture", "normal_map", "shadow_map", "shading",
                        "transform", "material", "topology", "viewport", "scissor", "cull", "front_face", "depth_clamp",
                        "depth_bias", "line_width", "line_rasterization", "point_size", "polygon_mode", "blend",
-                       "depth_test", "depth_write", "depth_compare"});
+                       "depth_test", "depth_write", "depth_compare", "depth_bounds_test", "stencil"});
   Draw draw;
   draw.name = readString(d, "name", place, place);
   draw.shading = readShadingModel(d, place);
@@ -987,19 +1038,26 @@ Scene readScene(json& document, const std::filesystem::path& path, const std::ve
 
   if (document.contains("framebuffer")) {
     const json& fb = document["framebuffer"];
-    checkKeys(fb, "/framebuffer", {"width", "height", "clear_colour", "clear_depth", "depth_format", "samples"});
+    checkKeys(fb, "/framebuffer",
+              {"width", "height", "clear_colour", "clear_depth", "clear_stencil", "depth_format", "samples"});
     scene.samples = static_cast<std::uint32_t>(readCount(fb, "samples", "/framebuffer", 1, 64));
     if (scene.samples != 1 && scene.samples != 4) throw SceneError("/framebuffer/samples", "must be 1 or 4");
     scene.depthFormat = readEnum(fb, "depth_format", "/framebuffer", scene.depthFormat,
                                  {{"d16_unorm", softraster::DepthFormat::D16Unorm},
                                   {"x8_d24_unorm", softraster::DepthFormat::X8D24UnormPack32},
-                                  {"d32_sfloat", softraster::DepthFormat::D32Sfloat}});
+                                  {"d32_sfloat", softraster::DepthFormat::D32Sfloat},
+                                  {"d24_unorm_s8_uint", softraster::DepthFormat::D24UnormS8Uint},
+                                  {"d32_sfloat_s8_uint", softraster::DepthFormat::D32SfloatS8Uint}});
     scene.width = static_cast<std::uint32_t>(readCount(fb, "width", "/framebuffer", scene.width, kMaxFramebufferSize));
     scene.height = static_cast<std::uint32_t>(readCount(fb, "height", "/framebuffer", scene.height, kMaxFramebufferSize));
     if (scene.width == 0 || scene.height == 0) throw SceneError("/framebuffer", "width and height must be in 1..8192");
     if (fb.contains("clear_colour")) scene.clearColour = readColour(fb["clear_colour"], "/framebuffer/clear_colour");
     scene.clearDepth = readFloat(fb, "clear_depth", "/framebuffer", scene.clearDepth);
     if (!(scene.clearDepth >= 0 && scene.clearDepth <= 1)) throw SceneError("/framebuffer/clear_depth", "must be in [0, 1]");
+    scene.clearStencil = static_cast<std::uint8_t>(readCount(fb, "clear_stencil", "/framebuffer", 0, 255));
+    if (fb.contains("clear_stencil") && !softraster::hasStencil(scene.depthFormat)) {
+      throw SceneError("/framebuffer/clear_stencil", "needs a depth_format with stencil (d24_unorm_s8_uint or d32_sfloat_s8_uint)");
+    }
   }
 
   scene.camera = readCamera(document.contains("camera") ? document["camera"] : json::object(), "/camera",
@@ -1037,6 +1095,10 @@ Scene readScene(json& document, const std::filesystem::path& path, const std::ve
     const std::string place = "/draws/" + std::to_string(i);
     scene.draws.push_back(readDraw(draws[i], place, path.parent_path(), scene.time, textures, passNames));
     const Draw& draw = scene.draws.back();
+    if (draw.state.depth.stencilTestEnable && !softraster::hasStencil(scene.depthFormat)) {
+      throw SceneError(placeOf(place, "stencil"),
+                       "needs a framebuffer depth_format with stencil (d24_unorm_s8_uint or d32_sfloat_s8_uint)");
+    }
     vertices += draw.indexed ? draw.indices.size() : draw.mesh.vertexCount();
     if (vertices > kMaxSceneVertices) {
       throw SceneError(place, "the scene's draws have " + std::to_string(vertices) + " vertices so far, more than " +

@@ -93,8 +93,9 @@ struct Scene {
   std::uint32_t width = 320, height = 240;
   softraster::Vec4 clearColour{0, 0, 0, 1};
   float clearDepth = 1.0f;
+  std::uint8_t clearStencil = 0;  // with a depth/stencil format
   softraster::DepthFormat depthFormat = softraster::DepthFormat::D32Sfloat;
-  std::uint32_t samples = 1;  // 1 or 4 (MSAA: compared after the resolve; depth via sample 0)
+  std::uint32_t samples = 1;  // 1 or 4 (MSAA: compared after the resolve; depth and stencil via sample 0)
   CameraMatrices camera;      // view and projection, double precision
   CameraSettings cameraSettings;  // what the file says `camera` is made from
   softraster::Mat4 viewProjection = softraster::Mat4::identity();  // projection * view, rounded once

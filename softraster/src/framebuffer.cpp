@@ -1,6 +1,6 @@
 // Framebuffer creation (the checks create() documents), storage, clears (deferred: see
 // framebuffer.hpp), the MSAA resolve (SSE2 where the build has it, the same operations per
-// channel) and depth read-out (one sample, or all of them as floats).
+// channel; stencil keeps sample 0 as depth does) and depth read-out (one sample, or all of them as floats).
 #include <softraster/detail/fragment/colour.hpp>
 #include <softraster/framebuffer.hpp>
 
@@ -32,7 +32,8 @@ Result<Framebuffer> Framebuffer::create(std::uint32_t width, std::uint32_t heigh
     return Status::error("framebuffer samples " + std::to_string(samples) + ": must be 1 or 4");
   }
   if (depthFormat != DepthFormat::D16Unorm && depthFormat != DepthFormat::X8D24UnormPack32 &&
-      depthFormat != DepthFormat::D32Sfloat) {
+      depthFormat != DepthFormat::D32Sfloat && depthFormat != DepthFormat::D24UnormS8Uint &&
+      depthFormat != DepthFormat::D32SfloatS8Uint) {
     return Status::error("unknown depth format");
   }
   return Framebuffer(width, height, depthFormat, samples);
@@ -44,7 +45,8 @@ Framebuffer::Framebuffer(std::uint32_t width, std::uint32_t height, DepthFormat 
       samples_(samples),
       depthFormat_(depthFormat),
       colour_(static_cast<std::size_t>(width) * height * samples * 4, 0),
-      depth_(static_cast<std::size_t>(width) * height * samples, 0) {}
+      depth_(static_cast<std::size_t>(width) * height * samples, 0),
+      stencil_(hasStencil(depthFormat) ? static_cast<std::size_t>(width) * height * samples : 0, 0) {}
 
 Framebuffer Framebuffer::resolve() const {
   Framebuffer out(width_, height_, depthFormat_, 1);
@@ -63,6 +65,7 @@ void Framebuffer::resolveInto(Framebuffer& out) const {
   }
   out.pending_.reset();  // every sample of `out` is written here
   const std::size_t pixels = static_cast<std::size_t>(width_) * height_;
+  for (std::size_t q = 0; q < out.stencil_.size(); ++q) out.stencil_[q] = stencil_[q * samples_];
   const float toFloat = static_cast<float>(1.0 / 255.0);  // how lavapipe's texel fetch converts UNORM8
   const float average = 1.0f / static_cast<float>(samples_);
   std::size_t p = 0;
@@ -99,12 +102,13 @@ void Framebuffer::resolveInto(Framebuffer& out) const {
   }
 }
 
-void Framebuffer::clear(Vec4 colour, float depth) {
+void Framebuffer::clear(Vec4 colour, float depth, std::uint8_t stencil) {
   std::uint8_t rgba[4];
   detail::storeColour(rgba, colour);
   PendingClear clear;
   std::memcpy(&clear.colour, rgba, sizeof clear.colour);
   clear.depth = depthClearValue(depthFormat_, depth);
+  clear.stencil = stencil;
   pending_ = clear;
 }
 
@@ -130,6 +134,7 @@ void Framebuffer::fillRows(const PendingClear& clear, std::uint32_t y0, std::uin
   const std::size_t first = y0 * perRow, count = (y1 - y0 + 1) * perRow;
   fillWords(colour_.data() + 4 * first, count, clear.colour);
   fillWords(reinterpret_cast<std::uint8_t*>(depth_.data() + first), count, clear.depth);
+  if (!stencil_.empty()) std::memset(stencil_.data() + first, clear.stencil, count);
 }
 
 void Framebuffer::writePendingClear() const {

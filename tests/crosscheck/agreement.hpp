@@ -1,7 +1,7 @@
-// Helpers the scene-parameter tests share (texture_test, shadow_test, lighting_test): a scene of
-// scenes/ rendered by both renderers under the validation layer and required to agree to the
-// bit, how many pixels two frames differ in, and a scene error checked to be one line naming
-// the file and the place.
+// Helpers the scene-parameter tests share (texture_test, shadow_test, lighting_test,
+// stencil_test): a scene of scenes/ rendered by both renderers under the validation layer and
+// required to agree to the bit (stencil included), how many pixels two frames differ in, and a
+// scene error checked to be one line naming the file and the place.
 #pragma once
 
 #include "compare/compare.hpp"
@@ -44,6 +44,7 @@ inline crosscheck::Frame renderAgreeing(const std::string& name, const std::vect
     EXPECT_EQ(c.coverageMismatches, 0u) << name;
     for (int ch = 0; ch < 4; ++ch) EXPECT_EQ(c.colourMaxDelta[ch], 0) << name << " channel " << ch;
     EXPECT_EQ(c.depthMaxDelta, 0.0) << name;
+    EXPECT_EQ(c.stencilMismatches, 0u) << name;
     if (first.rgba.empty()) first = std::move(*soft);
   }
   return first;

@@ -75,6 +75,7 @@ void crossCheckScene(const std::string& name) {
   EXPECT_LE(c.depthPixelsOver, scene->tolerance.maxDepthPixelsOver);
   for (int ch = 0; ch < 4; ++ch) EXPECT_LE(c.colourMaxDelta[ch], scene->tolerance.colourThreshold) << "channel " << ch;
   EXPECT_LE(c.depthMaxDelta, scene->tolerance.depthThreshold);
+  EXPECT_EQ(c.stencilMismatches, 0u) << "stencil is compared exactly";
 
   // The scene must actually draw something, or agreement proves nothing.
   EXPECT_GE(crosscheck::coveredPixels(*soft, *scene), 100u) << "the scene draws almost nothing";

@@ -25,19 +25,25 @@ const std::filesystem::path kScenes = SCENES_DIR;
 
 std::vector<std::string> sceneNames() { return conformanceSceneNames(); }
 
-// The first sample whose colour or depth differs, as a readable failure; empty when identical.
+// The first sample whose colour, depth or stencil differs, as a readable failure; empty when identical.
 std::string firstDifference(const softraster::Framebuffer& fast, const softraster::Framebuffer& scalar) {
   const std::size_t samples = scalar.depthStorage().size();
   if (fast.depthStorage().size() != samples || fast.colour().size() != scalar.colour().size()) return "sizes differ";
+  if (fast.stencilStorage().size() != scalar.stencilStorage().size()) return "stencil sizes differ";
+  const bool stencil = !scalar.stencilStorage().empty();
   const std::size_t perPixel = scalar.samples();
   for (std::size_t s = 0; s < samples; ++s) {
     const bool colourDiffers =
         !std::equal(fast.colour().begin() + 4 * s, fast.colour().begin() + 4 * s + 4, scalar.colour().begin() + 4 * s);
-    if (colourDiffers || fast.depthStorage()[s] != scalar.depthStorage()[s]) {
+    const bool stencilDiffers = stencil && fast.stencilStorage()[s] != scalar.stencilStorage()[s];
+    if (colourDiffers || stencilDiffers || fast.depthStorage()[s] != scalar.depthStorage()[s]) {
       const std::size_t pixel = s / perPixel;
       return "pixel (" + std::to_string(pixel % scalar.width()) + ", " + std::to_string(pixel / scalar.width()) +
              ") sample " + std::to_string(s % perPixel) + ": depth " + std::to_string(fast.depthStorage()[s]) +
-             " vs " + std::to_string(scalar.depthStorage()[s]) + (colourDiffers ? ", colour differs" : "");
+             " vs " + std::to_string(scalar.depthStorage()[s]) + (colourDiffers ? ", colour differs" : "") +
+             (stencilDiffers ? ", stencil " + std::to_string(fast.stencilStorage()[s]) + " vs " +
+                                   std::to_string(scalar.stencilStorage()[s])
+                             : "");
     }
   }
   return {};

@@ -94,3 +94,11 @@ TEST(Variants, HitsOfTheClosedSphere) {
 }
 
 }  // namespace
+
+TEST(Variants, HitsAreCountedWithTheStencilTestOff) {
+  // The stencil would mask what a rasterizer covered: the counting scene turns it off.
+  const auto scene = loadScene(kScenes / "stencil_mask_two_pass.json");
+  ASSERT_TRUE(scene) << scene.error();
+  ASSERT_TRUE(scene->draws[1].state.depth.stencilTestEnable);
+  for (const auto& draw : hitCountScene(*scene).draws) EXPECT_FALSE(draw.state.depth.stencilTestEnable) << draw.name;
+}

@@ -25,8 +25,15 @@ namespace vkref::detail {
 // Colour is always R8G8B8A8_UNORM; the depth format is the request's.
 inline constexpr VkFormat kColourFormat = VK_FORMAT_R8G8B8A8_UNORM;
 // Indexed by softraster::DepthFormat.
-inline constexpr VkFormat kDepthFormats[] = {VK_FORMAT_D16_UNORM, VK_FORMAT_X8_D24_UNORM_PACK32,
-                                             VK_FORMAT_D32_SFLOAT};
+inline constexpr VkFormat kDepthFormats[] = {VK_FORMAT_D16_UNORM, VK_FORMAT_X8_D24_UNORM_PACK32, VK_FORMAT_D32_SFLOAT,
+                                             VK_FORMAT_D24_UNORM_S8_UINT, VK_FORMAT_D32_SFLOAT_S8_UINT};
+
+// The aspects of a depth (or depth/stencil) format: barriers and views name them all.
+inline constexpr VkImageAspectFlags depthAspects(VkFormat format) {
+  return format == VK_FORMAT_D24_UNORM_S8_UINT || format == VK_FORMAT_D32_SFLOAT_S8_UINT
+             ? VK_IMAGE_ASPECT_DEPTH_BIT | VK_IMAGE_ASPECT_STENCIL_BIT
+             : VK_IMAGE_ASPECT_DEPTH_BIT;
+}
 
 // An open device. Not movable: the debug messenger holds its address.
 class Device {

@@ -32,7 +32,7 @@ void toAttachments(VkCommandBuffer cmd, const Targets& t) {
   }
   for (const Image* image : {&t.depth, &t.msDepth}) {
     if (*image)
-      barriers.push_back(imageBarrier(image->handle(), VK_IMAGE_ASPECT_DEPTH_BIT, VK_PIPELINE_STAGE_2_NONE,
+      barriers.push_back(imageBarrier(image->handle(), depthAspects(t.depthFormat), VK_PIPELINE_STAGE_2_NONE,
                                       VK_ACCESS_2_NONE, kDepthWriteStages,
                                       VK_ACCESS_2_DEPTH_STENCIL_ATTACHMENT_READ_BIT | kDepthWriteAccess,
                                       VK_IMAGE_LAYOUT_UNDEFINED, VK_IMAGE_LAYOUT_DEPTH_STENCIL_ATTACHMENT_OPTIMAL));
@@ -40,7 +40,8 @@ void toAttachments(VkCommandBuffer cmd, const Targets& t) {
   barrier(cmd, barriers);
 }
 
-// Clears, then with MSAA resolves at the end: colour averaged, depth from sample 0.
+// Clears, then with MSAA resolves at the end: colour averaged, depth (and stencil) from sample 0.
+// A depth/stencil format is also the stencil attachment (the same view), cleared to clearStencil.
 void beginRendering(VkCommandBuffer cmd, const FramePass& pass) {
   const Targets& t = *pass.targets;
   const bool ms = t.multisampled();
@@ -62,13 +63,14 @@ void beginRendering(VkCommandBuffer cmd, const FramePass& pass) {
                                         .resolveImageLayout = VK_IMAGE_LAYOUT_DEPTH_STENCIL_ATTACHMENT_OPTIMAL,
                                         .loadOp = VK_ATTACHMENT_LOAD_OP_CLEAR,
                                         .storeOp = VK_ATTACHMENT_STORE_OP_STORE,
-                                        .clearValue = {.depthStencil = {pass.clearDepth, 0}}};
+                                        .clearValue = {.depthStencil = {pass.clearDepth, pass.clearStencil}}};
   const VkRenderingInfo info{.sType = VK_STRUCTURE_TYPE_RENDERING_INFO,
                              .renderArea = {{0, 0}, {t.width, t.height}},
                              .layerCount = 1,
                              .colorAttachmentCount = 1,
                              .pColorAttachments = &colour,
-                             .pDepthAttachment = &depth};
+                             .pDepthAttachment = &depth,
+                             .pStencilAttachment = t.hasStencil() ? &depth : nullptr};
   vkCmdBeginRendering(cmd, &info);
 }
 
@@ -147,7 +149,7 @@ void toTransferSource(VkCommandBuffer cmd, const Targets& t) {
       imageBarrier(t.colour.handle(), VK_IMAGE_ASPECT_COLOR_BIT, VK_PIPELINE_STAGE_2_COLOR_ATTACHMENT_OUTPUT_BIT,
                    VK_ACCESS_2_COLOR_ATTACHMENT_WRITE_BIT, VK_PIPELINE_STAGE_2_COPY_BIT, VK_ACCESS_2_TRANSFER_READ_BIT,
                    VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL),
-      imageBarrier(t.depth.handle(), VK_IMAGE_ASPECT_DEPTH_BIT, kDepthWriteStages, kDepthWriteAccess,
+      imageBarrier(t.depth.handle(), depthAspects(t.depthFormat), kDepthWriteStages, kDepthWriteAccess,
                    VK_PIPELINE_STAGE_2_COPY_BIT, VK_ACCESS_2_TRANSFER_READ_BIT,
                    VK_IMAGE_LAYOUT_DEPTH_STENCIL_ATTACHMENT_OPTIMAL, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL)};
   barrier(cmd, barriers);

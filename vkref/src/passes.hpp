@@ -53,6 +53,7 @@ struct FramePass {
   const Targets* targets = nullptr;
   std::array<float, 4> clearColour{};
   float clearDepth = 1.0f;
+  std::uint32_t clearStencil = 0;  // with a depth/stencil format
   VkPipelineLayout layout = VK_NULL_HANDLE;
   VkBuffer vertices = VK_NULL_HANDLE;  // the frame's buffers (null when no draw uses one)
   VkBuffer indices = VK_NULL_HANDLE;

@@ -25,13 +25,16 @@ constexpr VkFormat kAttributeFormats[] = {VK_FORMAT_R32_SFLOAT, VK_FORMAT_R32G32
                                           VK_FORMAT_R32G32B32A32_SFLOAT};
 static_assert(static_cast<int>(softraster::CompareOp::Always) == VK_COMPARE_OP_ALWAYS,
               "softraster::CompareOp lists Vulkan's compare ops in Vulkan's order");
+static_assert(static_cast<int>(softraster::StencilOp::IncrementAndClamp) == VK_STENCIL_OP_INCREMENT_AND_CLAMP &&
+                  static_cast<int>(softraster::StencilOp::DecrementAndWrap) == VK_STENCIL_OP_DECREMENT_AND_WRAP,
+              "softraster::StencilOp lists Vulkan's stencil ops in Vulkan's order");
 static_assert(static_cast<int>(softraster::BlendFactor::SrcAlphaSaturate) == VK_BLEND_FACTOR_SRC_ALPHA_SATURATE &&
                   static_cast<int>(softraster::BlendOp::Max) == VK_BLEND_OP_MAX &&
                   static_cast<int>(softraster::kColourA) == static_cast<int>(VK_COLOR_COMPONENT_A_BIT),
               "softraster's blend enums are Vulkan's values");
 // A tripwire: a field added to PipelineState must also join PipelineCache::Key (and compile()),
 // or draws differing only in it would share a pipeline.
-static_assert(sizeof(softraster::PipelineState) == 100, "PipelineState changed: update PipelineCache::Key");
+static_assert(sizeof(softraster::PipelineState) == 132, "PipelineState changed: update PipelineCache::Key");
 
 // The viewport a draw uses: a zero width or height means the whole framebuffer.
 VkViewport viewportFor(const softraster::Viewport& v, std::uint32_t width, std::uint32_t height) {
@@ -139,6 +142,11 @@ Status checkDraw(const DrawCall& d, std::uint32_t width, std::uint32_t height, c
   if (static_cast<std::size_t>(s.rasterization.frontFace) >= std::size(kFrontFaces))
     return Status::error("unsupported front face");
   if (s.depth.compareOp > softraster::CompareOp::Always) return Status::error("unsupported depth compare op");
+  for (const softraster::StencilOpState* face : {&s.depth.front, &s.depth.back}) {
+    if (face->compareOp > softraster::CompareOp::Always) return Status::error("unsupported stencil compare op");
+    for (softraster::StencilOp op : {face->failOp, face->passOp, face->depthFailOp})
+      if (op > softraster::StencilOp::DecrementAndWrap) return Status::error("unsupported stencil op");
+  }
 
   const VkViewport v = viewportFor(s.viewport, width, height);
   const float* bounds = limits.viewportBoundsRange;
@@ -280,6 +288,19 @@ softraster::Result<VkPipeline> PipelineCache::get(const DrawCall& d, const Targe
   key.depthTest = s.depth.testEnable;
   key.depthWrite = s.depth.writeEnable;
   key.depthCompare = byte(s.depth.compareOp);
+  key.stencilTest = s.depth.stencilTestEnable;
+  if (key.stencilTest) {  // a disabled test's faces change nothing, so they share one pipeline
+    const softraster::StencilOpState* faces[2] = {&s.depth.front, &s.depth.back};
+    for (std::size_t f = 0; f < 2; ++f) {
+      key.stencilOps[4 * f] = byte(faces[f]->failOp);
+      key.stencilOps[4 * f + 1] = byte(faces[f]->passOp);
+      key.stencilOps[4 * f + 2] = byte(faces[f]->depthFailOp);
+      key.stencilOps[4 * f + 3] = byte(faces[f]->compareOp);
+      key.stencilValues[3 * f] = faces[f]->compareMask;
+      key.stencilValues[3 * f + 1] = faces[f]->writeMask;
+      key.stencilValues[3 * f + 2] = faces[f]->reference;
+    }
+  }
   const softraster::BlendState& b = s.blend;
   key.blend = b.enable;
   key.srcColorFactor = byte(b.srcColorBlendFactor);
@@ -362,11 +383,25 @@ softraster::Result<VkPipeline> PipelineCache::compile(const Program& p, const so
     const VkPipelineMultisampleStateCreateInfo multisample{
         .sType = VK_STRUCTURE_TYPE_PIPELINE_MULTISAMPLE_STATE_CREATE_INFO,
         .rasterizationSamples = target.samples};
+    // softraster's StencilOp and CompareOp are VkStencilOp and VkCompareOp values.
+    const auto stencilFace = [](const softraster::StencilOpState& f) {
+      return VkStencilOpState{.failOp = static_cast<VkStencilOp>(f.failOp),
+                              .passOp = static_cast<VkStencilOp>(f.passOp),
+                              .depthFailOp = static_cast<VkStencilOp>(f.depthFailOp),
+                              .compareOp = static_cast<VkCompareOp>(f.compareOp),
+                              .compareMask = f.compareMask,
+                              .writeMask = f.writeMask,
+                              .reference = f.reference};
+    };
     const VkPipelineDepthStencilStateCreateInfo depth{
         .sType = VK_STRUCTURE_TYPE_PIPELINE_DEPTH_STENCIL_STATE_CREATE_INFO,
         .depthTestEnable = state.depth.testEnable ? VK_TRUE : VK_FALSE,
         .depthWriteEnable = state.depth.writeEnable ? VK_TRUE : VK_FALSE,
-        .depthCompareOp = static_cast<VkCompareOp>(state.depth.compareOp)};
+        .depthCompareOp = static_cast<VkCompareOp>(state.depth.compareOp),
+        .depthBoundsTestEnable = VK_FALSE,  // lavapipe has no depthBounds feature
+        .stencilTestEnable = state.depth.stencilTestEnable ? VK_TRUE : VK_FALSE,
+        .front = stencilFace(state.depth.front),
+        .back = stencilFace(state.depth.back)};
     // softraster's blend enums are VkBlendFactor / VkBlendOp values, its mask VkColorComponentFlags.
     const softraster::BlendState& b = state.blend;
     const auto factor = [](softraster::BlendFactor f) { return static_cast<VkBlendFactor>(f); };
@@ -387,7 +422,11 @@ softraster::Result<VkPipeline> PipelineCache::compile(const Program& p, const so
     const VkPipelineRenderingCreateInfo rendering{.sType = VK_STRUCTURE_TYPE_PIPELINE_RENDERING_CREATE_INFO,
                                                   .colorAttachmentCount = target.colour ? 1u : 0u,
                                                   .pColorAttachmentFormats = &kColourFormat,
-                                                  .depthAttachmentFormat = target.depthFormat};
+                                                  .depthAttachmentFormat = target.depthFormat,
+                                                  .stencilAttachmentFormat =
+                                                      (depthAspects(target.depthFormat) & VK_IMAGE_ASPECT_STENCIL_BIT)
+                                                          ? target.depthFormat
+                                                          : VK_FORMAT_UNDEFINED};
     const VkGraphicsPipelineCreateInfo info{.sType = VK_STRUCTURE_TYPE_GRAPHICS_PIPELINE_CREATE_INFO,
                                             .pNext = &rendering,
                                             .stageCount = 2,

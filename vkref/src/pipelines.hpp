@@ -105,6 +105,10 @@ class PipelineCache {
     std::uint32_t scissorWidth = 0, scissorHeight = 0;
     bool depthTest = false, depthWrite = false;
     std::uint8_t depthCompare = 0;
+    bool stencilTest = false;
+    // front then back: failOp, passOp, depthFailOp, compareOp; compareMask, writeMask, reference
+    std::array<std::uint8_t, 8> stencilOps{};
+    std::array<std::uint32_t, 6> stencilValues{};
     bool blend = false;
     std::uint8_t srcColorFactor = 0, dstColorFactor = 0, colorOp = 0, srcAlphaFactor = 0, dstAlphaFactor = 0,
                  alphaOp = 0, writeMask = 0;

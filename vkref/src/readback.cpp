@@ -12,8 +12,10 @@ namespace {
 using softraster::Status;
 
 // Bytes per depth texel as copied out, indexed by softraster::DepthFormat: D16 as 16-bit
-// integers, X8_D24 as 32-bit words with the depth in the low 24 bits, D32_SFLOAT as floats.
-constexpr std::uint32_t kDepthTexelBytes[] = {2, 4, 4};
+// integers, X8_D24 (and D24_UNORM_S8_UINT's depth aspect) as 32-bit words with the depth in the
+// low 24 bits, D32_SFLOAT (and D32_SFLOAT_S8_UINT's depth aspect) as floats. A stencil aspect is
+// copied out as one byte per texel.
+constexpr std::uint32_t kDepthTexelBytes[] = {2, 4, 4, 4, 4};
 
 std::uint32_t depthTexelBytes(softraster::DepthFormat format) {
   return kDepthTexelBytes[static_cast<std::size_t>(format)];
@@ -32,6 +34,11 @@ softraster::Result<HostImages> createHostImages(const Device& device, const Targ
   auto depth = Buffer::create(device, pixels * depthTexelBytes(depthFormat), VK_BUFFER_USAGE_TRANSFER_DST_BIT);
   if (!depth) return depth.status();
   host.depth = std::move(*depth);
+  if (targets.hasStencil()) {
+    auto stencil = Buffer::create(device, pixels, VK_BUFFER_USAGE_TRANSFER_DST_BIT);
+    if (!stencil) return stencil.status();
+    host.stencil = std::move(*stencil);
+  }
   return host;
 }
 
@@ -45,6 +52,11 @@ Status recordCopies(VkCommandBuffer cmd, const Targets& targets, const HostImage
                          &colourRegion);
   vkCmdCopyImageToBuffer(cmd, targets.depth.handle(), VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, host.depth.handle(), 1,
                          &depthRegion);
+  if (targets.hasStencil()) {
+    const VkBufferImageCopy stencilRegion{.imageSubresource = {VK_IMAGE_ASPECT_STENCIL_BIT, 0, 0, 1}, .imageExtent = extent};
+    vkCmdCopyImageToBuffer(cmd, targets.depth.handle(), VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, host.stencil.handle(), 1,
+                           &stencilRegion);
+  }
   const VkMemoryBarrier2 toHost{.sType = VK_STRUCTURE_TYPE_MEMORY_BARRIER_2,
                                 .srcStageMask = VK_PIPELINE_STAGE_2_COPY_BIT,
                                 .srcAccessMask = VK_ACCESS_2_TRANSFER_WRITE_BIT,
@@ -68,15 +80,20 @@ FrameImages unpack(const HostImages& host, std::uint32_t width, std::uint32_t he
   for (std::size_t i = 0; i < pixels; ++i) {
     std::uint32_t stored = 0;
     std::memcpy(&stored, texels + i * texelBytes, texelBytes);
-    switch (host.depthFormat) {
+    switch (softraster::depthAspect(host.depthFormat)) {
       case softraster::DepthFormat::D16Unorm: out.depth[i] = static_cast<float>(stored / 65535.0); break;
       case softraster::DepthFormat::X8D24UnormPack32:
         stored &= 0xffffffu;
         out.depth[i] = static_cast<float>(stored / 16777215.0);
         break;
       case softraster::DepthFormat::D32Sfloat: std::memcpy(&out.depth[i], &stored, 4); break;
+      default: break;  // depthAspect gives one of the three
     }
     out.depthStorage[i] = stored;
+  }
+  if (host.stencil.handle() != VK_NULL_HANDLE) {
+    out.stencil.resize(pixels);
+    std::memcpy(out.stencil.data(), host.stencil.mapped(), pixels);
   }
   return out;
 }

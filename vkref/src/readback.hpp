@@ -1,6 +1,7 @@
 // vkref readback: the copies of a frame's single-sample colour and depth images into host
 // buffers, and their unpacking into FrameImages: colour as RGBA8, depth as floats in [0, 1] and
-// as stored (D16 and X8_D24 as UNORM integers, D32_SFLOAT as the float's bits).
+// as stored (D16 and X8_D24 as UNORM integers, D32_SFLOAT as the float's bits; a depth/stencil
+// format's depth aspect as its depth-only twin's) and the stencil aspect as bytes.
 // Deliberately no resolve (passes resolves MSAA while rendering), no layout changes (passes leaves
 // the images ready to copy) and no format conversion beyond depth's: colour is R8G8B8A8 as is.
 #pragma once
@@ -21,6 +22,7 @@ namespace vkref::detail {
 struct HostImages {
   softraster::DepthFormat depthFormat = softraster::DepthFormat::D32Sfloat;
   Buffer colour, depth;
+  Buffer stencil;  // with a depth/stencil format: one byte per pixel
 };
 
 softraster::Result<HostImages> createHostImages(const Device& device, const Targets& targets,

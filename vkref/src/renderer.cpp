@@ -199,6 +199,7 @@ Result<PreparedFrame> Renderer::prepare(const FrameRequest& request) {
   const detail::FramePass framePass{.targets = &frame->targets,
                                     .clearColour = request.clearColour,
                                     .clearDepth = request.clearDepth,
+                                    .clearStencil = request.clearStencil,
                                     .layout = impl_->pipelines->layout(),
                                     .vertices = frame->geometry.vertices.handle(),
                                     .indices = frame->geometry.indices.handle(),

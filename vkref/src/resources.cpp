@@ -160,14 +160,14 @@ softraster::Result<Targets> createTargets(const Device& device, std::uint32_t wi
   if (!colour) return colour.status();
   t.colour = std::move(*colour);
   auto depth = Image::create(device, depthFormat, depthUsage | VK_IMAGE_USAGE_TRANSFER_SRC_BIT,
-                             VK_IMAGE_ASPECT_DEPTH_BIT, width, height, VK_SAMPLE_COUNT_1_BIT);
+                             depthAspects(depthFormat), width, height, VK_SAMPLE_COUNT_1_BIT);
   if (!depth) return depth.status();
   t.depth = std::move(*depth);
   if (t.multisampled()) {
     auto msColour = Image::create(device, kColourFormat, colourUsage, VK_IMAGE_ASPECT_COLOR_BIT, width, height, samples);
     if (!msColour) return msColour.status();
     t.msColour = std::move(*msColour);
-    auto msDepth = Image::create(device, depthFormat, depthUsage, VK_IMAGE_ASPECT_DEPTH_BIT, width, height, samples);
+    auto msDepth = Image::create(device, depthFormat, depthUsage, depthAspects(depthFormat), width, height, samples);
     if (!msDepth) return msDepth.status();
     t.msDepth = std::move(*msDepth);
   }

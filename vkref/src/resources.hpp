@@ -76,6 +76,7 @@ struct Targets {
   Image msColour, msDepth;  // empty unless samples > 1
 
   bool multisampled() const { return samples != VK_SAMPLE_COUNT_1_BIT; }
+  bool hasStencil() const { return (depthAspects(depthFormat) & VK_IMAGE_ASPECT_STENCIL_BIT) != 0; }
 };
 
 softraster::Result<Targets> createTargets(const Device& device, std::uint32_t width, std::uint32_t height,

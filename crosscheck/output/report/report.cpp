@@ -236,10 +236,12 @@ std::string summaryRow(const SceneResult& r, std::size_t rank, const SceneVersus
                       changeOf(versus, "depth pixels over"));
     row += numberCell(c.depthMaxDelta, depthText(c.depthMaxDelta), c.depthMaxDelta > t.depthThreshold,
                       "threshold " + depthText(t.depthThreshold), changeOf(versus, "depth max |\xCE\x94|"));
+    row += numberCell(double(c.stencilMismatches), std::to_string(c.stencilMismatches), c.stencilMismatches > 0,
+                      "pixels whose stored stencil differs; allowed 0", changeOf(versus, "stencil mismatches"));
     row += numberCell(r.softMilliseconds, fixed("%.2f", r.softMilliseconds), false);
     row += numberCell(r.vulkanMilliseconds, fixed("%.2f", r.vulkanMilliseconds), false);
   } else {
-    for (int i = 0; i < 9; ++i) row += emptyCell();
+    for (int i = 0; i < 10; ++i) row += emptyCell();
   }
   return row + "</tr>\n";
 }
@@ -292,6 +294,7 @@ std::string metricsTable(const SceneResult& r) {
                       "\xE2\x89\xA4 " + std::to_string(t.maxDepthPixelsOver), c.depthPixelsOver > t.maxDepthPixelsOver);
     rows += metricRow("depth max |\xCE\x94|", depthText(c.depthMaxDelta), "threshold " + depthText(t.depthThreshold),
                       c.depthMaxDelta > t.depthThreshold);
+    rows += metricRow("stencil mismatches", std::to_string(c.stencilMismatches), "0", c.stencilMismatches > 0);
     rows += metricRow("time", fixed("softraster %.2f ms", r.softMilliseconds) + fixed(", Vulkan %.2f ms", r.vulkanMilliseconds) +
                       fixed(", whole scene %.2f ms", r.milliseconds), "", false);
   } else if (r.loaded) {
@@ -452,6 +455,11 @@ std::string sceneSection(const RunResults& run, const SceneResult& r, std::size_
     s += "<div class=\"views\">\n" +
          figure(r, "soft.depth", "softraster depth") + figure(r, "vulkan.depth", "Vulkan depth") +
          figure(r, "depth.diff", "depth difference (heatmap)") + "</div>\n" + depthLegend(r.tolerance.depthThreshold);
+    if (imageOf(r, "soft.stencil")) {
+      s += "<div class=\"views\">\n" + figure(r, "soft.stencil", "softraster stencil (grey = value)") +
+           figure(r, "vulkan.stencil", "Vulkan stencil") +
+           figure(r, "stencil.diff", "stencil difference (magenta: differs; compared exactly)") + "</div>\n";
+    }
     s += "<p class=\"run\">Depth views map " + e(fixed("%.9g", r.depthViewRange.first)) + " to black and " +
          e(fixed("%.9g", r.depthViewRange.second)) + " to white, the same for both (the range they drew); depths outside it, such as the "
          "clear depth, saturate.</p>\n";
@@ -631,6 +639,7 @@ std::string reportHtml(const RunResults& run, const std::filesystem::path& repor
           "<th data-type=\"number\" data-first=\"ascending\" title=\"RGB, dB; lowest first\">PSNR</th>"
           "<th data-type=\"number\" title=\"pixels with depth over the depth threshold\">depth pixels over</th>"
           "<th data-type=\"number\">depth max |\xCE\x94|</th>"
+          "<th data-type=\"number\" title=\"pixels whose stored stencil differs (exact)\">stencil mismatches</th>"
           "<th data-type=\"number\">softraster ms</th>"
           "<th data-type=\"number\">Vulkan ms</th>"
           "</tr></thead>\n<tbody>\n";

@@ -1,19 +1,35 @@
-// The image formats softraster stores: colour is always R8G8B8A8_UNORM; depth is one of the
-// DepthFormat values below, kept as the format stores it (UNORM depth as its integer, D32_SFLOAT
-// as its float's bits). A header of its own so setup and per-sample stages can name a depth
-// format without depending on the Framebuffer.
-// Deliberately absent until a scene needs them: stencil, other colour formats.
+// The image formats softraster stores: colour is always R8G8B8A8_UNORM; depth (and stencil) is
+// one of the DepthFormat values below, depth kept as the format stores it (UNORM depth as its
+// integer, D32_SFLOAT as its float's bits), stencil as one byte per sample beside it. A header of
+// its own so setup and per-sample stages can name a depth format without depending on the
+// Framebuffer.
+// The two depth/stencil formats compute depth exactly as their depth-only twin does
+// (depthAspect): the draw loop is instantiated per depth aspect, and stencil is a run-time
+// branch, so they cost no more compiled code.
+// Deliberately absent until a scene needs them: stencil-only formats (S8_UINT), D16_UNORM_S8_UINT
+// (lavapipe does not offer it), other colour formats.
 #pragma once
 
 #include <cstdint>
 
 namespace softraster {
 
-enum class DepthFormat : std::uint8_t { D16Unorm, X8D24UnormPack32, D32Sfloat };
+enum class DepthFormat : std::uint8_t { D16Unorm, X8D24UnormPack32, D32Sfloat, D24UnormS8Uint, D32SfloatS8Uint };
 
-// Bits of a UNORM depth format (16 or 24), or 0 for D32_SFLOAT.
+// Whether the format has a stencil aspect (8 bits).
+constexpr bool hasStencil(DepthFormat f) { return f == DepthFormat::D24UnormS8Uint || f == DepthFormat::D32SfloatS8Uint; }
+
+// The depth-only format whose depth arithmetic and storage the format's depth aspect shares:
+// D24_UNORM_S8_UINT's depth is X8_D24_UNORM_PACK32's, D32_SFLOAT_S8_UINT's is D32_SFLOAT's.
+constexpr DepthFormat depthAspect(DepthFormat f) {
+  return f == DepthFormat::D24UnormS8Uint ? DepthFormat::X8D24UnormPack32
+         : f == DepthFormat::D32SfloatS8Uint ? DepthFormat::D32Sfloat
+                                             : f;
+}
+
+// Bits of a UNORM depth format (16 or 24), or 0 for D32_SFLOAT (and D32_SFLOAT_S8_UINT).
 constexpr int unormDepthBits(DepthFormat f) {
-  return f == DepthFormat::D16Unorm ? 16 : f == DepthFormat::X8D24UnormPack32 ? 24 : 0;
+  return depthAspect(f) == DepthFormat::D16Unorm ? 16 : depthAspect(f) == DepthFormat::X8D24UnormPack32 ? 24 : 0;
 }
 
 // A depth clear value as the format stores it: lrint(depth * (2^n - 1)) for UNORM formats, the

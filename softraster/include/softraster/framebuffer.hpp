@@ -1,8 +1,9 @@
 // Framebuffer: an R8G8B8A8_UNORM colour image and a depth image (formats.hpp), row 0 at the top,
 // with 1 or 4 samples per pixel (samples of a pixel are adjacent, in Vulkan's sample order).
 // Depth is kept as the format stores it: UNORM depth as its integer, D32_SFLOAT as its float's
-// bits; depthValues() reads it back as floats. resolve() averages colour samples as lavapipe's
-// resolve blit does and keeps depth sample 0.
+// bits; depthValues() reads it back as floats. A depth/stencil format also has a stencil image,
+// one byte per sample in the same order. resolve() averages colour samples as lavapipe's
+// resolve blit does and keeps depth and stencil sample 0.
 // Made by Framebuffer::create, which checks the size, format and sample count and returns the
 // error as a Result (a default-constructed Framebuffer has no pixels and no draw accepts it).
 // clear() is deferred: it remembers the values, and the next draw that runs in the Context's
@@ -10,8 +11,7 @@
 // rows are in that core's cache when drawn); any other access to the images writes the whole
 // clear first, so a pending clear is never observable. Not thread-safe: one thread at a time
 // draws into or reads a Framebuffer (even a const read may write a pending clear).
-// Deliberately without stencil until a scene needs it; accessors do not check their
-// coordinates beyond an assert (they are preconditions, as for std::vector's operator[]).
+// Accessors do not check their coordinates beyond an assert (they are preconditions, as for std::vector's operator[]).
 #pragma once
 
 #include <softraster/formats.hpp>
@@ -37,6 +37,7 @@ class Framebuffer {
   // A width x height framebuffer with `samples` samples per pixel (1, or 4: Vulkan's standard
   // 4x pattern), or the error: "framebuffer size WxH: width and height must be 1..16384",
   // "framebuffer samples N: must be 1 or 4", "unknown depth format".
+  // A format with a stencil aspect (hasStencil) gets a stencil image, cleared to 0.
   static Result<Framebuffer> create(std::uint32_t width, std::uint32_t height,
                                     DepthFormat depthFormat = DepthFormat::D32Sfloat, std::uint32_t samples = 1);
 
@@ -52,9 +53,10 @@ class Framebuffer {
   // and depth format with one sample (no allocation per frame).
   void resolveInto(Framebuffer& out) const;
 
-  // Clears colour (converted as a UNORM8 store converts) and depth (as a depth clear converts:
-  // lrint(depth * (2^n - 1)) for UNORM formats). Deferred, as the top of this file says.
-  void clear(Vec4 colour, float depth);
+  // Clears colour (converted as a UNORM8 store converts), depth (as a depth clear converts:
+  // lrint(depth * (2^n - 1)) for UNORM formats) and stencil, if the format has it. Deferred, as
+  // the top of this file says.
+  void clear(Vec4 colour, float depth, std::uint8_t stencil = 0);
 
   // 4 bytes per sample, RGBA; samples() samples per pixel.
   std::vector<std::uint8_t>& colour() { return settled().colour_; }
@@ -63,6 +65,9 @@ class Framebuffer {
   // Depth as stored, one value per sample (see the top of this file).
   std::vector<std::uint32_t>& depthStorage() { return settled().depth_; }
   const std::vector<std::uint32_t>& depthStorage() const { return settled().depth_; }
+  // Stencil, one byte per sample in depthStorage()'s order; empty without a stencil aspect.
+  std::vector<std::uint8_t>& stencilStorage() { return settled().stencil_; }
+  const std::vector<std::uint8_t>& stencilStorage() const { return settled().stencil_; }
   // Depth of one sample (index into depthStorage()) as a float: in [0, 1] for Vulkan depth (the
   // UNORM integer divided by 2^n - 1), 1/w for the 1/z buffer (D32_SFLOAT's float as stored).
   float depth(std::size_t sample) const;
@@ -88,6 +93,7 @@ class Framebuffer {
   struct PendingClear {
     std::uint32_t colour;  // RGBA8
     std::uint32_t depth;   // as stored
+    std::uint8_t stencil;  // written only where the format has stencil
   };
   // Hands over the clear not yet written, if any: the caller then writes every row with
   // clearRows() before anything reads or draws there.
@@ -121,6 +127,7 @@ class Framebuffer {
   mutable std::optional<PendingClear> pending_;
   mutable std::vector<std::uint8_t> colour_;
   mutable std::vector<std::uint32_t> depth_;
+  mutable std::vector<std::uint8_t> stencil_;  // empty without a stencil aspect
 };
 
 }  // namespace softraster

@@ -6,8 +6,10 @@
 // path (detail/fast/) where options.hpp's Method::Exact allows it, else the scalar one.
 // Coverage: polygon modes fill, line and point (lavapipe's draw-pipeline path: in point mode x
 // and y are clipped at 2w, measured); 4x MSAA for filled triangles (Framebuffer::resolve()
-// resolves as lavapipe does); depth bias for filled triangles; the course's 1/z depth buffer;
-// blending with every core factor and op, blend constants and the colour write mask.
+// resolves as lavapipe does); depth bias for filled triangles and for polygon modes line and point
+// (Mesa's offset stage: geometry/polygon_offset.hpp); the course's 1/z depth buffer;
+// blending with every core factor and op, blend constants and the colour write mask; the stencil
+// test with front and back state on the D24_UNORM_S8_UINT and D32_SFLOAT_S8_UINT formats.
 // Conventions are Vulkan's: clip space x right, y down, z in [0, w]; window origin at the top
 // left, pixel centres at +0.5; front faces counter-clockwise as seen in the image by default;
 // docs/library.md has them all, with the 4x sample positions.
@@ -24,8 +26,7 @@
 // detail/course/) take the same loop with their own triangle setup, coverage and interpolation.
 // A shader that samples textures (texture.hpp, kQuads) is shaded in 2x2 quads on both exact
 // paths, so its derivatives are lavapipe's.
-// Deliberately absent: MSAA lines, points and polygon modes, depth bias in polygon modes,
-// dual-source blending (each a later issue).
+// Deliberately absent: MSAA lines, points and polygon modes, dual-source blending (each a later issue).
 #pragma once
 
 #if defined(__clang__)
@@ -71,7 +72,9 @@ class Context {
   // ShaderInterface (shader.hpp); a type that does not fails to compile here with one message.
   // Formats: the depth formats this call is compiled for, none meaning all three. The pipeline
   // is instantiated per format, so naming the one a program uses (draw<S, DepthFormat::D32Sfloat>)
-  // compiles a third of the code; a framebuffer of another format is then an error.
+  // compiles a third of the code; a framebuffer of another format is then an error. A
+  // depth/stencil format is drawn by its depth aspect's instantiation (formats.hpp: naming
+  // D32Sfloat or D32SfloatS8Uint compiles the same code and draws both).
   template <class Shader, DepthFormat... Formats>
   Status draw(const PipelineState& state, const typename detail::ShaderParameters<Shader>::Uniforms& uniforms,
               typename detail::ShaderParameters<Shader>::Vertices vertices, Framebuffer& framebuffer) const {
@@ -146,8 +149,13 @@ class Context {
     }
     if (b.colorBlendOp > BlendOp::Max || b.alphaBlendOp > BlendOp::Max) return Status::error("unknown blend op");
     if (b.colorWriteMask > kColourRGBA) return Status::error("colour write mask has bits other than R, G, B and A");
-    if (rs.polygonMode != PolygonMode::Fill && rs.depthBias.enable) {
-      return Status::error("depth bias with polygon mode line or point is not supported by softraster yet");
+    const DepthState& ds = state.depth;
+    if (ds.compareOp > CompareOp::Always) return Status::error("unknown depth compare op");
+    for (const StencilOpState* face : {&ds.front, &ds.back}) {
+      if (face->compareOp > CompareOp::Always) return Status::error("unknown stencil compare op");
+      for (StencilOp op : {face->failOp, face->passOp, face->depthFailOp}) {
+        if (op > StencilOp::DecrementAndWrap) return Status::error("unknown stencil op");
+      }
     }
     return {};
   }
@@ -174,7 +182,8 @@ class Context {
   }
 
   // Validates, then picks the draw loop's instantiation for the depth format (among Formats, or
-  // all when none are named) and fmuladd.
+  // all when none are named) and fmuladd. A depth/stencil format draws with its depth aspect's
+  // instantiation (formats.hpp): stencil is a run-time branch of the fragment stages.
   template <class Shader, DepthFormat... Formats>
   Status drawPrimitives(const PipelineState& state, const typename Shader::Uniforms& uniforms,
                         std::span<const typename Shader::Vertex> vertices, std::span<const std::uint32_t> indices,
@@ -194,8 +203,8 @@ class Context {
   bool drawIfFormat(const PipelineState& state, const typename Shader::Uniforms& uniforms,
                     std::span<const typename Shader::Vertex> vertices, std::span<const std::uint32_t> indices,
                     Framebuffer& framebuffer, detail::DrawScratch& scratch) const {
-    if constexpr (sizeof...(Formats) == 0 || ((Formats == Format) || ...)) {
-      if (framebuffer.depthFormat() != Format) return false;
+    if constexpr (sizeof...(Formats) == 0 || ((depthAspect(Formats) == Format) || ...)) {
+      if (depthAspect(framebuffer.depthFormat()) != Format) return false;
       drawWithFormat<Shader, Format>(state, uniforms, vertices, indices, framebuffer, scratch);
       return true;
     } else {

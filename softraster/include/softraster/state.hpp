@@ -4,9 +4,10 @@
 // honour is an error in that renderer, never a silent default.
 // 4x MSAA is supported; its sample count is the framebuffer's (framebuffer.hpp), not state here.
 // Deliberately absent until a scene needs it: dual-source blending (the SRC1 blend factors, which
-// need a second fragment output), logic ops, more than one colour attachment, stencil, the rest
-// of Vulkan's multisample state (sample shading, sample mask, alpha to coverage), smooth and
-// stippled lines.
+// need a second fragment output), logic ops, more than one colour attachment, the rest of
+// Vulkan's multisample state (sample shading, sample mask, alpha to coverage), smooth and
+// stippled lines. The depth bounds test is absent for good: lavapipe reports depthBounds = false,
+// so no Vulkan pipeline on it may enable it.
 #pragma once
 
 #include <cstdint>
@@ -31,7 +32,8 @@ struct Scissor {
   std::uint32_t width = 0, height = 0;
 };
 
-// Vulkan depth bias (VkPipelineRasterizationStateCreateInfo depthBias*), triangles only.
+// Vulkan depth bias (VkPipelineRasterizationStateCreateInfo depthBias*): triangles, filled or in
+// polygon modes line and point (not line or point topologies).
 struct DepthBias {
   bool enable = false;
   float constantFactor = 0, clamp = 0, slopeFactor = 0;
@@ -55,10 +57,42 @@ struct RasterizationState {
   LineRasterization lineRasterization = LineRasterization::Rectangular;
 };
 
+// VkStencilOp, in Vulkan's order (0..7).
+enum class StencilOp : std::uint8_t {
+  Keep,
+  Zero,
+  Replace,
+  IncrementAndClamp,
+  DecrementAndClamp,
+  Invert,
+  IncrementAndWrap,
+  DecrementAndWrap,
+};
+
+// VkStencilOpState: one face's stencil test and update. Only the low 8 bits of the masks and the
+// reference count (the stencil aspect has 8 bits).
+struct StencilOpState {
+  StencilOp failOp = StencilOp::Keep;       // the stencil test fails
+  StencilOp passOp = StencilOp::Keep;       // both the stencil and the depth test pass
+  StencilOp depthFailOp = StencilOp::Keep;  // the stencil test passes, the depth test fails
+  CompareOp compareOp = CompareOp::Always;  // (reference & compareMask) OP (stored & compareMask)
+  std::uint32_t compareMask = 0xff;
+  std::uint32_t writeMask = 0xff;
+  std::uint32_t reference = 0;
+};
+
+// VkPipelineDepthStencilStateCreateInfo without the depth bounds (see the top of this file).
+// The stencil test needs a framebuffer with a stencil aspect (formats.hpp); without one it is
+// skipped, as Vulkan skips it without a stencil attachment. `front` applies to fragments of
+// front-facing triangles, `back` to those of back-facing ones; lines and points use `front`, and
+// so do the lines and points of polygon modes line and point (lavapipe: docs/lavapipe-rules.md).
 struct DepthState {
   bool testEnable = true;
   bool writeEnable = true;
   CompareOp compareOp = CompareOp::Less;
+  bool stencilTestEnable = false;
+  StencilOpState front;
+  StencilOpState back;
 };
 
 // VkBlendFactor 0..14, in Vulkan's order (the SRC1 factors, 15..18, are absent: no dual-source

@@ -1,6 +1,6 @@
 // vkref frames: what a caller hands the Renderer (a FrameRequest of DrawCalls, each with its
 // ShaderProgram and softraster::PipelineState), what it gets back (FrameImages: colour, depth as
-// floats and depth as stored) and the handle of a frame prepared once and submitted many times.
+// floats, depth as stored and stencil) and the handle of a frame prepared once and submitted many times.
 // A frame may render depth passes first (shadow maps) whose depth its draws then sample.
 // Deliberately plain values: no Vulkan type appears here, and nothing in a request is kept after
 // Renderer::prepare returns (vertices, indices and uniform blocks are uploaded, push constants recorded).
@@ -73,9 +73,10 @@ struct FrameRequest {
   std::uint32_t width = 0, height = 0;
   std::array<float, 4> clearColour{0, 0, 0, 0};
   float clearDepth = 1.0f;
+  std::uint8_t clearStencil = 0;  // with a depth/stencil format
   softraster::DepthFormat depthFormat = softraster::DepthFormat::D32Sfloat;
   std::uint32_t samples = 1;  // 1, or 4: rendered multisampled, colour resolved (average) and
-                              // depth resolved (sample 0) before read-back
+                              // depth and stencil resolved (sample 0) before read-back
   std::vector<DrawCall> draws;  // drawn in order; a draw with nothing to assemble is skipped
   std::vector<DepthPass> depthPasses;  // rendered first, in order, each with the barriers its samplers need
 };
@@ -85,6 +86,7 @@ struct FrameImages {
   std::vector<std::uint8_t> rgba;          // width*height*4, row 0 at the top
   std::vector<float> depth;                // width*height, as floats in [0, 1]
   std::vector<std::uint32_t> depthStorage; // width*height, as stored: UNORM integer or the float's bits
+  std::vector<std::uint8_t> stencil;       // width*height with a depth/stencil format, else empty
 };
 
 // A frame made ready by Renderer::prepare: its images, its uploaded vertices and indices and its

@@ -4,9 +4,11 @@
 // polygon modes. For a filled triangle the loop calls drawTriangle() here instead of the exact
 // method's snapping, fixed-point setup, coverage and plane interpolation: this culls by winding
 // (the float signed area, front faces as RasterizationState says), makes each vertex's Pixel
-// (course/pixel.hpp), adds the triangle's depth bias (the exact method's formula), and hands the
+// (course/pixel.hpp), adds the triangle's depth bias (the exact method's formula) and its facing
+// (for the stencil test's face), and hands the
 // three Pixels to the chosen method's two calls, setup() and draw(), whose pixels go to the
-// shared per-pixel end (CourseFragments: depth test and write, shading, blending, write mask).
+// shared per-pixel end (CourseFragments: stencil and depth tests and writes, shading, blending,
+// write mask).
 // Lines and points (topologies and polygon modes line and point) are not the course's: the loop
 // draws them with the exact method's line and point code and scalar fragment stage, so they are
 // the same pixels as Method::ExactScalar's.
@@ -42,6 +44,7 @@ class CourseTriangles {
                   const Viewport& viewport, const PixelRect& region, bool inverseZ, const ContextOptions& options,
                   DrawScratch& scratch)
       : bias_(state.rasterization.depthBias),
+        ccwIsFront_(state.rasterization.frontFace == FrontFace::CounterClockwise),
         method_(options.method),
         fragments_(state, uniforms, framebuffer, viewport, region, inverseZ, options.affineVaryings),
         scanline_(scratch.vector<Pixel<K>>(ScratchSlot::CourseRows)) {}
@@ -61,6 +64,7 @@ class CourseTriangles {
       offset = setup.depthBias(a.window.z, b.window.z, c.window.z, bias_, Format);
     }
     fragments_.setDepthOffset(offset);
+    fragments_.setFrontFacing((area > 0) == ccwIsFront_);
     const auto shade = [this](int px, int py, const float* values) { fragments_.shade(px, py, values); };
     const PixelRect& region = fragments_.region();
     switch (method_) {
@@ -81,6 +85,7 @@ class CourseTriangles {
   static constexpr InterpolationSet<N> kInterpolation = interpolationOf<Shader>();
 
   DepthBias bias_;
+  bool ccwIsFront_;  // a counter-clockwise triangle (positive float area) is front-facing
   Method method_;
   CourseFragments<Shader, Fused, Format> fragments_;
   ScanlineTriangle<K> scanline_;

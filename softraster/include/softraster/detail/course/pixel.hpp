@@ -2,7 +2,8 @@
 // course's Pixel (a projected vertex: x, y and the values interpolated linearly in screen space),
 // the Pixel of each of a triangle's vertices, the safe float-to-pixel conversions their loops are
 // clamped with, and CourseFragments, the per-pixel end of the pipeline they all hand pixels to:
-// the depth test (every compare op, depth write, Vulkan z or the course's 1/z buffer), the
+// the stencil test (fragment/stencil.hpp, as the exact method does it, per sample), the depth
+// test (every compare op, depth write, Vulkan z or the course's 1/z buffer), the
 // shader's fragment function, blending and the write mask, through detail/fragment/ as the
 // exact method's scalar stage does.
 // The interpolated values of a Pixel, in order: window z (Vulkan depth, z/w mapped by the
@@ -127,6 +128,8 @@ class CourseFragments {
 
   // The triangle's depth-bias offset, added to every window z (not to 1/z) until the next call.
   void setDepthOffset(float offset) { depthOffset_ = offset; }
+  // The triangle's facing, which picks the stencil face, until the next call.
+  void setFrontFacing(bool front) { frontFacing_ = front; }
 
   // One pixel with its interpolated values ([0] z, [1] 1/w, [2..] varyings as pixelOf made them).
   // Compiled once per shader, format and instruction set, whichever method calls it
@@ -154,6 +157,13 @@ class CourseFragments {
       const bool passes = !target_.depth.testEnable ||
                           (target_.inverseZ ? depthTestPasses<Format>(target_.depth.compareOp, old, stored)
                                             : depthTestPasses<Format>(target_.depth.compareOp, stored, old));
+      if (target_.stencil.enable) {
+        const StencilFace& face = target_.stencil.face(frontFacing_);
+        std::uint8_t& value = target_.stencilStorage[pixel * samples_ + s];
+        const bool stencilPasses = stencilTestPasses(face, value);
+        value = stencilUpdate(face, stencilOpFor(face, stencilPasses, passes), value);
+        if (!stencilPasses) continue;
+      }
       if (passes) passed |= 1u << s;
     }
     if (passed == 0) return;
@@ -197,6 +207,7 @@ class CourseFragments {
   unsigned samples_;
   bool affine_;
   float depthOffset_ = 0.0f;
+  bool frontFacing_ = true;
 };
 
 }  // namespace softraster::detail::course

@@ -1,7 +1,8 @@
 // The exact method's draw loop: one draw call as a list of stage calls, each stage in its file:
 //   vertex processing (geometry/vertex_processing) -> primitive assembly and vertex batches
 //   (geometry/primitive_assembly) -> clipping (geometry/clipping) -> the draw pipeline's float
-//   cull (geometry/culling) -> polygon modes (geometry/unfilled) -> snapping, the fixed-point cull
+//   cull (geometry/culling) -> depth bias of unfilled polygons (geometry/polygon_offset) -> polygon
+//   modes (geometry/unfilled) -> snapping, the fixed-point cull
 //   and setup (exact/triangle_setup, exact/line_point_setup) -> coverage and fragments
 //   (fragment/shade, over exact/rasterizer and exact/interpolation).
 // Primitives reach the fragment stage in submission order; with more than one thread the band
@@ -30,6 +31,7 @@
 #include <softraster/detail/fragment/shade.hpp>
 #include <softraster/detail/geometry/clipping.hpp>
 #include <softraster/detail/geometry/culling.hpp>
+#include <softraster/detail/geometry/polygon_offset.hpp>
 #include <softraster/detail/geometry/primitive_assembly.hpp>
 #include <softraster/detail/geometry/unfilled.hpp>
 #include <softraster/detail/geometry/vertex_processing.hpp>
@@ -280,14 +282,16 @@ class ExactDraw {
     }
   }
 
-  // A triangle past the draw pipeline's cull: filled, or as lines or points.
+  // A triangle past the draw pipeline's cull: filled, or as lines or points (depth-biased first).
   void drawCulled(Worker& worker, const Vertex& a, const Vertex& b, const Vertex& c, unsigned edgeFlags) {
     if (rs_.polygonMode == PolygonMode::Fill) {
       drawTriangle(worker, a, b, c);
       return;
     }
+    Vertex biased[3] = {a, b, c};
+    if (rs_.depthBias.enable) offsetUnfilledTriangle(biased[0], biased[1], biased[2], rs_.depthBias, Format);
     drawUnfilledTriangle(
-        rs_.polygonMode, a, b, c, edgeFlags, kInterpolation,
+        rs_.polygonMode, biased[0], biased[1], biased[2], edgeFlags, kInterpolation,
         [&](const Vertex& p, const Vertex& q) { drawLine(worker, p, q); },
         [&](const Vertex& p) { drawPoint(worker, p); });
   }
@@ -316,8 +320,8 @@ class ExactDraw {
       std::swap(fixed.y[1], fixed.y[2]);
     }
     const TriangleEdges edges = setupEdges(fixed);
-    const TriangleInterpolants<N> interpolants =
-        setupInterpolants(a, v1, v2, kInterpolation, rs_.depthBias, Format, pixelOffset);
+    TriangleInterpolants<N> interpolants = setupInterpolants(a, v1, v2, kInterpolation, rs_.depthBias, Format, pixelOffset);
+    interpolants.frontFacing = (area > 0) == (rs_.frontFace == FrontFace::CounterClockwise);  // the stencil face
     if (multisample_) {
       worker.sink.shadeSamples(edges.edges, edges.bounds, interpolants);
     } else {

@@ -26,6 +26,9 @@ struct TriangleInterpolants {
   float depthOffset = 0.0f;  // depth bias, added to every fragment's depth
   PlaneEquation oneOverW;
   std::array<PlaneEquation, N> varyings;
+  // Not an interpolant, but the primitive's one other per-primitive value the fragment stage
+  // reads: which stencil face applies (set by the draw loop; lines and points stay front).
+  bool frontFacing = true;
 };
 
 // v0 is the provoking vertex.

@@ -19,13 +19,16 @@
 // result is the scalar path's, bit for bit (tests/softraster/fast_path_test.cpp checks it).
 // 4x MSAA triangles take the same blocks with coverage, depth and the writes per sample (each
 // pair of adjacent pixels' eight samples one vector, as they lie in memory) and the shader once
-// per pixel at its centre, as the scalar shadeSamples does. Lines and points go to the scalar
-// stage it holds.
+// per pixel at its centre, as the scalar shadeSamples does. The stencil test and update run on
+// the lanes (fast/stencil.hpp) after the depth test, per pixel or per sample, with the
+// primitive's face; a fragment failing either test is not shaded. Lines and points go to the
+// scalar stage it holds.
 // Threads are the band queue's (fast/bands.hpp), which gives each thread a stage of its own.
 // Deliberately absent: a per-tile depth range, AVX-512.
 #pragma once
 
 #include <softraster/detail/fast/batch.hpp>
+#include <softraster/detail/fast/stencil.hpp>
 #include <softraster/detail/instruction_set.hpp>
 
 #if SOFTRASTER_HAS_FAST_PATH
@@ -87,6 +90,7 @@ class FastFragmentStage {
     Floats depthOffset;
     BatchPlane oneOverW;
     std::array<BatchPlane, (N == 0 ? 1 : N)> varyings;
+    bool frontFacing;  // the stencil face
   };
 
   static constexpr bool kAnyPerspective = [] {
@@ -102,6 +106,7 @@ class FastFragmentStage {
     planes.depthOffset = broadcast(t.depthOffset);
     planes.oneOverW = batchPlane(t.oneOverW);
     for (int i = 0; i < N; ++i) planes.varyings[static_cast<std::size_t>(i)] = batchPlane(t.varyings[static_cast<std::size_t>(i)]);
+    planes.frontFacing = t.frontFacing;
     return planes;
   }
 
@@ -122,7 +127,8 @@ class FastFragmentStage {
                                                 const TriangleInterpolants<N>& t) const {
     const PixelRect box = intersect(bounds, target_.region);
     if (box.empty()) return;
-    if (target_.depth.testEnable && target_.depth.compareOp == CompareOp::Never) return;  // nothing passes
+    // Nothing passes (but with the stencil on, failing fragments still update it).
+    if (target_.depth.testEnable && target_.depth.compareOp == CompareOp::Never && !target_.stencil.enable) return;
     const BlockPlanes planes = blockPlanes(t);
     walk(edges, box, planes);
   }
@@ -241,6 +247,7 @@ class FastFragmentStage {
     const std::size_t first = static_cast<std::size_t>(py) * target_.width + static_cast<std::size_t>(px);
     Words stored{}, current{};
     Mask passes = ~Mask{};
+    const unsigned rasterized = covered;  // the stencil is tested and updated for all of them
     if (depthState.testEnable) {
       if (depthState.compareOp != CompareOp::Always || depthState.writeEnable) {
         current = whole ? loadFullBlock(target_.depthStorage + first, target_.width)
@@ -256,8 +263,19 @@ class FastFragmentStage {
       }
       if (depthState.compareOp != CompareOp::Always) {
         covered &= maskBits(passes);
-        if (covered == 0) return;
+        if (covered == 0 && !target_.stencil.enable) return;
       }
+    }
+    if (target_.stencil.enable) {
+      const StencilFace& face = target_.stencil.face(t.frontFacing);
+      const std::size_t width = target_.width;
+      const auto offset = [width](int lane) { return static_cast<std::size_t>(lane / 4) * width + static_cast<std::size_t>(lane % 4); };
+      std::uint8_t* at = target_.stencilStorage + first;
+      const Words s = loadStencil(at, rasterized, offset);
+      const Mask stencilPasses = stencilTestLanes(face, s);
+      storeStencil(at, rasterized, stencilUpdateLanes(face, s, stencilPasses, passes), offset);
+      covered &= maskBits(stencilPasses);
+      if (covered == 0) return;
     }
     std::array<FloatBatch, (N == 0 ? 1 : N)> varyings{};
     if constexpr (N > 0) interpolateBlock(std::make_index_sequence<N>{}, t, fx, fy, varyings.data());
@@ -345,7 +363,8 @@ class FastFragmentStage {
     if (intersect(bounds, target_.msaa.drawRegion).empty()) return;  // lavapipe culls it
     const PixelRect box = intersect(bounds, target_.region);
     if (box.empty()) return;
-    if (target_.depth.testEnable && target_.depth.compareOp == CompareOp::Never) return;  // nothing passes
+    // Nothing passes (but with the stencil on, failing fragments still update it).
+    if (target_.depth.testEnable && target_.depth.compareOp == CompareOp::Never && !target_.stencil.enable) return;
     const BlockPlanes planes = blockPlanes(t);
     walkSamples(edges, box, planes);
   }
@@ -410,6 +429,23 @@ class FastFragmentStage {
         stored[pair] = depthToStorage<Format>(clampDepth(z, target_.depthRange));
         passed |= (bits & maskBits(depthTestPasses<Format>(depthState.compareOp, stored[pair], current[pair]))) << (8 * pair);
       }
+      if (passed == 0 && !target_.stencil.enable) return;
+    }
+    if (target_.stencil.enable) {  // per sample, the depth test's result in `passed`
+      const StencilFace& face = target_.stencil.face(t.frontFacing);
+      const auto offset = [](int lane) { return static_cast<std::size_t>(lane); };
+      std::uint32_t stencilPassed = 0;
+      for (int pair = 0; pair < 4; ++pair) {
+        const unsigned bits = (covered >> (8 * pair)) & 0xffu;
+        if (bits == 0) continue;
+        const int row = pair >> 1, column = 2 * (pair & 1);
+        std::uint8_t* at = target_.stencilStorage + 4 * (firstPixel + static_cast<std::size_t>(row) * width + column);
+        const Words s = loadStencil(at, bits, offset);
+        const Mask stencilPasses = stencilTestLanes(face, s);
+        storeStencil(at, bits, stencilUpdateLanes(face, s, stencilPasses, laneMask((passed >> (8 * pair)) & 0xffu)), offset);
+        stencilPassed |= maskBits(stencilPasses) << (8 * pair);
+      }
+      passed &= stencilPassed;
       if (passed == 0) return;
     }
     // Shaded once per pixel, at its centre.

@@ -2,8 +2,8 @@
 // format and the depth test, as lavapipe's fragment JIT code does them:
 //   D32_SFLOAT compared as float; D24: cvtps2dq(z * 16777215.0f); D16: the "magic number"
 //   conversion, the low 16 bits of float(z * (65535/65536)) + 128.0f.
-// Deliberately absent: stencil, depth bounds. The writes themselves are the fragment loop's
-// (shade.hpp); colour is colour.hpp's.
+// Deliberately absent: stencil (stencil.hpp), depth bounds (lavapipe has none). The writes
+// themselves are the fragment loop's (shade.hpp); colour is colour.hpp's.
 #pragma once
 
 #include <softraster/formats.hpp>

@@ -1,19 +1,23 @@
 // The fragment stage of the exact method: for every pixel (or, with 4x MSAA, every sample) a
 // primitive covers, depth, the depth test, the shader's fragment function, blending and the
 // colour and depth writes, in lavapipe's order:
-//   - single sample: depth at the pixel centre; a fragment failing the depth test is not shaded;
+//   - single sample: depth at the pixel centre; a fragment failing the depth or the stencil test
+//     is not shaded; the stencil test and update (fragment/stencil.hpp) with the primitive's
+//     facing (TriangleInterpolants::frontFacing);
 //   - 4x MSAA (filled triangles): coverage and depth per sample, the fragment shaded once at the
-//     pixel centre and written to the samples that are covered and pass the depth test; the
+//     pixel centre and written to the samples that are covered and pass the depth and stencil
+//     tests (stencil tested and updated per sample); the
 //     region's left column and top row as lavapipe's scissor planes cut them (MsaaRegionEdges);
 //   - depth is tested and written only with the depth test on (Vulkan); the course's 1/z buffer
 //     (DepthMode::InverseZ) compares the other way round, larger being nearer.
-// Deliberately absent: coverage itself (exact/rasterizer.hpp walks it), stencil, sample shading.
+// Deliberately absent: coverage itself (exact/rasterizer.hpp walks it), sample shading.
 #pragma once
 
 #include <softraster/detail/exact/interpolation.hpp>
 #include <softraster/detail/exact/rasterizer.hpp>
 #include <softraster/detail/fragment/colour.hpp>
 #include <softraster/detail/fragment/depth.hpp>
+#include <softraster/detail/fragment/stencil.hpp>
 #include <softraster/detail/instruction_set.hpp>
 #include <softraster/framebuffer.hpp>
 #include <softraster/shader.hpp>
@@ -31,6 +35,7 @@ namespace softraster::detail {
 // once from the state and the framebuffer, shared by the scalar and the fast stage.
 struct FragmentTarget {
   DepthState depth;
+  StencilState stencil;  // enable: the state asks for the test and the framebuffer has stencil
   ColourBlend blend;  // the draw's BlendState, prepared for UNORM8 (fragment/colour.hpp)
   PixelRect region;   // what this stage may touch: the draw's raster region, or one band of it
   MsaaRegionEdges msaa;  // 4x MSAA: the whole draw's region edges (the same for every band)
@@ -39,11 +44,13 @@ struct FragmentTarget {
   std::uint32_t width;
   std::uint8_t* colour;
   std::uint32_t* depthStorage;
+  std::uint8_t* stencilStorage;  // null without a stencil aspect
 };
 
 inline FragmentTarget fragmentTarget(const PipelineState& state, Framebuffer& framebuffer, const Viewport& viewport,
                                      const PixelRect& region, bool inverseZ) {
   return {state.depth,
+          stencilState(state.depth, hasStencil(framebuffer.depthFormat())),
           colourBlend(state.blend),
           region,
           framebuffer.samples() == 4
@@ -53,7 +60,8 @@ inline FragmentTarget fragmentTarget(const PipelineState& state, Framebuffer& fr
           inverseZ,
           framebuffer.width(),
           framebuffer.colour().data(),
-          framebuffer.depthStorage().data()};
+          framebuffer.depthStorage().data(),
+          hasStencil(framebuffer.depthFormat()) ? framebuffer.stencilStorage().data() : nullptr};
 }
 
 template <class Shader, bool Fused, DepthFormat Format>
@@ -88,8 +96,8 @@ class FragmentStage {
       const float fx = static_cast<float>(px), fy = static_cast<float>(py);
       const std::size_t pixel = static_cast<std::size_t>(py) * target_.width + static_cast<std::size_t>(px);
       std::uint32_t stored = 0;
+      bool passes = true;
       if (target_.depth.testEnable) {
-        bool passes;
         if (target_.inverseZ) {
           stored = std::bit_cast<std::uint32_t>(evaluatePlane<Fused>(t.oneOverW, fx, fy));
           passes = depthTestPasses<Format>(target_.depth.compareOp, target_.depthStorage[pixel], stored);
@@ -97,8 +105,9 @@ class FragmentStage {
           stored = depthToStorage<Format>(clampDepth(interpolateDepth<Fused>(t, fx, fy), target_.depthRange));
           passes = depthTestPasses<Format>(target_.depth.compareOp, stored, target_.depthStorage[pixel]);
         }
-        if (!passes) return;
       }
+      if (target_.stencil.enable && !stencilTestAndUpdate(t.frontFacing, pixel, passes)) return;
+      if (!passes) return;
       blendColour(target_.colour + 4 * pixel, shadeAt(t, px, py, 0.0f, varyings.data()), target_.blend);
       if (target_.depth.testEnable && target_.depth.writeEnable) target_.depthStorage[pixel] = stored;
     });
@@ -123,6 +132,14 @@ class FragmentStage {
           passed |= 1u << s;
         }
       }
+      if (target_.stencil.enable) {  // per sample; a sample failing the stencil test is not written
+        for (int s = 0; s < 4; ++s) {
+          const unsigned bit = 1u << s;
+          if ((mask & bit) && !stencilTestAndUpdate(t.frontFacing, pixel * 4 + static_cast<std::size_t>(s), (passed & bit) != 0)) {
+            passed &= ~bit;
+          }
+        }
+      }
       if (passed == 0) return;
       const Vec4 c = shadeAt(t, px, py, 0.5f, varyings.data());
       for (int s = 0; s < 4; ++s) {
@@ -132,6 +149,16 @@ class FragmentStage {
         if (target_.depth.testEnable && target_.depth.writeEnable) target_.depthStorage[sample] = stored[s];
       }
     });
+  }
+
+  // The stencil test of one sample (index into the stencil storage) and its update with the depth
+  // test's result; whether the stencil test passed.
+  bool stencilTestAndUpdate(bool frontFacing, std::size_t sample, bool depthPasses) const {
+    const StencilFace& face = target_.stencil.face(frontFacing);
+    std::uint8_t& value = target_.stencilStorage[sample];
+    const bool passes = stencilTestPasses(face, value);
+    value = stencilUpdate(face, stencilOpFor(face, passes, depthPasses), value);
+    return passes;
   }
 
   // The shader's colour for pixel (px, py), its varyings at (px + offset, py + offset) (the plane
