@@ -1,13 +1,16 @@
-// softraster's entry point: a Context draws points, lines and triangles (lists, strips, fans),
-// indexed or not, with a shader type into a Framebuffer, following lavapipe's rules to the bit
-// (the "exact" method). A draw is validated as a whole before any work, then handed to the
+// softraster's entry point: a Context draws points, lines and triangles (lists, strips, fans, the
+// adjacency topologies with their adjacent vertices skipped), indexed or not, with primitive
+// restart on strips and fans, with a shader type into a Framebuffer, following lavapipe's rules
+// to the bit (the "exact" method). A draw is validated as a whole before any work, then handed to the
 // method's draw loop (detail/exact/draw.hpp: the stages, in order), instantiated for the
 // framebuffer's depth format, for how fmuladd rounds and for the fragment stage: the SIMD fast
 // path (detail/fast/) where options.hpp's Method::Exact allows it, else the scalar one.
 // Coverage: polygon modes fill, line and point (lavapipe's draw-pipeline path: in point mode x
 // and y are clipped at 2w, measured); 4x MSAA for filled triangles (Framebuffer::resolve()
 // resolves as lavapipe does); depth bias for filled triangles; the course's 1/z depth buffer;
-// blending with every core factor and op, blend constants and the colour write mask.
+// blending with every core factor and op, blend constants and the colour write mask; stippled
+// lines and provoking vertex last (VK_EXT_line_rasterization, VK_EXT_provoking_vertex); negative
+// viewport heights. Where lavapipe deviates from the spec, ContextOptions::deviations chooses.
 // Conventions are Vulkan's: clip space x right, y down, z in [0, w]; window origin at the top
 // left, pixel centres at +0.5; front faces counter-clockwise as seen in the image by default;
 // docs/library.md has them all, with the 4x sample positions.
@@ -96,7 +99,8 @@ class Context {
       return Status::error("not a shader");  // unreachable: checkShaderInterface has failed the build
     } else {
       for (std::size_t i = 0; i < indices.size(); ++i) {
-        if (indices[i] >= vertices.size()) {
+        if (indices[i] >= vertices.size() &&
+            !(state.primitiveRestartEnable && indices[i] == kPrimitiveRestartIndex)) {
           return Status::error("index " + std::to_string(i) + " (" + std::to_string(indices[i]) +
                                ") is past the last vertex (" + std::to_string(vertices.size()) + " vertices)");
         }
@@ -113,7 +117,20 @@ class Context {
     if (framebuffer.width() == 0 || framebuffer.height() == 0) {
       return Status::error("framebuffer has no pixels (make it with Framebuffer::create)");
     }
-    if (state.topology > Topology::TriangleFan) return Status::error("unknown topology");
+    if (state.topology > Topology::TriangleStripWithAdjacency) return Status::error("unknown topology");
+    if (state.primitiveRestartEnable && !detail::isStripOrFanTopology(state.topology)) {
+      return Status::error("primitive restart with a list topology needs primitiveTopologyListRestart "
+                           "(VUID-VkPipelineInputAssemblyStateCreateInfo-topology-06252), which softraster does not offer");
+    }
+    if (rs.provokingVertex > ProvokingVertex::Last) return Status::error("unknown provoking vertex mode");
+    if (options_.deviations > Deviations::Spec) return Status::error("unknown deviations choice");
+    if (rs.lineStipple.enable && !(rs.lineStipple.factor >= 1 && rs.lineStipple.factor <= 256)) {
+      return Status::error("line stipple factor " + std::to_string(rs.lineStipple.factor) +
+                           " is outside [1, 256] (VUID-VkGraphicsPipelineCreateInfo-stippledLineEnable-02767)");
+    }
+    if (rs.lineStipple.enable && rs.polygonMode != PolygonMode::Fill && detail::isTriangleTopology(state.topology)) {
+      return Status::error("stippled lines with polygon mode line or point are not supported by softraster yet");
+    }
     if (!isCourseMethod(options_.method) && options_.method != Method::Exact && options_.method != Method::ExactScalar) {
       return Status::error("unknown method");
     }
@@ -156,12 +173,15 @@ class Context {
       if (!std::isfinite(v)) return Status::error("viewport values must be finite");
     }
     if (vp.width == 0 && vp.height == 0) return {};
-    if (!(vp.width > 0 && vp.height > 0)) return Status::error("viewport width and height must be positive");
-    if (vp.width > DeviceLimits::kMaxViewportDimension || vp.height > DeviceLimits::kMaxViewportDimension) {
-      return Status::error("viewport width and height must be at most maxViewportDimensions (16384)");
+    if (!(vp.width > 0 && vp.height != 0)) {
+      return Status::error("viewport width must be positive and height non-zero (a negative height flips y)");
     }
-    if (vp.x < DeviceLimits::kViewportBoundsMin || vp.y < DeviceLimits::kViewportBoundsMin ||
-        vp.x + vp.width > DeviceLimits::kViewportBoundsMax || vp.y + vp.height > DeviceLimits::kViewportBoundsMax) {
+    if (vp.width > DeviceLimits::kMaxViewportDimension || std::fabs(vp.height) > DeviceLimits::kMaxViewportDimension) {
+      return Status::error("viewport width and |height| must be at most maxViewportDimensions (16384)");
+    }
+    const float top = std::fmin(vp.y, vp.y + vp.height), bottom = std::fmax(vp.y, vp.y + vp.height);
+    if (vp.x < DeviceLimits::kViewportBoundsMin || top < DeviceLimits::kViewportBoundsMin ||
+        vp.x + vp.width > DeviceLimits::kViewportBoundsMax || bottom > DeviceLimits::kViewportBoundsMax) {
       return Status::error("viewport must lie within viewportBoundsRange [-32768, 32768]");
     }
     if (!(vp.minDepth >= 0 && vp.minDepth <= 1 && vp.maxDepth >= 0 && vp.maxDepth <= 1)) {
@@ -232,7 +252,8 @@ class Context {
                  std::span<const typename Shader::Vertex> vertices, std::span<const std::uint32_t> indices,
                  Framebuffer& framebuffer, detail::DrawScratch& scratch) const {
     const bool inverseZ = options_.depthMode == DepthMode::InverseZ;
-    detail::ExactDraw<Shader, Fused, Format>(state, uniforms, framebuffer, inverseZ, scratch, threadsFor(options_.method))
+    detail::ExactDraw<Shader, Fused, Format>(state, uniforms, framebuffer, inverseZ, scratch, threadsFor(options_.method),
+                                             options_)
         .run(vertices, indices);
   }
 
@@ -279,7 +300,7 @@ class Context {
                 std::span<const typename Shader::Vertex> vertices, std::span<const std::uint32_t> indices,
                 Framebuffer& framebuffer, detail::DrawScratch& scratch) const {
     detail::ExactDraw<Shader, true, Format, detail::fast::FastFragmentStage<Shader, Format>>(
-        state, uniforms, framebuffer, options_.depthMode == DepthMode::InverseZ, scratch, pool_.get())
+        state, uniforms, framebuffer, options_.depthMode == DepthMode::InverseZ, scratch, pool_.get(), options_)
         .run(vertices, indices);
   }
 #endif

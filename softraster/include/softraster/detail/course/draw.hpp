@@ -43,7 +43,7 @@ class CourseTriangles {
                   DrawScratch& scratch)
       : bias_(state.rasterization.depthBias),
         method_(options.method),
-        fragments_(state, uniforms, framebuffer, viewport, region, inverseZ, options.affineVaryings),
+        fragments_(state, uniforms, framebuffer, viewport, region, inverseZ, options.affineVaryings, options.deviations),
         scanline_(scratch.vector<Pixel<K>>(ScratchSlot::CourseRows)) {}
 
   // One filled triangle past the front end; a is the provoking vertex.

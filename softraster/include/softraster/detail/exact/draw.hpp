@@ -10,6 +10,9 @@
 // serves the course's methods too (course/draw.hpp): with Course a course::CourseTriangles, every
 // filled triangle goes to it after the front end, instead of snapping, setup and the fragment
 // stage; lines and points still take the exact code.
+// Primitive restart cuts the indices into runs, each drawn as a draw of its own (its own vertex
+// batches); provoking vertex last changes assembly, clipping's fan, setup's reordering of
+// clockwise triangles and which vertex gives flat varyings (the stages say how).
 // Deliberately absent: validation of the draw (pipeline.hpp's Context does it before any work)
 // and any choice of method or instruction set (the Context makes those and instantiates this).
 #pragma once
@@ -24,6 +27,7 @@
 #include <softraster/detail/fragment/shade.hpp>
 #include <softraster/detail/geometry/clipping.hpp>
 #include <softraster/detail/geometry/culling.hpp>
+#include <softraster/detail/geometry/line_stipple.hpp>
 #include <softraster/detail/geometry/primitive_assembly.hpp>
 #include <softraster/detail/geometry/unfilled.hpp>
 #include <softraster/detail/geometry/vertex_processing.hpp>
@@ -56,7 +60,7 @@ class ExactDraw {
 
   // pool: the Context's threads (nullptr or one thread: everything on the calling thread);
   // scratch: the vectors this draw fills, kept by the Context between draws; options: the
-  // Context's, read by a course method only (its method and affineVaryings).
+  // Context's: its deviations, and a course method's method and affineVaryings.
   ExactDraw(const PipelineState& state, const typename Shader::Uniforms& uniforms, Framebuffer& framebuffer,
             bool inverseZ, DrawScratch& scratch, ThreadPool* pool = nullptr, const ContextOptions& options = {})
       : state_(state),
@@ -69,7 +73,8 @@ class ExactDraw {
         // With 4x MSAA the fragment stage may also touch the column and row lavapipe's scissor
         // planes reach (MsaaRegionEdges); the bands (fast/bands.hpp) cover them too.
         fragments_(pool, scratch, state, uniforms, framebuffer, viewport_,
-                   multisample_ ? msaaRegionEdges(region_).rasterRegion : region_, inverseZ),
+                   multisample_ ? msaaRegionEdges(region_, state.scissor, options.deviations).rasterRegion : region_,
+                   inverseZ, options.deviations),
         shaded_(scratch.vector<Vertex>(ScratchSlot::ShadedVertices)),
         triangles_(scratch.vector<TriangleIndices>(ScratchSlot::Triangles)),
         lines_(scratch.vector<LineIndices>(ScratchSlot::Lines)),
@@ -79,13 +84,15 @@ class ExactDraw {
   void run(std::span<const typename Shader::Vertex> vertices, std::span<const std::uint32_t> indices) {
     if (region_.empty()) return;
     shadeVertices(vertices);
-    if (state_.topology == Topology::PointList) {
-      drawPoints(indices);
-    } else if (isLineTopology(state_.topology)) {
-      drawLines(indices);
-    } else {
-      drawTriangles(indices);
-    }
+    forEachRestartRun(indices, state_.primitiveRestartEnable, [&](std::span<const std::uint32_t> run) {
+      if (state_.topology == Topology::PointList) {
+        drawPoints(run);
+      } else if (isLineTopology(state_.topology)) {
+        drawLines(run);
+      } else {
+        drawTriangles(run);
+      }
+    });
     fragments_.finish();
   }
 
@@ -116,20 +123,37 @@ class ExactDraw {
     }
   }
 
+  // One run of lines (a draw, or a run between primitive restarts): the stipple counter is
+  // local to it, as the lines of a strip are drawn in order.
   void drawLines(std::span<const std::uint32_t> indices) {
     Vertex clippedA, clippedB;
+    std::uint32_t stippleCounter = 0;
+    const bool resetEveryLine = stippleResetsEveryLine(state_.topology);
     assembleLines(state_.topology, indices, lines_);
     for (const LineIndices& l : lines_) {
       const Vertex& a = shaded_[l[0]];
       const Vertex& b = shaded_[l[1]];
       const std::uint32_t outside = a.clipMask | b.clipMask;
+      if (resetEveryLine) stippleCounter = 0;
       if (outside == 0) {
-        drawLine(a, b);
+        drawLineStippled(a, b, stippleCounter);
       } else if ((a.clipMask & b.clipMask) == 0 &&
-                 clipLine(a, b, outside, transform_, kInterpolation, clippedA, clippedB)) {
-        drawLine(clippedA, clippedB);
+                 clipLine(a, b, outside, transform_, kInterpolation, clippedA, clippedB, provokingLast_)) {
+        drawLineStippled(clippedA, clippedB, stippleCounter);
       }
     }
+  }
+
+  // A line past clipping: whole, or the pieces its stipple pattern keeps (geometry/line_stipple).
+  void drawLineStippled(const Vertex& a, const Vertex& b, std::uint32_t& counter) {
+    if (!rs_.lineStipple.enable) {
+      drawLine(a, b);
+      return;
+    }
+    Vertex flatA = a, flatB = b;
+    flatShadeLine(flatA, flatB, kInterpolation, provokingLast_);
+    stippleLine(flatA, flatB, rs_.lineStipple, rs_.lineRasterization != LineRasterization::Bresenham, counter,
+                [&](const Vertex& p, const Vertex& q) { drawLine(p, q); });
   }
 
   // Triangles in vertex batches: a batch with no vertex outside the frustum goes straight to
@@ -138,12 +162,13 @@ class ExactDraw {
     winding_ = windingFilter(rs_);
     if (!winding_.drawClockwise && !winding_.drawCounterClockwise) return;
     const bool unfilled = rs_.polygonMode != PolygonMode::Fill;
-    assembleTriangles(state_.topology, indices, triangles_);
+    assembleTriangles(state_.topology, indices, triangles_, provokingLast_);
     const std::vector<TriangleIndices>& triangles = triangles_;
     const std::size_t batchSize = trianglesPerBatch(state_.topology);
     for (std::size_t start = 0; start < triangles.size(); start += batchSize) {
       const auto batch = std::span(triangles).subspan(start, std::min(batchSize, triangles.size() - start));
-      const bool throughDrawPipeline = unfilled || batchNeedsClipping(batch, shaded_);
+      const bool throughDrawPipeline = unfilled || batchNeedsClipping(batch, shaded_) ||
+                                       adjacencyNeedsClipping(state_.topology, indices, start, batch.size(), shaded_);
       for (const TriangleIndices& t : batch) {
         const Vertex& v0 = shaded_[t[0]];
         const Vertex& v1 = shaded_[t[1]];
@@ -166,15 +191,18 @@ class ExactDraw {
     }
     if ((v0.clipMask & v1.clipMask & v2.clipMask) != 0) return;  // entirely outside one plane
     if (!clipTriangle(v0, v1, v2, outside, transform_, kInterpolation, polygon_,
-                      rs_.polygonMode == PolygonMode::Point)) {
+                      rs_.polygonMode == PolygonMode::Point, provokingLast_)) {
       return;
     }
-    for (int i = 2; i < polygon_.count; ++i) {  // emitted as a fan from vertex 0
+    for (int i = 2; i < polygon_.count; ++i) {  // a fan from vertex 0: (0, i-1, i), or (i-1, i, 0)
       const Vertex& p0 = polygon_.vertices[0];
       const Vertex& p1 = polygon_.vertices[static_cast<std::size_t>(i - 1)];
       const Vertex& p2 = polygon_.vertices[static_cast<std::size_t>(i)];
-      if (survivesPipelineCull(p0.window, p1.window, p2.window, rs_)) {
-        drawCulled(p0, p1, p2, fanTriangleEdgeFlags(polygon_, i));
+      const Vertex& a = provokingLast_ ? p1 : p0;
+      const Vertex& b = provokingLast_ ? p2 : p1;
+      const Vertex& c = provokingLast_ ? p0 : p2;
+      if (survivesPipelineCull(a.window, b.window, c.window, rs_)) {
+        drawCulled(a, b, c, fanTriangleEdgeFlags(polygon_, i, provokingLast_));
       }
     }
   }
@@ -187,7 +215,7 @@ class ExactDraw {
     }
     drawUnfilledTriangle(
         rs_.polygonMode, a, b, c, edgeFlags, kInterpolation, [&](const Vertex& p, const Vertex& q) { drawLine(p, q); },
-        [&](const Vertex& p) { drawPoint(p); });
+        [&](const Vertex& p) { drawPoint(p); }, provokingLast_);
   }
 
   // drawTriangle, drawLine and drawPoint are called from several places (straight, after
@@ -205,7 +233,11 @@ class ExactDraw {
   // method's own cull, setup, coverage and interpolation.
   void drawTriangleHere(const Vertex& a, const Vertex& b, const Vertex& c) {
     if constexpr (kCourse) {
-      course_.drawTriangle(a, b, c, winding_);
+      if (provokingLast_) {
+        course_.drawTriangle(c, a, b, winding_);  // the same winding, the provoking vertex first
+      } else {
+        course_.drawTriangle(a, b, c, winding_);
+      }
     } else {
       drawExactTriangle(a, b, c);
     }
@@ -217,16 +249,20 @@ class ExactDraw {
     const int area = fixedAreaSign(fixed);
     if (area == 0 || (area > 0 ? !winding_.drawCounterClockwise : !winding_.drawClockwise)) return;
     // From here on the triangle is counter-clockwise: a negative one continues as (a, c, b),
-    // keeping the provoking vertex first.
-    const Vertex& v1 = area > 0 ? b : c;
-    const Vertex& v2 = area > 0 ? c : b;
+    // keeping the provoking vertex first, or as (b, a, c) with provoking vertex last.
+    const bool swapFirst = area < 0 && provokingLast_;
+    const bool swapLast = area < 0 && !provokingLast_;
+    const Vertex& v0 = swapFirst ? b : a;
+    const Vertex& v1 = swapFirst ? a : (swapLast ? c : b);
+    const Vertex& v2 = swapLast ? b : c;
     if (area < 0) {
-      std::swap(fixed.x[1], fixed.x[2]);
-      std::swap(fixed.y[1], fixed.y[2]);
+      const int i = provokingLast_ ? 0 : 2;
+      std::swap(fixed.x[1], fixed.x[i]);
+      std::swap(fixed.y[1], fixed.y[i]);
     }
     const TriangleEdges edges = setupEdges(fixed);
     const TriangleInterpolants<N> interpolants =
-        setupInterpolants(a, v1, v2, kInterpolation, rs_.depthBias, Format, pixelOffset);
+        setupInterpolants(v0, v1, v2, kInterpolation, rs_.depthBias, Format, pixelOffset, provokingLast_);
     if (multisample_) {
       fragments_.shadeSamples(edges.edges, edges.bounds, interpolants);
     } else {
@@ -239,7 +275,8 @@ class ExactDraw {
                           ? setupBresenhamLine(a.window, b.window, rs_.lineWidth)
                           : setupRectangularLine(a.window, b.window, rs_.lineWidth);
     if (!line) return;
-    fragments_.shadePixels(line->quad.edges, line->quad.bounds, setupLineInterpolants(a, b, *line, kInterpolation));
+    fragments_.shadePixels(line->quad.edges, line->quad.bounds,
+                           setupLineInterpolants(a, b, *line, kInterpolation, provokingLast_));
   }
 
   void drawPointHere(const Vertex& v) {
@@ -255,6 +292,7 @@ class ExactDraw {
   ViewportTransform transform_;
   PixelRect region_;
   bool multisample_;
+  bool provokingLast_ = rs_.provokingVertex == ProvokingVertex::Last;
   BandQueue<Fragments, typename Shader::Uniforms, N> fragments_;  // the stage, on one thread or in bands
   WindingFilter winding_{true, true};
   // Scratch: the Context's, reused across draws; polygon_ across primitives.

@@ -40,7 +40,8 @@ class BandQueue {
   static constexpr std::size_t kChunk = 16384;  // ~3 MB of records: few enough hand-overs to the threads
 
   BandQueue(ThreadPool* pool, DrawScratch& scratch, const PipelineState& state, const Uniforms& uniforms,
-            Framebuffer& framebuffer, const Viewport& viewport, const PixelRect& region, bool inverseZ)
+            Framebuffer& framebuffer, const Viewport& viewport, const PixelRect& region, bool inverseZ,
+            Deviations deviations = Deviations::Driver)
       : pool_(pool != nullptr && pool->threads() > 1 ? pool : nullptr),
         state_(state),
         uniforms_(uniforms),
@@ -48,10 +49,11 @@ class BandQueue {
         viewport_(viewport),
         region_(region),
         inverseZ_(inverseZ),
+        deviations_(deviations),
         records_(scratch.vector<Record>(ScratchSlot::BandRecords)),
         bins_(scratch.vector<std::vector<std::uint32_t>>(ScratchSlot::BandBins)) {
     records_.clear();
-    if (pool_ == nullptr) direct_.emplace(state, uniforms, framebuffer, viewport, region, inverseZ);
+    if (pool_ == nullptr) direct_.emplace(state, uniforms, framebuffer, viewport, region, inverseZ, deviations);
   }
 
   template <int E>
@@ -136,7 +138,7 @@ class BandQueue {
   void replay(std::size_t band) const {
     const std::vector<std::uint32_t>& bin = bins_[band];
     if (bin.empty()) return;
-    const Stage stage(state_, uniforms_, framebuffer_, viewport_, bandRows(band), inverseZ_);
+    const Stage stage(state_, uniforms_, framebuffer_, viewport_, bandRows(band), inverseZ_, deviations_);
     for (const std::uint32_t i : bin) {
       const Record& r = records_[i];
       const EdgeFunction triangle[3] = {r.edges[0], r.edges[1], r.edges[2]};
@@ -155,6 +157,7 @@ class BandQueue {
   Viewport viewport_;
   PixelRect region_;
   bool inverseZ_;
+  Deviations deviations_;
   std::optional<Stage> direct_;
   std::vector<Record>& records_;                    // the Context's scratch, kept between draws
   std::vector<std::vector<std::uint32_t>>& bins_;   // (bins keep their capacity too)
