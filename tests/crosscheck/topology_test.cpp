@@ -6,6 +6,7 @@
 // (4x MSAA scissor): softraster in spec mode differs from lavapipe exactly where lavapipe's
 // scissor planes reach past the rectangle, and the conformance runner and results.json say so.
 #include "agreement.hpp"
+#include "output/report/report.hpp"
 #include "results/results_json.hpp"
 #include "run/conformance.hpp"
 #include "run/deviations.hpp"
@@ -41,6 +42,9 @@ TEST(Topology, NegativeViewportHeightMatchesAndFlips) {
   // A flipped viewport at the framebuffer's bottom edge, and one beyond its top.
   renderAgreeing("viewport_flip", {"draws.5.viewport={\"x\":3.5,\"y\":192,\"width\":200,\"height\":-60.25}"});
   renderAgreeing("viewport_flip", {"draws.4.viewport={\"x\":0,\"y\":100,\"width\":256,\"height\":-150}"});
+  // With 4x MSAA (softraster draws only triangles there: the lines and points become triangles).
+  renderAgreeing("viewport_flip", {"framebuffer.samples=4", "draws.6.topology=triangle_strip",
+                                   "draws.7.topology=triangle_list", "draws.7.cull=none"});
 }
 
 TEST(Topology, PrimitiveRestartMatches) {
@@ -164,6 +168,10 @@ TEST(Deviations, TheRunnerMeasuresThemAndResultsJsonListsThem) {
   EXPECT_EQ(j["deviations"][0]["scene"], "msaa_scissor_viewport");
   EXPECT_EQ(j["deviations"][0]["spec_mode_differing_pixels"], *results[0].specDeviationPixels);
   EXPECT_NE(j["deviations"][0]["spec"].get<std::string>().find("Scissor Test"), std::string::npos);
+  const std::string html = crosscheck::reportHtml(run, ARTIFACTS_DIR, nullptr);
+  EXPECT_NE(html.find("Deviations from the Vulkan spec"), std::string::npos);
+  EXPECT_NE(html.find("<td class=\"num\">" + std::to_string(*results[0].specDeviationPixels) + "</td>"),
+            std::string::npos);
   auto back = crosscheck::runResultsFromJson(j);
   ASSERT_TRUE(back) << back.error();
   EXPECT_EQ(back->scenes[0].specDeviationPixels, results[0].specDeviationPixels);
