@@ -13,7 +13,8 @@
 //   crosscheck stability [SCENE|DIR ...] [--frames N] [--threads N] [--json FILE]
 //   crosscheck view SCENE [--set KEY.PATH=VALUE ...] [--script FILE] [-o|--screenshots DIR]
 // render, compare and view also take --method NAME (options.hpp kMethods: exact, exact-scalar, scanline, trapezoid,
-// barycentric), --affine (a course method's varyings interpolated affinely) and --threads N (softraster's).
+// barycentric), --affine (a course method's varyings interpolated affinely) and --threads N (softraster's);
+// every command that renders takes --softraster-fma and --softraster-deviations driver|spec.
 // Exit status (README, "Exit status"): 0 success / within tolerance / nothing unexpected; 1
 // outside tolerance or an unexpected conformance result; 2 anything that kept the comparison from
 // happening: bad usage, a scene or file that cannot be loaded, a renderer's error, an unwritable
@@ -91,6 +92,7 @@ struct CommonFlags {
   std::string device;
   bool validation = false;
   std::string fma = "auto";
+  std::string deviations = "driver";  // --softraster-deviations: lavapipe's behaviour or the spec's
   std::string softrasterDepth = "z";  // render only: "inverse-z" is the course's 1/z buffer
   std::string method = "exact";       // render, compare and view: a name of kMethods
   bool affine = false;                // render and compare: affine varyings (course methods only)
@@ -120,6 +122,7 @@ struct CommonFlags {
     options.affineVaryings = affine;
     options.threads = threads;
     if (fma != "auto") options.fusedMultiplyAdd = fma == "fused";
+    if (deviations == "spec") options.deviations = softraster::Deviations::Spec;
     if (softrasterDepth == "inverse-z") options.depthMode = softraster::DepthMode::InverseZ;
     return options;
   }
@@ -147,6 +150,10 @@ int main(int argc, char** argv) {
                     "How softraster rounds lavapipe's fmuladd: auto (as this CPU, like lavapipe), fused or separate; "
                     "the setting lavapipe does not use shows how much a scene depends on it")
         ->check(CLI::IsMember({"auto", "fused", "separate"}));
+    cmd->add_option("--softraster-deviations", common.deviations,
+                    "Where lavapipe deviates from the Vulkan spec (docs/lavapipe-rules.md, Deviations), softraster follows "
+                    "the driver (default) or the spec; spec shows how much a scene depends on the deviation")
+        ->check(CLI::IsMember({"driver", "spec"}));
   };
   auto addCommon = [&](CLI::App* cmd) {
     cmd->add_option("--set", common.overrides, "Override a scene value, e.g. camera.yaw=90 (repeatable)");

@@ -41,7 +41,8 @@ int renderCommand(const RenderCommand& command) {
     used += std::string(" (") + std::string(softraster::methodName(o.method)) + ", " +
             (o.threads == 0 ? std::string("every core") : std::to_string(o.threads) + (o.threads == 1 ? " thread" : " threads")) +
             (o.depthMode == softraster::DepthMode::InverseZ ? ", 1/z depth" : "") +
-            (o.affineVaryings ? ", affine varyings" : "") + ")";
+            (o.affineVaryings ? ", affine varyings" : "") +
+            (o.deviations == softraster::Deviations::Spec ? ", the spec where lavapipe deviates" : "") + ")";
   }
   std::printf("rendered %s with %s: wrote %s%s\n", command.options.scene.c_str(), used.c_str(), command.output.c_str(),
               command.depthOutput.empty() ? "" : (" and " + command.depthOutput).c_str());

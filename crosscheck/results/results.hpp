@@ -69,6 +69,10 @@ struct SceneResult {
   // The report's chart: the scene drawn with every variant (run/variants.hpp), when asked for.
   std::optional<VariantResults> variants;
   bool stabilityCase = false;               // a scene of a stability/ folder (hits counted, the report's table)
+  // A known deviation's scene (run/deviations.hpp), drawn with the driver's behaviour: pixels
+  // whose RGBA changes against lavapipe's when softraster follows the spec instead (none: not
+  // such a scene, or not measured).
+  std::optional<std::uint64_t> specDeviationPixels;
 };
 
 struct RunResults {

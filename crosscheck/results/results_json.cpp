@@ -1,6 +1,8 @@
 // RunResults and SceneResult as JSON and back (see results_json.hpp).
 #include "results/results_json.hpp"
 
+#include "run/deviations.hpp"
+
 #include <nlohmann/json.hpp>
 
 #include <cmath>
@@ -245,6 +247,10 @@ SceneResult readSceneResult(const json& j, const std::string& place) {
   // Added with the chart: absent in older files, read as none.
   if (j.contains("variants") && !j["variants"].is_null()) r.variants = readVariantResults(j["variants"], where("variants"));
   if (j.contains("stability_case")) r.stabilityCase = readBool(j["stability_case"], where("stability_case"));
+  // Added with the deviations: absent in older files, read as not measured.
+  if (j.contains("spec_deviation_pixels") && !j["spec_deviation_pixels"].is_null()) {
+    r.specDeviationPixels = readInteger<std::uint64_t>(j["spec_deviation_pixels"], where("spec_deviation_pixels"));
+  }
   return r;
 }
 
@@ -295,6 +301,7 @@ json sceneResultToJson(const SceneResult& r) {
   j["depth_view_range"] = {number(r.depthViewRange.first), number(r.depthViewRange.second)};
   j["variants"] = r.variants ? variantResultsToJson(*r.variants) : json(nullptr);
   j["stability_case"] = r.stabilityCase;
+  j["spec_deviation_pixels"] = optionalNumber(r.specDeviationPixels);
   return j;
 }
 
@@ -332,6 +339,29 @@ softraster::Result<SceneResult> sceneResultFromJson(const json& value) {
   return guarded<SceneResult>([&] { return readSceneResult(value, ""); });
 }
 
+namespace {
+
+// The known deviations (run/deviations.hpp), each with what this run measured on its scene
+// (null when the scene was not in the run or did not draw). Derived from the scenes, so a reader
+// does not read it back.
+json deviationsJson(const RunResults& run) {
+  json list = json::array();
+  for (const KnownDeviation& d : knownDeviations()) {
+    std::optional<std::uint64_t> measured;
+    for (const SceneResult& r : run.scenes) {
+      if (r.entry.name == d.scene && r.specDeviationPixels) measured = r.specDeviationPixels;
+    }
+    list.push_back({{"name", d.name},
+                    {"spec", d.spec},
+                    {"lavapipe", d.lavapipe},
+                    {"scene", d.scene},
+                    {"spec_mode_differing_pixels", optionalNumber(measured)}});
+  }
+  return list;
+}
+
+}  // namespace
+
 json runResultsToJson(const RunResults& run) {
   json scenes = json::array();
   for (const SceneResult& r : run.scenes) scenes.push_back(sceneResultToJson(r));
@@ -346,6 +376,7 @@ json runResultsToJson(const RunResults& run) {
           {"seconds", number(run.seconds)},
           {"jobs", run.jobs},
           {"finished", static_cast<std::int64_t>(run.finished)},
+          {"deviations", deviationsJson(run)},
           {"scenes", scenes}};
 }
 

@@ -1,10 +1,13 @@
 // The conformance runner (see conformance.hpp): one scene's run (runOne), and the two ways of
 // running a suite, in worker processes (run/worker_processes.hpp; each scene's SceneResult comes
-// back as CBOR of results/results_json.hpp's JSON) or on threads of this process.
+// back as CBOR of results/results_json.hpp's JSON) or on threads of this process. A known
+// deviation's scene (run/deviations.hpp) is drawn once more with the spec's behaviour and the
+// pixels that changes are counted.
 #include "run/conformance.hpp"
 
 #include "compare/compare.hpp"
 #include "results/results_json.hpp"
+#include "run/deviations.hpp"
 #include "run/variants.hpp"
 #include "run/worker_processes.hpp"
 #include "run/timing.hpp"
@@ -14,6 +17,7 @@
 #include <algorithm>
 #include <atomic>
 #include <chrono>
+#include <cstring>
 #include <exception>
 #include <memory>
 #include <mutex>
@@ -88,6 +92,19 @@ Outcome runScene(SceneResult& result, const ConformanceOptions& options, VulkanS
     const softraster::Status written = options.onFrames(result, *scene, *soft, *reference);
     result.timings.images = millisecondsSince(step);
     if (!written) return crash(written.message());
+  }
+  if (deviationShownBy(result.entry.name) && options.softraster.deviations == softraster::Deviations::Driver &&
+      !options.renderSoft) {
+    // A known deviation's scene: how many pixels the spec's behaviour changes against lavapipe.
+    softraster::ContextOptions spec = options.softraster;
+    spec.deviations = softraster::Deviations::Spec;
+    const auto specFrame = renderSoftraster(*scene, spec);
+    if (!specFrame) return crash("spec mode: " + specFrame.error());
+    std::uint64_t differing = 0;
+    for (std::size_t i = 0; i + 3 < specFrame->rgba.size() && i + 3 < reference->rgba.size(); i += 4) {
+      differing += std::memcmp(&specFrame->rgba[i], &reference->rgba[i], 4) != 0;
+    }
+    result.specDeviationPixels = differing;
   }
   if (options.chartFrames > 0) {
     step = Clock::now();

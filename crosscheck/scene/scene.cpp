@@ -69,20 +69,29 @@ softraster::Mat4 normalMatrix(const glm::dmat4& m) {
 }
 
 // Vulkan's VkViewport rules with lavapipe's limits, quoted in the error (a width or height of 0
-// is invalid in Vulkan, though softraster's library API reads it as "the whole framebuffer").
+// is refused here, though softraster's library API reads it as "the whole framebuffer"). A
+// negative height is Vulkan 1.1's y flip.
 void checkViewport(const softraster::Viewport& v, const std::string& place) {
-  if (!(v.width > 0 && v.height > 0)) {
-    throw SceneError(place, "width and height must be positive (Vulkan: \"width must be greater than 0.0\"; a "
-                            "negative height is not supported yet)");
+  if (!(v.width > 0)) {
+    throw SceneError(placeOf(place, "width"), "must be greater than 0 (VUID-VkViewport-width-01770: \"width must be "
+                                              "greater than 0.0\")");
   }
-  if (v.width > Limits::kMaxViewportDimension || v.height > Limits::kMaxViewportDimension) {
-    throw SceneError(place, "width and height must be at most 16384, the device's maxViewportDimensions");
+  if (v.height == 0) {
+    throw SceneError(placeOf(place, "height"), "must not be 0 (Vulkan 1.0's VkViewport rule \"height must be greater "
+                                               "than 0.0\" became, with VK_KHR_maintenance1, a negative height for a y "
+                                               "flip, never an empty viewport); give a negative height to flip y");
   }
-  if (v.x < Limits::kViewportBoundsMin || v.y < Limits::kViewportBoundsMin ||
-      v.x + v.width > Limits::kViewportBoundsMax || v.y + v.height > Limits::kViewportBoundsMax) {
+  if (v.width > Limits::kMaxViewportDimension || std::fabs(v.height) > Limits::kMaxViewportDimension) {
+    throw SceneError(place, "width and |height| must be at most 16384, the device's maxViewportDimensions "
+                            "(VUID-VkViewport-width-01771, VUID-VkViewport-height-01773: \"The absolute value of "
+                            "height must be less than or equal to VkPhysicalDeviceLimits::maxViewportDimensions[1]\")");
+  }
+  if (v.x < Limits::kViewportBoundsMin || v.y < Limits::kViewportBoundsMin || v.y > Limits::kViewportBoundsMax ||
+      v.x + v.width > Limits::kViewportBoundsMax || v.y + v.height < Limits::kViewportBoundsMin ||
+      v.y + v.height > Limits::kViewportBoundsMax) {
     throw SceneError(place, "must lie within the device's viewportBoundsRange [-32768, 32768] (Vulkan: \"x must "
                             "be greater than or equal to viewportBoundsRange[0]\", \"(x + width) must be less than "
-                            "or equal to viewportBoundsRange[1]\", likewise y)");
+                            "or equal to viewportBoundsRange[1]\", likewise y and y + height, either way round)");
   }
   if (!(v.minDepth >= 0 && v.minDepth <= 1 && v.maxDepth >= 0 && v.maxDepth <= 1)) {
     throw SceneError(place, "min_depth and max_depth must be in [0, 1]");
@@ -394,7 +403,25 @@ void readDrawState(const json& d, const std::string& place, softraster::Pipeline
   state.topology = readEnum(d, "topology", place, state.topology,
                             {{"point_list", Topology::PointList}, {"line_list", Topology::LineList},
                              {"line_strip", Topology::LineStrip}, {"triangle_list", Topology::TriangleList},
-                             {"triangle_strip", Topology::TriangleStrip}, {"triangle_fan", Topology::TriangleFan}});
+                             {"triangle_strip", Topology::TriangleStrip}, {"triangle_fan", Topology::TriangleFan},
+                             {"line_list_with_adjacency", Topology::LineListWithAdjacency},
+                             {"line_strip_with_adjacency", Topology::LineStripWithAdjacency},
+                             {"triangle_list_with_adjacency", Topology::TriangleListWithAdjacency},
+                             {"triangle_strip_with_adjacency", Topology::TriangleStripWithAdjacency}});
+  state.primitiveRestartEnable = readBool(d, "primitive_restart", place, state.primitiveRestartEnable);
+  const auto stripOrFan = [](Topology t) {
+    return t == Topology::LineStrip || t == Topology::TriangleStrip || t == Topology::TriangleFan ||
+           t == Topology::LineStripWithAdjacency || t == Topology::TriangleStripWithAdjacency;
+  };
+  if (state.primitiveRestartEnable && !stripOrFan(state.topology)) {
+    throw SceneError(placeOf(place, "primitive_restart"),
+                     "needs a strip or fan topology (VUID-VkPipelineInputAssemblyStateCreateInfo-topology-06252: "
+                     "\"If the primitiveTopologyListRestart feature is not enabled, and topology is "
+                     "VK_PRIMITIVE_TOPOLOGY_POINT_LIST, VK_PRIMITIVE_TOPOLOGY_LINE_LIST, "
+                     "VK_PRIMITIVE_TOPOLOGY_TRIANGLE_LIST, VK_PRIMITIVE_TOPOLOGY_LINE_LIST_WITH_ADJACENCY, or "
+                     "VK_PRIMITIVE_TOPOLOGY_TRIANGLE_LIST_WITH_ADJACENCY, primitiveRestartEnable must be VK_FALSE\"; "
+                     "vkref does not enable that feature)");
+  }
   if (d.contains("viewport")) {
     const std::string vp = placeOf(place, "viewport");
     const json& v = d["viewport"];
@@ -437,6 +464,29 @@ void readDrawState(const json& d, const std::string& place, softraster::Pipeline
   rs.lineRasterization = readEnum(d, "line_rasterization", place, rs.lineRasterization,
                                   {{"rectangular", softraster::LineRasterization::Rectangular},
                                    {"bresenham", softraster::LineRasterization::Bresenham}});
+  rs.provokingVertex = readEnum(d, "provoking_vertex", place, rs.provokingVertex,
+                                {{"first", softraster::ProvokingVertex::First}, {"last", softraster::ProvokingVertex::Last}});
+  if (d.contains("line_stipple")) {
+    const std::string sp = placeOf(place, "line_stipple");
+    const json& st = d["line_stipple"];
+    checkKeys(st, sp, {"factor", "pattern"});
+    if (!st.contains("factor") || !st.contains("pattern")) throw SceneError(sp, "needs \"factor\" and \"pattern\"");
+    const std::uint64_t factor = readCount(st, "factor", sp, 1);
+    if (factor < 1 || factor > 256) {
+      throw SceneError(placeOf(sp, "factor"), "must be in [1, 256] (VUID-VkGraphicsPipelineCreateInfo-stippledLineEnable-"
+                                              "02767: \"lineStippleFactor ... must be in the range [1,256]\")");
+    }
+    rs.lineStipple.enable = true;
+    rs.lineStipple.factor = static_cast<std::uint32_t>(factor);
+    rs.lineStipple.pattern = static_cast<std::uint16_t>(readCount(st, "pattern", sp, 0xFFFF, 0xFFFF));
+    const bool triangles = state.topology == Topology::TriangleList || state.topology == Topology::TriangleStrip ||
+                           state.topology == Topology::TriangleFan || state.topology == Topology::TriangleListWithAdjacency ||
+                           state.topology == Topology::TriangleStripWithAdjacency;
+    if (triangles && rs.polygonMode != softraster::PolygonMode::Fill) {
+      throw SceneError(sp, "stippled polygon-mode lines are not supported by softraster yet (Mesa's unfilled stage "
+                           "feeds the stipple stage lines that never reset its counter)");
+    }
+  }
   if (d.contains("depth_bias")) {
     const std::string bp = placeOf(place, "depth_bias");
     const json& b = d["depth_bias"];
@@ -824,7 +874,8 @@ Draw readDrawMesh(const json& d, const std::string& place, const std::filesystem
                        "texture", "normal_map", "shadow_map", "shading",
                        "transform", "material", "topology", "viewport", "scissor", "cull", "front_face", "depth_clamp",
                        "depth_bias", "line_width", "line_rasterization", "point_size", "polygon_mode", "blend",
-                       "depth_test", "depth_write", "depth_compare", "depth_bounds_test", "stencil"});
+                       "depth_test", "depth_write", "depth_compare", "depth_bounds_test", "stencil",
+                       "primitive_restart", "provoking_vertex", "line_stipple"});
   Draw draw;
   draw.name = readString(d, "name", place, place);
   draw.shading = readShadingModel(d, place);
@@ -891,6 +942,14 @@ Draw readDrawMesh(const json& d, const std::string& place, const std::filesystem
     if (!indices.is_array()) throw SceneError(placeOf(place, "indices"), "expected an array of indices");
     for (std::size_t i = 0; i < indices.size(); ++i) {
       const json& index = indices[i];
+      if (index.is_string() && index.get<std::string>() == "restart") {
+        if (!draw.state.primitiveRestartEnable) {
+          throw SceneError(placeOf(placeOf(place, "indices"), std::to_string(i)),
+                           "\"restart\" needs \"primitive_restart\": true");
+        }
+        draw.indices.push_back(softraster::kPrimitiveRestartIndex);
+        continue;
+      }
       if (!index.is_number_integer() || index.get<std::int64_t>() < 0 ||
           index.get<std::uint64_t>() >= draw.mesh.vertexCount()) {
         throw SceneError(placeOf(placeOf(place, "indices"), std::to_string(i)),

@@ -113,7 +113,7 @@ TEST_F(HostileInput, ColoursOutsideZeroToOne) {
 }
 
 TEST_F(HostileInput, StatesVulkanForbids) {
-  expectOverrideError("draws.0.viewport={\"width\":0,\"height\":10}", "width and height must be positive");
+  expectOverrideError("draws.0.viewport={\"width\":0,\"height\":10}", "/draws/0/viewport/width: must be greater than 0 (VUID-VkViewport-width-01770");
   expectOverrideError("draws.0.viewport={\"width\":20000,\"height\":10}", "maxViewportDimensions");
   expectOverrideError("draws.0.viewport={\"x\":32000,\"width\":1000,\"height\":10}", "viewportBoundsRange");
   expectOverrideError("draws.0.viewport={\"x\":1e300,\"width\":10,\"height\":10}", "/draws/0/viewport/x: must be a finite number");

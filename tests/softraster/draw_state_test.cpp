@@ -104,3 +104,69 @@ TEST(DrawState, ScissorAtTheEdgeOfInt32) {
   EXPECT_GT(white, 0);
   EXPECT_LT(white, all);
 }
+
+// Issue 13's primitive state: a negative viewport height flips y (the triangle drawn in the lower
+// half lands in the upper half), primitive restart skips its index in the bounds check and is
+// refused for list topologies, the stipple factor's range and the unknown enumerators.
+TEST(DrawState, NegativeViewportHeightFlipsY) {
+  const auto whiteRows = [](const softraster::PipelineState& state) {
+    softraster::Framebuffer framebuffer = softraster::Framebuffer::create(16, 16).value();
+    framebuffer.clear({0, 0, 0, 1}, 1.0f);
+    const std::vector<White::Vertex> vertices{{{-1.0f, 0.0f, 0.5f}}, {{1.0f, 0.0f, 0.5f}}, {{-1.0f, 1.0f, 0.5f}}};
+    softraster::PipelineState s = state;
+    s.rasterization.cullMode = softraster::CullMode::None;
+    EXPECT_TRUE(softraster::Context().draw<White>(s, {}, std::span<const White::Vertex>(vertices), framebuffer).ok());
+    std::vector<int> rows(16, 0);
+    for (std::size_t i = 0; i < framebuffer.colour().size(); i += 4) rows[i / 4 / 16] += framebuffer.colour()[i] == 255;
+    return rows;
+  };
+  softraster::PipelineState flipped;
+  flipped.viewport = {0, 16, 16, -16, 0, 1};
+  const std::vector<int> up = whiteRows(softraster::PipelineState{}), down = whiteRows(flipped);
+  for (int y = 0; y < 16; ++y) EXPECT_EQ(down[static_cast<std::size_t>(y)], up[static_cast<std::size_t>(15 - y)]) << y;
+  EXPECT_GT(up[12], 0);
+  EXPECT_EQ(up[3], 0);
+  flipped.viewport = {0, 0, 16, -40000, 0, 1};
+  expectRefused(flipped, "maxViewportDimensions");
+  flipped.viewport = {0, -32760, 16, -16, 0, 1};
+  expectRefused(flipped, "viewportBoundsRange");
+}
+
+TEST(DrawState, PrimitiveRestartIndexIsNoVertex) {
+  softraster::Framebuffer framebuffer = softraster::Framebuffer::create(16, 16).value();
+  const std::vector<White::Vertex> vertices{{{-1.0f, 0.0f, 0.5f}}, {{1.0f, 0.0f, 0.5f}}, {{-1.0f, 1.0f, 0.5f}},
+                                            {{1.0f, 1.0f, 0.5f}}};
+  const std::vector<std::uint32_t> indices{0, 1, 2, softraster::kPrimitiveRestartIndex, 1, 2, 3};
+  softraster::PipelineState state;
+  state.topology = softraster::Topology::TriangleStrip;
+  state.rasterization.cullMode = softraster::CullMode::None;
+  const softraster::Context context;
+  const auto drawIndexed = [&](const softraster::PipelineState& s) {
+    return context.drawIndexed<White>(s, {}, std::span<const White::Vertex>(vertices), indices, framebuffer);
+  };
+  EXPECT_FALSE(drawIndexed(state).ok()) << "without restart 0xFFFFFFFF is an index past the last vertex";
+  state.primitiveRestartEnable = true;
+  EXPECT_TRUE(drawIndexed(state).ok());
+  state.topology = softraster::Topology::TriangleList;
+  const softraster::Status list = drawIndexed(state);
+  ASSERT_FALSE(list.ok());
+  EXPECT_NE(list.message().find("topology-06252"), std::string::npos) << list.message();
+}
+
+TEST(DrawState, LineStippleAndTopologyRefusals) {
+  softraster::PipelineState state = lines(1.0f);
+  state.rasterization.lineStipple = {true, 0x00FF, 0};
+  expectRefused(state, "stippledLineEnable-02767");
+  state.rasterization.lineStipple.factor = 257;
+  expectRefused(state, "outside [1, 256]");
+  state.rasterization.lineStipple.factor = 256;
+  int white = 0;
+  ASSERT_TRUE(drawWith(state, &white).ok());
+  EXPECT_GT(white, 0) << "bit 0 of the pattern is on for the first 256 steps";
+  state.topology = softraster::Topology::TriangleList;
+  state.rasterization.polygonMode = softraster::PolygonMode::Line;
+  expectRefused(state, "stippled lines with polygon mode line or point");
+  softraster::PipelineState unknown;
+  unknown.topology = static_cast<softraster::Topology>(10);  // VK_PRIMITIVE_TOPOLOGY_PATCH_LIST
+  expectRefused(unknown, "unknown topology");
+}

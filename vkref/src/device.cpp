@@ -175,21 +175,36 @@ Status Device::createDevice() {
   features.wideLines = features2.features.wideLines;
   features.fillModeNonSolid = features2.features.fillModeNonSolid;
   features.largePoints = features2.features.largePoints;
+  features.geometryShader = features2.features.geometryShader;  // the adjacency topologies need it
 
-  // VK_EXT_line_rasterization, for Bresenham lines.
+  // VK_EXT_line_rasterization (Bresenham and stippled lines) and VK_EXT_provoking_vertex
+  // (provoking vertex last): enabled with the features vkref uses when the device has them.
   std::uint32_t extensionCount = 0;
   vkEnumerateDeviceExtensionProperties(physicalDevice_, nullptr, &extensionCount, nullptr);
   std::vector<VkExtensionProperties> extensions(extensionCount);
   vkEnumerateDeviceExtensionProperties(physicalDevice_, nullptr, &extensionCount, extensions.data());
-  const bool hasLineRasterization = std::any_of(extensions.begin(), extensions.end(), [](const VkExtensionProperties& e) {
-    return std::strcmp(e.extensionName, VK_EXT_LINE_RASTERIZATION_EXTENSION_NAME) == 0;
-  });
+  const auto hasExtension = [&](const char* name) {
+    return std::any_of(extensions.begin(), extensions.end(),
+                       [&](const VkExtensionProperties& e) { return std::strcmp(e.extensionName, name) == 0; });
+  };
+  const bool hasLineRasterization = hasExtension(VK_EXT_LINE_RASTERIZATION_EXTENSION_NAME);
+  const bool hasProvokingVertex = hasExtension(VK_EXT_PROVOKING_VERTEX_EXTENSION_NAME);
   VkPhysicalDeviceLineRasterizationFeaturesEXT lineFeatures{
       .sType = VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_LINE_RASTERIZATION_FEATURES_EXT};
+  VkPhysicalDeviceProvokingVertexFeaturesEXT provokingFeatures{
+      .sType = VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_PROVOKING_VERTEX_FEATURES_EXT};
   if (hasLineRasterization) {
     VkPhysicalDeviceFeatures2 query{.sType = VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_FEATURES_2, .pNext = &lineFeatures};
     vkGetPhysicalDeviceFeatures2(physicalDevice_, &query);
     bresenhamLines = lineFeatures.bresenhamLines == VK_TRUE;
+    rectangularLines = lineFeatures.rectangularLines == VK_TRUE;
+    stippledRectangularLines = lineFeatures.stippledRectangularLines == VK_TRUE;
+    stippledBresenhamLines = lineFeatures.stippledBresenhamLines == VK_TRUE;
+  }
+  if (hasProvokingVertex) {
+    VkPhysicalDeviceFeatures2 query{.sType = VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_FEATURES_2, .pNext = &provokingFeatures};
+    vkGetPhysicalDeviceFeatures2(physicalDevice_, &query);
+    provokingVertexLast = provokingFeatures.provokingVertexLast == VK_TRUE;
   }
 
   std::uint32_t familyCount = 0;
@@ -206,20 +221,32 @@ Status Device::createDevice() {
                                           .queueFamilyIndex = queueFamily,
                                           .queueCount = 1,
                                           .pQueuePriorities = &priority};
+  VkPhysicalDeviceProvokingVertexFeaturesEXT enabledProvoking{
+      .sType = VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_PROVOKING_VERTEX_FEATURES_EXT,
+      .provokingVertexLast = VK_TRUE};
+  const bool lines = bresenhamLines || rectangularLines || stippledRectangularLines || stippledBresenhamLines;
   VkPhysicalDeviceLineRasterizationFeaturesEXT enabledLines{
       .sType = VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_LINE_RASTERIZATION_FEATURES_EXT,
-      .bresenhamLines = bresenhamLines ? VK_TRUE : VK_FALSE};
+      .pNext = provokingVertexLast ? &enabledProvoking : nullptr,
+      .rectangularLines = rectangularLines ? VK_TRUE : VK_FALSE,
+      .bresenhamLines = bresenhamLines ? VK_TRUE : VK_FALSE,
+      .stippledRectangularLines = stippledRectangularLines ? VK_TRUE : VK_FALSE,
+      .stippledBresenhamLines = stippledBresenhamLines ? VK_TRUE : VK_FALSE};
+  void* chain = lines ? static_cast<void*>(&enabledLines)
+                      : (provokingVertexLast ? static_cast<void*>(&enabledProvoking) : nullptr);
   VkPhysicalDeviceVulkan13Features enabled{.sType = VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_VULKAN_1_3_FEATURES,
-                                           .pNext = bresenhamLines ? &enabledLines : nullptr,
+                                           .pNext = chain,
                                            .synchronization2 = VK_TRUE,
                                            .dynamicRendering = VK_TRUE};
-  const char* lineExtension = VK_EXT_LINE_RASTERIZATION_EXTENSION_NAME;
+  std::vector<const char*> enabledExtensions;
+  if (lines) enabledExtensions.push_back(VK_EXT_LINE_RASTERIZATION_EXTENSION_NAME);
+  if (provokingVertexLast) enabledExtensions.push_back(VK_EXT_PROVOKING_VERTEX_EXTENSION_NAME);
   const VkDeviceCreateInfo info{.sType = VK_STRUCTURE_TYPE_DEVICE_CREATE_INFO,
                                 .pNext = &enabled,
                                 .queueCreateInfoCount = 1,
                                 .pQueueCreateInfos = &queueInfo,
-                                .enabledExtensionCount = bresenhamLines ? 1u : 0u,
-                                .ppEnabledExtensionNames = &lineExtension,
+                                .enabledExtensionCount = static_cast<std::uint32_t>(enabledExtensions.size()),
+                                .ppEnabledExtensionNames = enabledExtensions.data(),
                                 .pEnabledFeatures = &features};
   if (Status s = check(vkCreateDevice(physicalDevice_, &info, nullptr, &device), "vkCreateDevice"); !s) return s;
   vkGetDeviceQueue(device, queueFamily, 0, &queue);

@@ -50,6 +50,10 @@ class Device {
   VkPhysicalDeviceLimits limits{};
   VkPhysicalDeviceFeatures features{};  // the core features enabled on `device`
   bool bresenhamLines = false;          // VK_EXT_line_rasterization with bresenhamLines enabled
+  bool rectangularLines = false;        // ... with rectangularLines enabled (explicit rectangular mode)
+  bool stippledRectangularLines = false;  // ... with stippledRectangularLines enabled
+  bool stippledBresenhamLines = false;    // ... with stippledBresenhamLines enabled
+  bool provokingVertexLast = false;     // VK_EXT_provoking_vertex with provokingVertexLast enabled
   std::array<bool, std::size(kDepthFormats)> depthFormatUsable{};  // can be rendered to and copied
   std::string name;
 

@@ -34,7 +34,7 @@ static_assert(static_cast<int>(softraster::BlendFactor::SrcAlphaSaturate) == VK_
               "softraster's blend enums are Vulkan's values");
 // A tripwire: a field added to PipelineState must also join PipelineCache::Key (and compile()),
 // or draws differing only in it would share a pipeline.
-static_assert(sizeof(softraster::PipelineState) == 132, "PipelineState changed: update PipelineCache::Key");
+static_assert(sizeof(softraster::PipelineState) == 144, "PipelineState changed: update PipelineCache::Key");
 
 // The viewport a draw uses: a zero width or height means the whole framebuffer.
 VkViewport viewportFor(const softraster::Viewport& v, std::uint32_t width, std::uint32_t height) {
@@ -122,7 +122,24 @@ Status checkDraw(const DrawCall& d, std::uint32_t width, std::uint32_t height, c
   }
 
   const softraster::PipelineState& s = d.state;
-  if (s.topology > softraster::Topology::TriangleFan) return Status::error("unsupported topology");
+  if (s.topology > softraster::Topology::TriangleStripWithAdjacency) return Status::error("unsupported topology");
+  if (s.primitiveRestartEnable && s.topology != softraster::Topology::LineStrip &&
+      s.topology != softraster::Topology::TriangleStrip && s.topology != softraster::Topology::TriangleFan &&
+      s.topology != softraster::Topology::LineStripWithAdjacency &&
+      s.topology != softraster::Topology::TriangleStripWithAdjacency)
+    return Status::error("primitive restart with a list topology needs primitiveTopologyListRestart (not enabled)");
+  if (s.topology >= softraster::Topology::LineListWithAdjacency && !features.geometryShader)
+    return Status::error("adjacency topologies need the geometryShader feature, which the device lacks "
+                         "(VUID-VkPipelineInputAssemblyStateCreateInfo-topology-00429)");
+  if (s.rasterization.provokingVertex == softraster::ProvokingVertex::Last && !device.provokingVertexLast)
+    return Status::error("provoking vertex last (VK_EXT_provoking_vertex) is not supported by the device");
+  if (s.rasterization.lineStipple.enable) {
+    const bool bresenham = s.rasterization.lineRasterization == softraster::LineRasterization::Bresenham;
+    if (!(bresenham ? device.stippledBresenhamLines : device.stippledRectangularLines && device.rectangularLines))
+      return Status::error("stippled lines of this mode (VK_EXT_line_rasterization) are not supported by the device");
+    if (s.rasterization.lineStipple.factor < 1 || s.rasterization.lineStipple.factor > 256)
+      return Status::error("line stipple factor outside [1, 256]");
+  }
   if (s.rasterization.depthClampEnable && !features.depthClamp)
     return Status::error("depth clamp is not supported by the device");
   if (s.rasterization.depthBias.enable && s.rasterization.depthBias.clamp != 0 && !features.depthBiasClamp)
@@ -168,7 +185,7 @@ Status checkDraw(const DrawCall& d, std::uint32_t width, std::uint32_t height, c
       return Status::error("vertex attribute at location " + std::to_string(a.location) + " does not fit the vertex");
   const std::size_t vertices = d.vertexData.size() / p->vertexStride;
   for (std::uint32_t index : d.indices)
-    if (index >= vertices)
+    if (index >= vertices && !(s.primitiveRestartEnable && index == softraster::kPrimitiveRestartIndex))
       return Status::error("index " + std::to_string(index) + " out of range (" + std::to_string(vertices) +
                            " vertices)");
   return {};
@@ -274,6 +291,11 @@ softraster::Result<VkPipeline> PipelineCache::get(const DrawCall& d, const Targe
   key.cullMode = byte(r.cullMode);
   key.frontFace = byte(r.frontFace);
   key.lineRasterization = byte(r.lineRasterization);
+  key.primitiveRestart = s.primitiveRestartEnable;
+  key.lineStipple = r.lineStipple.enable;
+  key.stipplePattern = r.lineStipple.enable ? r.lineStipple.pattern : 0;
+  key.stippleFactor = r.lineStipple.enable ? r.lineStipple.factor : 0;
+  key.provokingLast = r.provokingVertex == softraster::ProvokingVertex::Last;
   key.depthClamp = r.depthClampEnable;
   key.depthBias = r.depthBias.enable;
   key.biasConstant = bits(r.depthBias.constantFactor);
@@ -354,7 +376,8 @@ softraster::Result<VkPipeline> PipelineCache::compile(const Program& p, const so
         .pVertexAttributeDescriptions = attributes.data()};
     const VkPipelineInputAssemblyStateCreateInfo inputAssembly{
         .sType = VK_STRUCTURE_TYPE_PIPELINE_INPUT_ASSEMBLY_STATE_CREATE_INFO,
-        .topology = static_cast<VkPrimitiveTopology>(state.topology)};  // same order as Vulkan's
+        .topology = static_cast<VkPrimitiveTopology>(state.topology),  // same order as Vulkan's
+        .primitiveRestartEnable = state.primitiveRestartEnable ? VK_TRUE : VK_FALSE};
     const VkViewport viewport = viewportFor(state.viewport, target.width, target.height);
     const VkRect2D scissor = scissorFor(state.scissor, target.width, target.height);
     const VkPipelineViewportStateCreateInfo viewportState{.sType = VK_STRUCTURE_TYPE_PIPELINE_VIEWPORT_STATE_CREATE_INFO,
@@ -375,11 +398,27 @@ softraster::Result<VkPipeline> PipelineCache::compile(const Program& p, const so
         .depthBiasClamp = r.depthBias.clamp,
         .depthBiasSlopeFactor = r.depthBias.slopeFactor,
         .lineWidth = r.lineWidth};
-    // Bresenham lines need VK_EXT_line_rasterization; rectangular ones are Vulkan's default.
+    // Bresenham and stippled lines need VK_EXT_line_rasterization (rectangular lines are Vulkan's
+    // default, named here when stippled: strictLines is true on lavapipe); provoking vertex last
+    // needs VK_EXT_provoking_vertex. Each structure is chained only when the state needs it.
+    const bool bresenham = r.lineRasterization == softraster::LineRasterization::Bresenham;
+    const VkPipelineRasterizationProvokingVertexStateCreateInfoEXT provoking{
+        .sType = VK_STRUCTURE_TYPE_PIPELINE_RASTERIZATION_PROVOKING_VERTEX_STATE_CREATE_INFO_EXT,
+        .provokingVertexMode = VK_PROVOKING_VERTEX_MODE_LAST_VERTEX_EXT};
+    const bool provokingLast = r.provokingVertex == softraster::ProvokingVertex::Last;
     const VkPipelineRasterizationLineStateCreateInfoEXT lineState{
         .sType = VK_STRUCTURE_TYPE_PIPELINE_RASTERIZATION_LINE_STATE_CREATE_INFO_EXT,
-        .lineRasterizationMode = VK_LINE_RASTERIZATION_MODE_BRESENHAM_EXT};
-    if (r.lineRasterization == softraster::LineRasterization::Bresenham) rasterization.pNext = &lineState;
+        .pNext = provokingLast ? &provoking : nullptr,
+        .lineRasterizationMode =
+            bresenham ? VK_LINE_RASTERIZATION_MODE_BRESENHAM_EXT : VK_LINE_RASTERIZATION_MODE_RECTANGULAR_EXT,
+        .stippledLineEnable = r.lineStipple.enable ? VK_TRUE : VK_FALSE,
+        .lineStippleFactor = r.lineStipple.enable ? r.lineStipple.factor : 1u,
+        .lineStipplePattern = r.lineStipple.enable ? r.lineStipple.pattern : std::uint16_t{0xFFFF}};
+    if (bresenham || r.lineStipple.enable) {
+      rasterization.pNext = &lineState;
+    } else if (provokingLast) {
+      rasterization.pNext = &provoking;
+    }
     const VkPipelineMultisampleStateCreateInfo multisample{
         .sType = VK_STRUCTURE_TYPE_PIPELINE_MULTISAMPLE_STATE_CREATE_INFO,
         .rasterizationSamples = target.samples};

@@ -98,6 +98,9 @@ class PipelineCache {
     VkSampleCountFlagBits samples = VK_SAMPLE_COUNT_1_BIT;
     bool colour = true;
     std::uint8_t topology = 0, polygonMode = 0, cullMode = 0, frontFace = 0, lineRasterization = 0;
+    bool primitiveRestart = false, lineStipple = false, provokingLast = false;
+    std::uint16_t stipplePattern = 0;
+    std::uint32_t stippleFactor = 0;
     bool depthClamp = false, depthBias = false;
     std::uint32_t biasConstant = 0, biasClamp = 0, biasSlope = 0, lineWidth = 0;
     std::array<std::uint32_t, 6> viewport{};  // x, y, width, height, minDepth, maxDepth

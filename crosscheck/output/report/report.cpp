@@ -3,6 +3,7 @@
 
 #include "output/artifacts.hpp"  // kPreviewSize
 #include "output/chart_svg.hpp"
+#include "run/deviations.hpp"  // knownDeviations
 #include "run/stability.hpp"  // variantPasses, kStabilityReference
 #include "output/markup.hpp"
 #include "output/metric_text.hpp"
@@ -401,6 +402,30 @@ std::string stabilitySection(const RunResults& run) {
          "<th>median ms</th><th>error</th></tr></thead>\n<tbody>\n" + rows + "</tbody></table>\n";
 }
 
+// The known lavapipe deviations from the Vulkan spec (run/deviations.hpp): the spec's words, what
+// lavapipe does, the scene that shows it and how many pixels following the spec changes there.
+std::string deviationsSection(const RunResults& run) {
+  std::string rows;
+  for (const KnownDeviation& d : knownDeviations()) {
+    const SceneResult* shown = nullptr;
+    for (const SceneResult& r : run.scenes) {
+      if (r.entry.name == d.scene) shown = &r;
+    }
+    const std::string scene = shown ? "<a href=\"" + anchorOf(*shown) + "\">" + e(d.scene) + "</a>" : e(d.scene);
+    const std::string measured = shown && shown->specDeviationPixels ? std::to_string(*shown->specDeviationPixels)
+                                                                     : std::string("&#8212;");
+    rows += "<tr><td>" + e(d.name) + "</td><td>" + e(d.spec) + "</td><td>" + e(d.lavapipe) + "</td><td>" + scene +
+            "</td><td class=\"num\">" + measured + "</td></tr>\n";
+  }
+  return "<h2 id=\"deviations\">Deviations from the Vulkan spec</h2>\n<p class=\"run\">Where lavapipe provably "
+         "deviates from the specification softraster follows the driver (so the scenes agree) and can follow the spec "
+         "instead (<code>--softraster-deviations spec</code>). The last column counts the pixels of the scene whose "
+         "colour changes against lavapipe's when softraster follows the spec (&#8212;: the scene was not in this "
+         "run).</p>\n<table id=\"deviations-table\" class=\"summary\"><thead><tr><th>deviation</th><th>the spec"
+         "</th><th>lavapipe</th><th>scene</th><th>px changed by the spec</th></tr></thead>\n<tbody>\n" + rows +
+         "</tbody></table>\n";
+}
+
 std::string sceneSection(const RunResults& run, const SceneResult& r, std::size_t position, bool open,
                          const std::filesystem::path& reportDir, const SceneVersusBaseline* versus,
                          const std::vector<std::string>& labels) {
@@ -497,12 +522,12 @@ std::string renderArgumentsOf(const std::string& commandLine) {
   for (std::size_t i = 0; i < tokens.size(); ++i) {
     const std::string& t = tokens[i];
     if (t == "--validation") add(t);
-    const bool takesValue = t == "--softraster-fma" || t == "--device" || t == "--set";
+    const bool takesValue = t == "--softraster-fma" || t == "--softraster-deviations" || t == "--device" || t == "--set";
     if (takesValue && i + 1 < tokens.size()) {
       add(t + " " + tokens[i + 1]);
       ++i;
     }
-    for (const char* option : {"--softraster-fma=", "--device=", "--set="}) {
+    for (const char* option : {"--softraster-fma=", "--softraster-deviations=", "--device=", "--set="}) {
       if (t.rfind(option, 0) == 0) add(t);
     }
   }
@@ -651,6 +676,7 @@ std::string reportHtml(const RunResults& run, const std::filesystem::path& repor
   const std::vector<std::string> labels = chartLabels(chart);
   if (!chart.scenes.empty()) html += chartSection(chart, labels);
   html += stabilitySection(run);
+  html += deviationsSection(run);
   html += "<h2>Difference heatmaps</h2>\n" + colourLegend("T") +
           "<p class=\"run\">T is the scene's colour threshold (8-bit steps); each scene's section shows its own. "
           "Depth differences use the same colours against the depth threshold.</p>\n";

@@ -61,7 +61,8 @@ struct ReportBaseline {
 };
 
 // The arguments of a suite command line that change a render, as `crosscheck compare` takes them
-// (--softraster-fma, --device, --set, --validation; RunResults::renderArguments), in their order.
+// (--softraster-fma, --softraster-deviations, --device, --set, --validation;
+// RunResults::renderArguments), in their order.
 std::string renderArgumentsOf(const std::string& commandLine);
 
 // The header shows the counts, the run's time and jobs, when it finished (UTC), its command line

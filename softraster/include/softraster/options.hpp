@@ -75,6 +75,17 @@ constexpr std::optional<Method> methodFromName(std::string_view name) {
   return std::nullopt;
 }
 
+// Where lavapipe provably deviates from the Vulkan specification (docs/lavapipe-rules.md,
+// "Deviations"), whose behaviour softraster follows:
+//   Driver: lavapipe's, so cross-checks agree bit for bit (the default);
+//   Spec:   the specification's words. The one known deviation: with 4x MSAA lavapipe's scissor
+//           planes let samples through in the column left of and the row above the scissor
+//           rectangle; the spec's scissor test discards every sample of those fragments.
+enum class Deviations : std::uint8_t { Driver, Spec };
+
+// A Deviations value's name on the command line and in results ("driver", "spec").
+constexpr std::string_view deviationsName(Deviations d) { return d == Deviations::Spec ? "spec" : "driver"; }
+
 struct ContextOptions {
   Method method = Method::Exact;
   // Threads that draw, the caller's included: 0 = one per core, 1 = the calling thread only.
@@ -89,6 +100,8 @@ struct ContextOptions {
   // Exact or ExactScalar it is an error of every draw (Context::validate()), never a silent
   // change of an exact draw.
   bool affineVaryings = false;
+  // Whose behaviour where lavapipe deviates from the spec (above).
+  Deviations deviations = Deviations::Driver;
 };
 
 }  // namespace softraster

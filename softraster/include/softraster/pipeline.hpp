@@ -1,6 +1,7 @@
-// softraster's entry point: a Context draws points, lines and triangles (lists, strips, fans),
-// indexed or not, with a shader type into a Framebuffer, following lavapipe's rules to the bit
-// (the "exact" method). A draw is validated as a whole before any work, then handed to the
+// softraster's entry point: a Context draws points, lines and triangles (lists, strips, fans, the
+// adjacency topologies with their adjacent vertices skipped), indexed or not, with primitive
+// restart on strips and fans, with a shader type into a Framebuffer, following lavapipe's rules
+// to the bit (the "exact" method). A draw is validated as a whole before any work, then handed to the
 // method's draw loop (detail/exact/draw.hpp: the stages, in order), instantiated for the
 // framebuffer's depth format, for how fmuladd rounds and for the fragment stage: the SIMD fast
 // path (detail/fast/) where options.hpp's Method::Exact allows it, else the scalar one.
@@ -9,7 +10,9 @@
 // resolves as lavapipe does); depth bias for filled triangles and for polygon modes line and point
 // (Mesa's offset stage: geometry/polygon_offset.hpp); the course's 1/z depth buffer;
 // blending with every core factor and op, blend constants and the colour write mask; the stencil
-// test with front and back state on the D24_UNORM_S8_UINT and D32_SFLOAT_S8_UINT formats.
+// test with front and back state on the D24_UNORM_S8_UINT and D32_SFLOAT_S8_UINT formats; stippled
+// lines and provoking vertex last (VK_EXT_line_rasterization, VK_EXT_provoking_vertex); negative
+// viewport heights. Where lavapipe deviates from the spec, ContextOptions::deviations chooses.
 // Conventions are Vulkan's: clip space x right, y down, z in [0, w]; window origin at the top
 // left, pixel centres at +0.5; front faces counter-clockwise as seen in the image by default;
 // docs/library.md has them all, with the 4x sample positions.
@@ -98,11 +101,16 @@ class Context {
     if constexpr (!checkShaderInterface<Shader>()) {
       return Status::error("not a shader");  // unreachable: checkShaderInterface has failed the build
     } else {
-      // The largest index first (a loop the compiler vectorises), the offending one only on failure.
+      // The largest index first (a loop the compiler vectorises; a restart index counts as 0), the
+      // offending one only on failure.
+      const bool restart = state.primitiveRestartEnable;
+      const auto outOfRange = [&](std::uint32_t index) {
+        return index >= vertices.size() && !(restart && index == kPrimitiveRestartIndex);
+      };
       std::uint32_t largest = 0;
-      for (const std::uint32_t index : indices) largest = std::max(largest, index);
+      for (const std::uint32_t index : indices) largest = std::max(largest, restart && index == kPrimitiveRestartIndex ? 0u : index);
       if (!indices.empty() && largest >= vertices.size()) {
-        const auto past = std::find_if(indices.begin(), indices.end(), [&](std::uint32_t i) { return i >= vertices.size(); });
+        const auto past = std::find_if(indices.begin(), indices.end(), outOfRange);
         const auto i = static_cast<std::size_t>(past - indices.begin());
         return Status::error("index " + std::to_string(i) + " (" + std::to_string(*past) +
                              ") is past the last vertex (" + std::to_string(vertices.size()) + " vertices)");
@@ -119,7 +127,20 @@ class Context {
     if (framebuffer.width() == 0 || framebuffer.height() == 0) {
       return Status::error("framebuffer has no pixels (make it with Framebuffer::create)");
     }
-    if (state.topology > Topology::TriangleFan) return Status::error("unknown topology");
+    if (state.topology > Topology::TriangleStripWithAdjacency) return Status::error("unknown topology");
+    if (state.primitiveRestartEnable && !detail::isStripOrFanTopology(state.topology)) {
+      return Status::error("primitive restart with a list topology needs primitiveTopologyListRestart "
+                           "(VUID-VkPipelineInputAssemblyStateCreateInfo-topology-06252), which softraster does not offer");
+    }
+    if (rs.provokingVertex > ProvokingVertex::Last) return Status::error("unknown provoking vertex mode");
+    if (options_.deviations > Deviations::Spec) return Status::error("unknown deviations choice");
+    if (rs.lineStipple.enable && !(rs.lineStipple.factor >= 1 && rs.lineStipple.factor <= 256)) {
+      return Status::error("line stipple factor " + std::to_string(rs.lineStipple.factor) +
+                           " is outside [1, 256] (VUID-VkGraphicsPipelineCreateInfo-stippledLineEnable-02767)");
+    }
+    if (rs.lineStipple.enable && rs.polygonMode != PolygonMode::Fill && detail::isTriangleTopology(state.topology)) {
+      return Status::error("stippled lines with polygon mode line or point are not supported by softraster yet");
+    }
     if (!isCourseMethod(options_.method) && options_.method != Method::Exact && options_.method != Method::ExactScalar) {
       return Status::error("unknown method");
     }
@@ -167,12 +188,15 @@ class Context {
       if (!std::isfinite(v)) return Status::error("viewport values must be finite");
     }
     if (vp.width == 0 && vp.height == 0) return {};
-    if (!(vp.width > 0 && vp.height > 0)) return Status::error("viewport width and height must be positive");
-    if (vp.width > DeviceLimits::kMaxViewportDimension || vp.height > DeviceLimits::kMaxViewportDimension) {
-      return Status::error("viewport width and height must be at most maxViewportDimensions (16384)");
+    if (!(vp.width > 0 && vp.height != 0)) {
+      return Status::error("viewport width must be positive and height non-zero (a negative height flips y)");
     }
-    if (vp.x < DeviceLimits::kViewportBoundsMin || vp.y < DeviceLimits::kViewportBoundsMin ||
-        vp.x + vp.width > DeviceLimits::kViewportBoundsMax || vp.y + vp.height > DeviceLimits::kViewportBoundsMax) {
+    if (vp.width > DeviceLimits::kMaxViewportDimension || std::fabs(vp.height) > DeviceLimits::kMaxViewportDimension) {
+      return Status::error("viewport width and |height| must be at most maxViewportDimensions (16384)");
+    }
+    const float top = std::fmin(vp.y, vp.y + vp.height), bottom = std::fmax(vp.y, vp.y + vp.height);
+    if (vp.x < DeviceLimits::kViewportBoundsMin || top < DeviceLimits::kViewportBoundsMin ||
+        vp.x + vp.width > DeviceLimits::kViewportBoundsMax || bottom > DeviceLimits::kViewportBoundsMax) {
       return Status::error("viewport must lie within viewportBoundsRange [-32768, 32768]");
     }
     if (!(vp.minDepth >= 0 && vp.minDepth <= 1 && vp.maxDepth >= 0 && vp.maxDepth <= 1)) {
@@ -244,7 +268,8 @@ class Context {
                  std::span<const typename Shader::Vertex> vertices, std::span<const std::uint32_t> indices,
                  Framebuffer& framebuffer, detail::DrawScratch& scratch) const {
     const bool inverseZ = options_.depthMode == DepthMode::InverseZ;
-    detail::ExactDraw<Shader, Fused, Format>(state, uniforms, framebuffer, inverseZ, scratch, threadsFor(options_.method))
+    detail::ExactDraw<Shader, Fused, Format>(state, uniforms, framebuffer, inverseZ, scratch, threadsFor(options_.method),
+                                             options_)
         .run(vertices, indices);
   }
 
@@ -291,7 +316,7 @@ class Context {
                 std::span<const typename Shader::Vertex> vertices, std::span<const std::uint32_t> indices,
                 Framebuffer& framebuffer, detail::DrawScratch& scratch) const {
     detail::ExactDraw<Shader, true, Format, detail::fast::FastFragmentStage<Shader, Format>>(
-        state, uniforms, framebuffer, options_.depthMode == DepthMode::InverseZ, scratch, pool_.get())
+        state, uniforms, framebuffer, options_.depthMode == DepthMode::InverseZ, scratch, pool_.get(), options_)
         .run(vertices, indices);
   }
 #endif

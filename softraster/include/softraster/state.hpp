@@ -5,9 +5,10 @@
 // 4x MSAA is supported; its sample count is the framebuffer's (framebuffer.hpp), not state here.
 // Deliberately absent until a scene needs it: dual-source blending (the SRC1 blend factors, which
 // need a second fragment output), logic ops, more than one colour attachment, the rest of
-// Vulkan's multisample state (sample shading, sample mask, alpha to coverage), smooth and
-// stippled lines. The depth bounds test is absent for good: lavapipe reports depthBounds = false,
-// so no Vulkan pipeline on it may enable it.
+// Vulkan's multisample state (sample shading, sample mask, alpha to coverage), smooth lines,
+// geometry and tessellation shaders (so adjacency vertices are only ever skipped). The depth
+// bounds test is absent for good: lavapipe reports depthBounds = false, so no Vulkan pipeline on
+// it may enable it.
 #pragma once
 
 #include <cstdint>
@@ -17,10 +18,26 @@ namespace softraster {
 enum class CullMode : std::uint8_t { None, Front, Back, FrontAndBack };
 enum class FrontFace : std::uint8_t { CounterClockwise, Clockwise };
 enum class CompareOp : std::uint8_t { Never, Less, Equal, LessOrEqual, Greater, NotEqual, GreaterOrEqual, Always };
-// In Vulkan's order (VkPrimitiveTopology 0..5).
-enum class Topology : std::uint8_t { PointList, LineList, LineStrip, TriangleList, TriangleStrip, TriangleFan };
+// In Vulkan's order (VkPrimitiveTopology 0..9; no patch lists). Without a geometry shader the
+// adjacency topologies draw their lines and triangles and ignore the adjacent vertices.
+enum class Topology : std::uint8_t {
+  PointList,
+  LineList,
+  LineStrip,
+  TriangleList,
+  TriangleStrip,
+  TriangleFan,
+  LineListWithAdjacency,
+  LineStripWithAdjacency,
+  TriangleListWithAdjacency,
+  TriangleStripWithAdjacency,
+};
 
-// VkViewport: window rectangle in pixels and the depth range.
+// VkPipelineInputAssemblyStateCreateInfo::primitiveRestartEnable's index for 32-bit indices.
+inline constexpr std::uint32_t kPrimitiveRestartIndex = 0xFFFFFFFFu;
+
+// VkViewport: window rectangle in pixels and the depth range. A negative height flips y (Vulkan
+// 1.1, VK_KHR_maintenance1): the viewport then spans y + height .. y.
 struct Viewport {
   float x = 0, y = 0, width = 0, height = 0;
   float minDepth = 0, maxDepth = 1;
@@ -45,6 +62,18 @@ enum class PolygonMode : std::uint8_t { Fill, Line, Point };
 // VK_EXT_line_rasterization modes lavapipe supports without smoothing.
 enum class LineRasterization : std::uint8_t { Rectangular, Bresenham };
 
+// VK_EXT_line_rasterization's stipple (VkPipelineRasterizationLineStateCreateInfoEXT):
+// stippledLineEnable, lineStippleFactor in [1, 256], lineStipplePattern (bit 0 first).
+struct LineStipple {
+  bool enable = false;
+  std::uint16_t pattern = 0xFFFF;
+  std::uint32_t factor = 1;
+};
+
+// VK_EXT_provoking_vertex (VkPipelineRasterizationProvokingVertexStateCreateInfoEXT): which
+// vertex of a primitive gives its flat varyings. First is Vulkan's default.
+enum class ProvokingVertex : std::uint8_t { First, Last };
+
 struct RasterizationState {
   PolygonMode polygonMode = PolygonMode::Fill;
   CullMode cullMode = CullMode::Back;
@@ -55,6 +84,8 @@ struct RasterizationState {
   DepthBias depthBias;
   float lineWidth = 1.0f;
   LineRasterization lineRasterization = LineRasterization::Rectangular;
+  LineStipple lineStipple;
+  ProvokingVertex provokingVertex = ProvokingVertex::First;
 };
 
 // VkStencilOp, in Vulkan's order (0..7).
@@ -139,6 +170,10 @@ struct BlendState {
 
 struct PipelineState {
   Topology topology = Topology::TriangleList;
+  // VkPipelineInputAssemblyStateCreateInfo::primitiveRestartEnable: in an indexed draw the index
+  // kPrimitiveRestartIndex ends the strip or fan and starts a new one (strip and fan topologies
+  // only: lists need the primitiveTopologyListRestart feature, which vkref does not enable).
+  bool primitiveRestartEnable = false;
   Viewport viewport;  // width/height 0 means "the whole framebuffer"
   Scissor scissor;
   RasterizationState rasterization;

@@ -46,7 +46,7 @@ class CourseTriangles {
       : bias_(state.rasterization.depthBias),
         ccwIsFront_(state.rasterization.frontFace == FrontFace::CounterClockwise),
         method_(options.method),
-        fragments_(state, uniforms, framebuffer, viewport, region, inverseZ, options.affineVaryings),
+        fragments_(state, uniforms, framebuffer, viewport, region, inverseZ, options.affineVaryings, options.deviations),
         scanline_(scratch.vector<Pixel<K>>(ScratchSlot::CourseRows)) {}
 
   // One filled triangle past the front end; a is the provoking vertex.

@@ -117,9 +117,10 @@ class CourseFragments {
   static constexpr InstructionSet kInstructionSet = Fused ? InstructionSet::Fma : InstructionSet::Baseline;
 
   CourseFragments(const PipelineState& state, const typename Shader::Uniforms& uniforms, Framebuffer& framebuffer,
-                  const Viewport& viewport, const PixelRect& region, bool inverseZ, bool affine)
+                  const Viewport& viewport, const PixelRect& region, bool inverseZ, bool affine,
+                  Deviations deviations = Deviations::Driver)
       : uniforms_(uniforms),
-        target_(fragmentTarget(state, framebuffer, viewport, region, inverseZ)),
+        target_(fragmentTarget(state, framebuffer, viewport, region, inverseZ, deviations)),
         samples_(framebuffer.samples() == 4 ? 4u : 1u),
         affine_(affine) {}
 

@@ -17,6 +17,9 @@
 // serves the course's methods too (course/draw.hpp): with Course a course::CourseTriangles, every
 // filled triangle goes to it after the front end, instead of snapping, setup and the fragment
 // stage; lines and points still take the exact code.
+// Primitive restart cuts the indices into runs, each drawn as a draw of its own (its own vertex
+// batches); provoking vertex last changes assembly, clipping's fan, setup's reordering of
+// clockwise triangles and which vertex gives flat varyings (the stages say how).
 // Deliberately absent: validation of the draw (pipeline.hpp's Context does it before any work)
 // and any choice of method or instruction set (the Context makes those and instantiates this).
 #pragma once
@@ -32,6 +35,7 @@
 #include <softraster/detail/geometry/clipping.hpp>
 #include <softraster/detail/geometry/culling.hpp>
 #include <softraster/detail/geometry/polygon_offset.hpp>
+#include <softraster/detail/geometry/line_stipple.hpp>
 #include <softraster/detail/geometry/primitive_assembly.hpp>
 #include <softraster/detail/geometry/unfilled.hpp>
 #include <softraster/detail/geometry/vertex_processing.hpp>
@@ -64,7 +68,7 @@ class ExactDraw {
 
   // pool: the Context's threads (nullptr or one thread: everything on the calling thread);
   // scratch: the vectors this draw fills, kept by the Context between draws; options: the
-  // Context's, read by a course method only (its method and affineVaryings).
+  // Context's: its deviations, and a course method's method and affineVaryings.
   ExactDraw(const PipelineState& state, const typename Shader::Uniforms& uniforms, Framebuffer& framebuffer,
             bool inverseZ, DrawScratch& scratch, ThreadPool* pool = nullptr, const ContextOptions& options = {})
       : state_(state),
@@ -77,7 +81,8 @@ class ExactDraw {
         // With 4x MSAA the fragment stage may also touch the column and row lavapipe's scissor
         // planes reach (MsaaRegionEdges); the bands (fast/bands.hpp) cover them too.
         fragments_(pool, scratch, state, uniforms, framebuffer, viewport_,
-                   multisample_ ? msaaRegionEdges(region_).rasterRegion : region_, inverseZ),
+                   multisample_ ? msaaRegionEdges(region_, state.scissor, options.deviations).rasterRegion : region_,
+                   inverseZ, options.deviations),
         shaded_(scratch.vector<Vertex>(ScratchSlot::ShadedVertices)),
         triangles_(scratch.vector<TriangleIndices>(ScratchSlot::Triangles)),
         lines_(scratch.vector<LineIndices>(ScratchSlot::Lines)),
@@ -87,13 +92,15 @@ class ExactDraw {
   void run(std::span<const typename Shader::Vertex> vertices, std::span<const std::uint32_t> indices) {
     if (region_.empty()) return;
     shadeVertices(vertices);
-    if (state_.topology == Topology::PointList) {
-      drawPoints(indices);
-    } else if (isLineTopology(state_.topology)) {
-      drawLines(indices);
-    } else {
-      drawTriangles(indices);
-    }
+    forEachRestartRun(indices, state_.primitiveRestartEnable, [&](std::span<const std::uint32_t> run) {
+      if (state_.topology == Topology::PointList) {
+        drawPoints(run);
+      } else if (isLineTopology(state_.topology)) {
+        drawLines(run);
+      } else {
+        drawTriangles(run);
+      }
+    });
     fragments_.endRound();
   }
 
@@ -127,10 +134,11 @@ class ExactDraw {
   // run(worker, begin, end) over [0, count) in rounds, each cut into consecutive ranges that
   // start at a multiple of `align` (the vertex batches), one per worker, on the pool's threads
   // when there are enough primitives; the band queue draws each round.
+  // oneRange: the whole draw as one range on the calling thread (a stipple counter runs through it).
   template <class Range>
-  void forEachRange(std::size_t count, std::size_t align, Range&& range) {
+  void forEachRange(std::size_t count, std::size_t align, bool oneRange, Range&& range) {
     ThreadPool* pool = fragments_.pool();
-    if (pool == nullptr || count < kParallelPrimitives) {
+    if (pool == nullptr || count < kParallelPrimitives || oneRange) {
       Worker worker{fragments_.recorder(0), {}};
       range(worker, 0, count);
       return;
@@ -179,7 +187,7 @@ class ExactDraw {
   }
 
   void drawPoints(std::span<const std::uint32_t> indices) {
-    forEachRange(indices.size(), 1, [&](Worker& worker, std::size_t begin, std::size_t end) {
+    forEachRange(indices.size(), 1, false, [&](Worker& worker, std::size_t begin, std::size_t end) {
       runRange<&ExactDraw::drawPointRange>(worker, indices.subspan(begin, end - begin));
     });
   }
@@ -191,26 +199,45 @@ class ExactDraw {
     }
   }
 
+  // One run of lines (a draw, or a run between primitive restarts): the stipple counter is
+  // local to it, as the lines of a strip are drawn in order.
   void drawLines(std::span<const std::uint32_t> indices) {
     assembleLines(state_.topology, indices, lines_);
-    forEachRange(lines_.size(), 1, [&](Worker& worker, std::size_t begin, std::size_t end) {
+    // A stipple counter runs on from line to line along a strip, so a stippled draw is one range.
+    const bool oneRange = rs_.lineStipple.enable;
+    forEachRange(lines_.size(), 1, oneRange, [&](Worker& worker, std::size_t begin, std::size_t end) {
       runRange<&ExactDraw::drawLineRange>(worker, std::span<const LineIndices>(lines_).subspan(begin, end - begin));
     });
   }
 
   void drawLineRange(Worker& worker, std::span<const LineIndices> lines) {
     Vertex clippedA, clippedB;
+    std::uint32_t stippleCounter = 0;
+    const bool resetEveryLine = stippleResetsEveryLine(state_.topology);
     for (const LineIndices& l : lines) {
       const Vertex& a = shaded_[l[0]];
       const Vertex& b = shaded_[l[1]];
       const std::uint32_t outside = a.clipMask | b.clipMask;
+      if (resetEveryLine) stippleCounter = 0;
       if (outside == 0) {
-        drawLineHere(worker, a, b);
+        drawLineStippled(worker, a, b, stippleCounter);
       } else if ((a.clipMask & b.clipMask) == 0 &&
-                 clipLine(a, b, outside, transform_, kInterpolation, clippedA, clippedB)) {
-        drawLine(worker, clippedA, clippedB);
+                 clipLine(a, b, outside, transform_, kInterpolation, clippedA, clippedB, provokingLast_)) {
+        drawLineStippled(worker, clippedA, clippedB, stippleCounter);
       }
     }
+  }
+
+  // A line past clipping: whole, or the pieces its stipple pattern keeps (geometry/line_stipple).
+  void drawLineStippled(Worker& worker, const Vertex& a, const Vertex& b, std::uint32_t& counter) {
+    if (!rs_.lineStipple.enable) {
+      drawLineHere(worker, a, b);
+      return;
+    }
+    Vertex flatA = a, flatB = b;
+    flatShadeLine(flatA, flatB, kInterpolation, provokingLast_);
+    stippleLine(flatA, flatB, rs_.lineStipple, rs_.lineRasterization != LineRasterization::Bresenham, counter,
+                [&](const Vertex& p, const Vertex& q) { drawLine(worker, p, q); });
   }
 
   // Triangles in vertex batches: a batch with no vertex outside the frustum goes straight to
@@ -218,21 +245,22 @@ class ExactDraw {
   void drawTriangles(std::span<const std::uint32_t> indices) {
     winding_ = windingFilter(rs_);
     if (!winding_.drawClockwise && !winding_.drawCounterClockwise) return;
-    assembleTriangles(state_.topology, indices, triangles_);
+    assembleTriangles(state_.topology, indices, triangles_, provokingLast_);
     const std::size_t batchSize = trianglesPerBatch(state_.topology);
-    forEachRange(triangles_.size(), batchSize, [&](Worker& worker, std::size_t begin, std::size_t end) {
-      runRange<&ExactDraw::drawTriangleRange>(worker,
-                                              std::span<const TriangleIndices>(triangles_).subspan(begin, end - begin));
+    forEachRange(triangles_.size(), batchSize, false, [&](Worker& worker, std::size_t begin, std::size_t end) {
+      runRange<&ExactDraw::drawTriangleRange>(worker, indices, begin, end);
     });
   }
 
-  // `triangles` starts a vertex batch.
-  void drawTriangleRange(Worker& worker, std::span<const TriangleIndices> triangles) {
+  // Triangles [begin, end) of triangles_, assembled from `indices`; begin starts a vertex batch.
+  void drawTriangleRange(Worker& worker, std::span<const std::uint32_t> indices, std::size_t begin, std::size_t end) {
     const bool unfilled = rs_.polygonMode != PolygonMode::Fill;
     const std::size_t batchSize = trianglesPerBatch(state_.topology);
-    for (std::size_t start = 0; start < triangles.size(); start += batchSize) {
-      const auto batch = triangles.subspan(start, std::min(batchSize, triangles.size() - start));
-      const bool throughDrawPipeline = unfilled || batchNeedsClipping(batch, shaded_);
+    const std::span<const TriangleIndices> triangles(triangles_);
+    for (std::size_t start = begin; start < end; start += batchSize) {
+      const auto batch = triangles.subspan(start, std::min(batchSize, end - start));
+      const bool throughDrawPipeline = unfilled || batchNeedsClipping(batch, shaded_) ||
+                                       adjacencyNeedsClipping(state_.topology, indices, start, batch.size(), shaded_);
       for (const TriangleIndices& t : batch) {
         const Vertex& v0 = shaded_[t[0]];
         const Vertex& v1 = shaded_[t[1]];
@@ -269,15 +297,19 @@ class ExactDraw {
     }
     if ((v0.clipMask & v1.clipMask & v2.clipMask) != 0) return;  // entirely outside one plane
     ClippedPolygon<N>& polygon = worker.polygon;
-    if (!clipTriangle(v0, v1, v2, outside, transform_, kInterpolation, polygon, rs_.polygonMode == PolygonMode::Point)) {
+    if (!clipTriangle(v0, v1, v2, outside, transform_, kInterpolation, polygon, rs_.polygonMode == PolygonMode::Point,
+                      provokingLast_)) {
       return;
     }
-    for (int i = 2; i < polygon.count; ++i) {  // emitted as a fan from vertex 0
+    for (int i = 2; i < polygon.count; ++i) {  // a fan from vertex 0: (0, i-1, i), or (i-1, i, 0)
       const Vertex& p0 = polygon.vertices[0];
       const Vertex& p1 = polygon.vertices[static_cast<std::size_t>(i - 1)];
       const Vertex& p2 = polygon.vertices[static_cast<std::size_t>(i)];
-      if (survivesPipelineCull(p0.window, p1.window, p2.window, rs_)) {
-        drawCulled(worker, p0, p1, p2, fanTriangleEdgeFlags(polygon, i));
+      const Vertex& a = provokingLast_ ? p1 : p0;
+      const Vertex& b = provokingLast_ ? p2 : p1;
+      const Vertex& c = provokingLast_ ? p0 : p2;
+      if (survivesPipelineCull(a.window, b.window, c.window, rs_)) {
+        drawCulled(worker, a, b, c, fanTriangleEdgeFlags(polygon, i, provokingLast_));
       }
     }
   }
@@ -293,14 +325,18 @@ class ExactDraw {
     drawUnfilledTriangle(
         rs_.polygonMode, biased[0], biased[1], biased[2], edgeFlags, kInterpolation,
         [&](const Vertex& p, const Vertex& q) { drawLine(worker, p, q); },
-        [&](const Vertex& p) { drawPoint(worker, p); });
+        [&](const Vertex& p) { drawPoint(worker, p); }, provokingLast_);
   }
 
   // Snapping, the fixed-point cull, setup and fragments of one filled triangle; or the course
   // method's own cull, setup, coverage and interpolation.
   void drawTriangleHere(Worker& worker, const Vertex& a, const Vertex& b, const Vertex& c) {
     if constexpr (kCourse) {
-      course_.drawTriangle(a, b, c, winding_);
+      if (provokingLast_) {
+        course_.drawTriangle(c, a, b, winding_);  // the same winding, the provoking vertex first
+      } else {
+        course_.drawTriangle(a, b, c, winding_);
+      }
     } else {
       drawExactTriangle(worker, a, b, c);
     }
@@ -312,15 +348,20 @@ class ExactDraw {
     const int area = fixedAreaSign(fixed);
     if (area == 0 || (area > 0 ? !winding_.drawCounterClockwise : !winding_.drawClockwise)) return;
     // From here on the triangle is counter-clockwise: a negative one continues as (a, c, b),
-    // keeping the provoking vertex first.
-    const Vertex& v1 = area > 0 ? b : c;
-    const Vertex& v2 = area > 0 ? c : b;
+    // keeping the provoking vertex first, or as (b, a, c) with provoking vertex last.
+    const bool swapFirst = area < 0 && provokingLast_;
+    const bool swapLast = area < 0 && !provokingLast_;
+    const Vertex& v0 = swapFirst ? b : a;
+    const Vertex& v1 = swapFirst ? a : (swapLast ? c : b);
+    const Vertex& v2 = swapLast ? b : c;
     if (area < 0) {
-      std::swap(fixed.x[1], fixed.x[2]);
-      std::swap(fixed.y[1], fixed.y[2]);
+      const int i = provokingLast_ ? 0 : 2;
+      std::swap(fixed.x[1], fixed.x[i]);
+      std::swap(fixed.y[1], fixed.y[i]);
     }
     const TriangleEdges edges = setupEdges(fixed);
-    TriangleInterpolants<N> interpolants = setupInterpolants(a, v1, v2, kInterpolation, rs_.depthBias, Format, pixelOffset);
+    TriangleInterpolants<N> interpolants =
+        setupInterpolants(v0, v1, v2, kInterpolation, rs_.depthBias, Format, pixelOffset, provokingLast_);
     interpolants.frontFacing = (area > 0) == (rs_.frontFace == FrontFace::CounterClockwise);  // the stencil face
     if (multisample_) {
       worker.sink.shadeSamples(edges.edges, edges.bounds, interpolants);
@@ -334,7 +375,8 @@ class ExactDraw {
                           ? setupBresenhamLine(a.window, b.window, rs_.lineWidth)
                           : setupRectangularLine(a.window, b.window, rs_.lineWidth);
     if (!line) return;
-    worker.sink.shadePixels(line->quad.edges, line->quad.bounds, setupLineInterpolants(a, b, *line, kInterpolation));
+    worker.sink.shadePixels(line->quad.edges, line->quad.bounds,
+                            setupLineInterpolants(a, b, *line, kInterpolation, provokingLast_));
   }
 
   void drawPointHere(Worker& worker, const Vertex& v) {
@@ -350,6 +392,7 @@ class ExactDraw {
   ViewportTransform transform_;
   PixelRect region_;
   bool multisample_;
+  bool provokingLast_ = rs_.provokingVertex == ProvokingVertex::Last;
   Queue fragments_;  // the stage, on one thread or in bands
   WindingFilter winding_{true, true};
   // Scratch: the Context's, reused across draws.

@@ -31,12 +31,12 @@ struct TriangleInterpolants {
   bool frontFacing = true;
 };
 
-// v0 is the provoking vertex.
+// v0 is the provoking vertex, or v2 with provokingLast (lp_state_setup.c: attribs[2]).
 template <int N>
 inline TriangleInterpolants<N> setupInterpolants(const ShadedVertex<N>& v0, const ShadedVertex<N>& v1,
                                                  const ShadedVertex<N>& v2, const InterpolationSet<N>& interpolation,
                                                  const DepthBias& bias, DepthFormat depthFormat,
-                                                 float pixelOffset = kPixelCentreOffset) {
+                                                 float pixelOffset = kPixelCentreOffset, bool provokingLast = false) {
   const PlaneSetup setup(v0.window, v1.window, v2.window, pixelOffset);
   TriangleInterpolants<N> t;
   t.depth = setup.plane(v0.window.z, v1.window.z, v2.window.z);
@@ -52,7 +52,7 @@ inline TriangleInterpolants<N> setupInterpolants(const ShadedVertex<N>& v0, cons
         t.varyings[i] = setup.plane(v0.varyings[i], v1.varyings[i], v2.varyings[i]);
         break;
       case Interpolation::Flat:
-        t.varyings[i] = {v0.varyings[i], 0.0f, 0.0f};
+        t.varyings[i] = {(provokingLast ? v2 : v0).varyings[i], 0.0f, 0.0f};
         break;
     }
   }

@@ -199,10 +199,12 @@ inline std::optional<LineSetup> setupBresenhamLine(Vec4 v1, Vec4 v2, float lineW
 }
 
 // Attribute planes of a line from its first vertex v1 (lp_setup_line.c linear_coef):
-// dadx = (da * dx) / area, a0 = a1 - (dadx * (x1 - 0.5) + dady * (y1 - 0.5)).
+// dadx = (da * dx) / area, a0 = a1 - (dadx * (x1 - 0.5) + dady * (y1 - 0.5)). Flat varyings are
+// v1's, or v2's with provokingLast.
 template <int N>
 inline TriangleInterpolants<N> setupLineInterpolants(const ShadedVertex<N>& v1, const ShadedVertex<N>& v2,
-                                                     const LineSetup& line, const InterpolationSet<N>& interpolation) {
+                                                     const LineSetup& line, const InterpolationSet<N>& interpolation,
+                                                     bool provokingLast = false) {
   const float x1 = v1.window.x - kPixelCentreOffset, y1 = v1.window.y - kPixelCentreOffset;
   const auto linear = [&](float a1, float a2) {
     const float da21 = a1 - a2;
@@ -221,7 +223,7 @@ inline TriangleInterpolants<N> setupLineInterpolants(const ShadedVertex<N>& v1, 
         t.varyings[i] = linear(v1.varyings[i] * v1.window.w, v2.varyings[i] * v2.window.w);
         break;
       case Interpolation::NoPerspective: t.varyings[i] = linear(v1.varyings[i], v2.varyings[i]); break;
-      case Interpolation::Flat: t.varyings[i] = {v1.varyings[i], 0.0f, 0.0f}; break;
+      case Interpolation::Flat: t.varyings[i] = {(provokingLast ? v2 : v1).varyings[i], 0.0f, 0.0f}; break;
     }
   }
   return t;

@@ -2,7 +2,8 @@
 //   - snapping: X = round_half_even((x_win - 0.5) * 256) with the subtraction in float
 //     (cvtps2dq: out-of-range and NaN give INT32_MIN);
 //   - the sign of the 64-bit fixed-point area decides facing, culling and, when negative,
-//     the vertex order (v0, v2, v1) used from here on (provoking vertex first);
+//     the vertex order (v0, v2, v1) used from here on (provoking vertex first), or (v1, v0, v2)
+//     with provoking vertex last (the provoking vertex stays third);
 //   - three 64-bit edge functions with the top-left rule (window y points down);
 //   - float plane equations a(px, py) = a0 + dadx*px + dady*py for depth, 1/w and varyings,
 //     from the unsnapped window positions, in lavapipe's operation order, no FMA.

@@ -55,7 +55,8 @@ class BandQueue {
   static constexpr unsigned kListsPerThread = 4;
 
   BandQueue(ThreadPool* pool, DrawScratch& scratch, const PipelineState& state, const Uniforms& uniforms,
-            Framebuffer& framebuffer, const Viewport& viewport, const PixelRect& region, bool inverseZ)
+            Framebuffer& framebuffer, const Viewport& viewport, const PixelRect& region, bool inverseZ,
+            Deviations deviations = Deviations::Driver)
       : pool_(pool != nullptr && pool->threads() > 1 ? pool : nullptr),
         state_(state),
         uniforms_(uniforms),
@@ -63,11 +64,12 @@ class BandQueue {
         viewport_(viewport),
         region_(region),
         inverseZ_(inverseZ),
+        deviations_(deviations),
         bands_(region.empty() ? 0 : (region.y1 - region.y0) / kBandRows + 1),
         lists_(scratch.vector<std::vector<Record>>(ScratchSlot::BandRecords)),
         bins_(scratch.vector<std::vector<std::uint32_t>>(ScratchSlot::BandBins)) {
     if (pool_ == nullptr) {
-      direct_.emplace(state, uniforms, framebuffer, viewport, region, inverseZ);
+      direct_.emplace(state, uniforms, framebuffer, viewport, region, inverseZ, deviations);
       return;
     }
     lists_.resize(workers());
@@ -171,7 +173,7 @@ class BandQueue {
     for (std::size_t list = 0; list < lists_.size(); ++list) {
       const std::vector<std::uint32_t>& bin = bins_[list * static_cast<std::size_t>(bands_) + band];
       if (bin.empty()) continue;
-      if (!stage) stage.emplace(state_, uniforms_, framebuffer_, viewport_, bandRows(band), inverseZ_);
+      if (!stage) stage.emplace(state_, uniforms_, framebuffer_, viewport_, bandRows(band), inverseZ_, deviations_);
       const std::vector<Record>& records = lists_[list];
       for (const std::uint32_t i : bin) {
         const Record& r = records[i];
@@ -192,6 +194,7 @@ class BandQueue {
   Viewport viewport_;
   PixelRect region_;
   bool inverseZ_;
+  Deviations deviations_;
   int bands_;
   std::optional<Stage> direct_;
   std::vector<std::vector<Record>>& lists_;        // the Context's scratch, kept between draws: records per list

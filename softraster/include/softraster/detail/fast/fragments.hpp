@@ -58,8 +58,9 @@ class FastFragmentStage {
   static constexpr InstructionSet kInstructionSet = InstructionSet::Avx2Fma;
 
   FastFragmentStage(const PipelineState& state, const typename Shader::Uniforms& uniforms, Framebuffer& framebuffer,
-                    const Viewport& viewport, const PixelRect& region, bool inverseZ)
-      : scalar_(state, uniforms, framebuffer, viewport, region, inverseZ),
+                    const Viewport& viewport, const PixelRect& region, bool inverseZ,
+                    Deviations deviations = Deviations::Driver)
+      : scalar_(state, uniforms, framebuffer, viewport, region, inverseZ, deviations),
         uniforms_(uniforms),
         target_(scalar_.target()),
         colour_(reinterpret_cast<std::uint32_t*>(target_.colour)) {}

@@ -7,7 +7,8 @@
 //   - 4x MSAA (filled triangles): coverage and depth per sample, the fragment shaded once at the
 //     pixel centre and written to the samples that are covered and pass the depth and stencil
 //     tests (stencil tested and updated per sample); the
-//     region's left column and top row as lavapipe's scissor planes cut them (MsaaRegionEdges);
+//     region's left column and top row as lavapipe's scissor planes cut them (MsaaRegionEdges),
+//     or as the spec's per-fragment scissor test does (Deviations::Spec);
 //   - depth is tested and written only with the depth test on (Vulkan); the course's 1/z buffer
 //     (DepthMode::InverseZ) compares the other way round, larger being nearer.
 // Deliberately absent: coverage itself (exact/rasterizer.hpp walks it), sample shading.
@@ -48,13 +49,15 @@ struct FragmentTarget {
 };
 
 inline FragmentTarget fragmentTarget(const PipelineState& state, Framebuffer& framebuffer, const Viewport& viewport,
-                                     const PixelRect& region, bool inverseZ) {
+                                     const PixelRect& region, bool inverseZ,
+                                     Deviations deviations = Deviations::Driver) {
   return {state.depth,
           stencilState(state.depth, hasStencil(framebuffer.depthFormat())),
           colourBlend(state.blend),
           region,
           framebuffer.samples() == 4
-              ? msaaRegionEdges(drawRegion(state.scissor, viewport, framebuffer.width(), framebuffer.height()))
+              ? msaaRegionEdges(drawRegion(state.scissor, viewport, framebuffer.width(), framebuffer.height()),
+                                state.scissor, deviations)
               : MsaaRegionEdges{},
           fragmentDepthRange(viewport, state.rasterization.depthClampEnable),
           inverseZ,
@@ -71,8 +74,9 @@ class FragmentStage {
   static constexpr InstructionSet kInstructionSet = Fused ? InstructionSet::Fma : InstructionSet::Baseline;
 
   FragmentStage(const PipelineState& state, const typename Shader::Uniforms& uniforms, Framebuffer& framebuffer,
-                const Viewport& viewport, const PixelRect& region, bool inverseZ)
-      : uniforms_(uniforms), target_(fragmentTarget(state, framebuffer, viewport, region, inverseZ)) {}
+                const Viewport& viewport, const PixelRect& region, bool inverseZ,
+                Deviations deviations = Deviations::Driver)
+      : uniforms_(uniforms), target_(fragmentTarget(state, framebuffer, viewport, region, inverseZ, deviations)) {}
 
   const FragmentTarget& target() const { return target_; }
 

@@ -8,7 +8,8 @@
 //   - a NaN or infinite distance drops the whole triangle;
 //   - the resulting polygon is emitted as a fan from its vertex 0.
 //   - noperspective varyings use a t recomputed in screen space (from x, or y when x is equal);
-//     flat varyings of the polygon's vertex 0 are the provoking vertex's.
+//     flat varyings of the polygon's vertex 0 are the provoking vertex's (the triangle's first,
+//     or its third with provoking vertex last; the fan is then emitted as (i-1, i, 0)).
 // With depth clamp the z planes are simply absent from the clip masks.
 // Lines and points follow do_clip_line and clip_point_guard_xy (below).
 // Deliberately absent: user clip planes, clip distances.
@@ -79,10 +80,11 @@ inline ShadedVertex<N> interpolateClipVertex(float t, const ShadedVertex<N>& bas
 // `guardBandXY`: clip x and y at 2w. lavapipe does this for triangles drawn with polygon mode
 // POINT (measured, scenes/polygon_mode_clipping.json: a vertex at 1.9w keeps its point, one at
 // 2.5w is moved to 2w); filled triangles, polygon mode LINE and line topologies clip at w.
+// `provokingLast`: c, not a, is the provoking vertex whose flat varyings vertex 0 gets.
 template <int N>
 bool clipTriangle(const ShadedVertex<N>& a, const ShadedVertex<N>& b, const ShadedVertex<N>& c, std::uint32_t clipMask,
                   const ViewportTransform& vp, const InterpolationSet<N>& interpolation, ClippedPolygon<N>& result,
-                  bool guardBandXY = false) {
+                  bool guardBandXY = false, bool provokingLast = false) {
   // Two vertex lists that swap roles after each plane; indices point into `storage`.
   std::array<ShadedVertex<N>, 3 + kMaxClippedVertices + 1> storage;
   int stored = 0;
@@ -166,18 +168,23 @@ bool clipTriangle(const ShadedVertex<N>& a, const ShadedVertex<N>& b, const Shad
     result.vertices[i] = storage[in[i]];
     result.edges[i] = inEdges[i];
   }
-  for (int i = 0; i < N; ++i) {  // flat varyings come from the provoking vertex, a
-    if (interpolation[static_cast<std::size_t>(i)] == Interpolation::Flat) result.vertices[0].varyings[i] = a.varyings[i];
+  const ShadedVertex<N>& provoking = provokingLast ? c : a;
+  for (int i = 0; i < N; ++i) {  // flat varyings come from the provoking vertex
+    if (interpolation[static_cast<std::size_t>(i)] == Interpolation::Flat) {
+      result.vertices[0].varyings[i] = provoking.varyings[i];
+    }
   }
   return true;
 }
 
 // Clips the line (a, b) as Mesa's do_clip_line: per plane, the fraction to cut from each end;
 // each end moves by its largest fraction, from its own end towards the other; a line losing
-// all of its length is dropped. Flat varyings of both new ends are the provoking vertex's (a).
+// all of its length is dropped. Flat varyings of both new ends are the provoking vertex's (a, or
+// b with provokingLast).
 template <int N>
 bool clipLine(const ShadedVertex<N>& a, const ShadedVertex<N>& b, std::uint32_t clipMask, const ViewportTransform& vp,
-              const InterpolationSet<N>& interpolation, ShadedVertex<N>& outA, ShadedVertex<N>& outB) {
+              const InterpolationSet<N>& interpolation, ShadedVertex<N>& outA, ShadedVertex<N>& outB,
+              bool provokingLast = false) {
   float t0 = 0.0f, t1 = 0.0f;
   while (clipMask != 0) {
     const int plane = __builtin_ctz(clipMask);
@@ -197,10 +204,11 @@ bool clipLine(const ShadedVertex<N>& a, const ShadedVertex<N>& b, std::uint32_t 
   }
   outA = a.clipMask ? interpolateClipVertex(t0, a, b, vp, interpolation) : a;
   outB = b.clipMask ? interpolateClipVertex(t1, b, a, vp, interpolation) : b;
+  const ShadedVertex<N>& provoking = provokingLast ? b : a;
   for (int i = 0; i < N; ++i) {
     if (interpolation[static_cast<std::size_t>(i)] == Interpolation::Flat) {
-      outA.varyings[i] = a.varyings[i];
-      outB.varyings[i] = a.varyings[i];
+      outA.varyings[i] = provoking.varyings[i];
+      outB.varyings[i] = provoking.varyings[i];
     }
   }
   return true;

@@ -5,7 +5,8 @@
 //   - A clipped polygon is emitted as a fan from its vertex 0 (emit_poly): the first triangle
 //     carries the polygon's first edge, every triangle its middle edge, the last one the closing
 //     edge.
-//   - Flat varyings of all three vertices are the provoking vertex's.
+//   - Flat varyings of all three vertices are the provoking vertex's (the first, or the third
+//     with provoking vertex last, where emit_poly's fan is (i-1, i, 0) and its edge flags rotate).
 // Deliberately absent: drawing the lines and points; the caller hands in how (exact/draw.hpp).
 #pragma once
 
@@ -20,12 +21,14 @@ namespace softraster::detail {
 
 // Edge flags (bit i: the edge from vertex i to vertex i+1) of fan triangle (0, i-1, i) of a
 // clipped polygon, i in [2, count).
+// With provokingLast the triangle is (i-1, i, 0): the same edges, named from its own vertex 0.
 template <int N>
-unsigned fanTriangleEdgeFlags(const ClippedPolygon<N>& polygon, int i) {
-  unsigned edges = (i == 2 && polygon.edges[0]) ? 1u : 0u;
-  if (polygon.edges[static_cast<std::size_t>(i - 1)]) edges |= 2u;
-  if (i == polygon.count - 1 && polygon.edges[static_cast<std::size_t>(i)]) edges |= 4u;
-  return edges;
+unsigned fanTriangleEdgeFlags(const ClippedPolygon<N>& polygon, int i, bool provokingLast = false) {
+  const bool first = i == 2 && polygon.edges[0];
+  const bool middle = polygon.edges[static_cast<std::size_t>(i - 1)];
+  const bool last = i == polygon.count - 1 && polygon.edges[static_cast<std::size_t>(i)];
+  if (provokingLast) return (middle ? 1u : 0u) | (last ? 2u : 0u) | (first ? 4u : 0u);
+  return (first ? 1u : 0u) | (middle ? 2u : 0u) | (last ? 4u : 0u);
 }
 
 // Draws triangle (a, b, c) in polygon mode `mode` (Line or Point) with `edges` its header's edge
@@ -33,10 +36,13 @@ unsigned fanTriangleEdgeFlags(const ClippedPolygon<N>& polygon, int i) {
 template <int N, class DrawLine, class DrawPoint>
 void drawUnfilledTriangle(PolygonMode mode, const ShadedVertex<N>& a, const ShadedVertex<N>& b,
                           const ShadedVertex<N>& c, unsigned edges, const InterpolationSet<N>& interpolation,
-                          DrawLine&& line, DrawPoint&& point) {
+                          DrawLine&& line, DrawPoint&& point, bool provokingLast = false) {
   ShadedVertex<N> v[3] = {a, b, c};
+  const ShadedVertex<N>& provoking = provokingLast ? c : a;
   for (int i = 0; i < N; ++i) {
-    if (interpolation[static_cast<std::size_t>(i)] == Interpolation::Flat) v[1].varyings[i] = v[2].varyings[i] = a.varyings[i];
+    if (interpolation[static_cast<std::size_t>(i)] == Interpolation::Flat) {
+      for (ShadedVertex<N>& w : v) w.varyings[i] = provoking.varyings[i];
+    }
   }
   if (mode == PolygonMode::Line) {
     if ((edges & 4u) && v[2].edgeFlag) line(v[2], v[0]);

@@ -4,6 +4,7 @@
 // Deliberately absent: multiple viewports, viewport swizzles.
 #pragma once
 
+#include <softraster/options.hpp>
 #include <softraster/state.hpp>
 
 #include <algorithm>
@@ -34,8 +35,10 @@ inline Viewport resolveViewport(const Viewport& vp, std::uint32_t width, std::ui
 }
 
 // Pixels a draw may touch (lavapipe's draw region): framebuffer ∩ scissor ∩ the viewport
-// rectangle [(int)(x + 0.499), (int)(x + width - 0.501)] (lavapipe sets point_tri_clip, which
-// scissors every primitive to the viewport).
+// rectangle [(int)(x0 + 0.499), (int)(2*sx + x0 - 0.501)] (lavapipe sets point_tri_clip, which
+// scissors every primitive to the viewport), computed as lp_setup.c does from the viewport's
+// scale s and translate t: x0 = tx - sx, y0 = ty - |sy| (a negative height flips y, so the
+// rectangle spans y + height .. y).
 inline PixelRect drawRegion(const Scissor& scissor, const Viewport& vp, std::uint32_t width, std::uint32_t height) {
   PixelRect region{0, 0, static_cast<int>(width) - 1, static_cast<int>(height) - 1};
   if (scissor.width != 0 && scissor.height != 0) {  // in 64 bits: x + width may not fit in an int
@@ -45,9 +48,12 @@ inline PixelRect drawRegion(const Scissor& scissor, const Viewport& vp, std::uin
     region = intersect(region, {scissor.x, scissor.y, lastOf(scissor.x, scissor.width, region.x1),
                                 lastOf(scissor.y, scissor.height, region.y1)});
   }
-  const float top = std::fmin(vp.y, vp.y + vp.height), bottom = std::fmax(vp.y, vp.y + vp.height);
-  return intersect(region, {static_cast<int>(vp.x + 0.499f), static_cast<int>(top + 0.499f),
-                            static_cast<int>(vp.x + vp.width - 0.501f), static_cast<int>(bottom - 0.501f)});
+  const float halfWidth = 0.5f * vp.width, halfHeight = std::fabs(0.5f * vp.height);
+  const float x0 = (halfWidth + vp.x) - halfWidth;
+  const float y0 = (0.5f * vp.height + vp.y) - halfHeight;
+  return intersect(region, {static_cast<int>(x0 + 0.499f), static_cast<int>(y0 + 0.499f),
+                            static_cast<int>(halfWidth * 2.0f + x0 - 0.501f),
+                            static_cast<int>(halfHeight * 2.0f + y0 - 0.501f)});
 }
 
 // 4x MSAA: lavapipe bounds a triangle that crosses the draw region's edges by four scissor
@@ -60,7 +66,8 @@ inline PixelRect drawRegion(const Scissor& scissor, const Viewport& vp, std::uin
 // triangle whose bounds miss the region itself is culled before the planes are made. As the draw
 // region includes the viewport rectangle, this covers scissors and viewports alike. The Vulkan
 // spec scissors whole fragments (a lavapipe deviation for the scissor; for a viewport the extra
-// samples are inside the clipped primitive, as the spec has it).
+// samples are inside the clipped primitive, as the spec has it). With Deviations::Spec the
+// scissor is tested per fragment: no partial column or row where the scissor makes that edge.
 struct MsaaRegionEdges {
   static constexpr int kLavapipeTileSize = 64;
   static constexpr unsigned kRightHalfSamples = 0b1010;   // x offsets 0.875 and 0.625
@@ -79,12 +86,18 @@ struct MsaaRegionEdges {
   }
 };
 
-inline MsaaRegionEdges msaaRegionEdges(const PixelRect& region) {
+// `scissor` and `deviations`: with Deviations::Spec, a left or top edge the scissor makes (the
+// scissor set and not reaching past it) gets no partial column or row.
+inline MsaaRegionEdges msaaRegionEdges(const PixelRect& region, const Scissor& scissor = {},
+                                       Deviations deviations = Deviations::Driver) {
   MsaaRegionEdges e;
   e.drawRegion = e.rasterRegion = region;
   if (region.empty()) return e;
-  if (region.x0 % MsaaRegionEdges::kLavapipeTileSize != 0) e.partialColumn = --e.rasterRegion.x0;
-  if (region.y0 % MsaaRegionEdges::kLavapipeTileSize != 0) e.partialRow = --e.rasterRegion.y0;
+  const bool specScissor = deviations == Deviations::Spec && scissor.width != 0 && scissor.height != 0;
+  const bool scissorLeft = specScissor && scissor.x >= region.x0;
+  const bool scissorTop = specScissor && scissor.y >= region.y0;
+  if (region.x0 % MsaaRegionEdges::kLavapipeTileSize != 0 && !scissorLeft) e.partialColumn = --e.rasterRegion.x0;
+  if (region.y0 % MsaaRegionEdges::kLavapipeTileSize != 0 && !scissorTop) e.partialRow = --e.rasterRegion.y0;
   return e;
 }
 
