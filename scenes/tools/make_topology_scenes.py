@@ -181,12 +181,16 @@ def stipple_scene(filename, mode, label):
              **st(256, 0x0001)),
         draw("pattern 0xffff", [at(135, 120, 2.0), at(250, 150, 3.0)], [[1, 0.5, 0.2], [0.2, 0.5, 1]],
              **st(5, 0xFFFF, line_width=2.0)),
+        draw("strip leaving the view: the line wholly outside does not advance the counter, factor 2, 0x0f3f",
+             [at(150, 92, 2.0), at(230, 100, 2.0), at(400, 60, 2.0), at(420, 130, 2.0), at(240, 108, 2.0),
+              at(160, 112, 2.0)], rainbow(6, 2), **st(2, 0x0F3F, topology="line_strip")),
     ]
     scene(filename, f"Stippled {label} lines (VK_EXT_line_rasterization stippledLineEnable): Mesa's stipple stage "
           "cuts each line, after clipping, into segments of ceil(length) steps, each step on when bit "
           "(counter / factor) mod 16 of the pattern is set; the counter restarts at every line of a list and at the "
           "first line of each strip (and after a primitive restart) and runs on along a strip; varyings of a "
-          "segment's new ends are linear in window space; factors 1 to 256, wide and clipped lines, a flat varying.",
+          "segment's new ends are linear in window space; factors 1 to 256, wide and clipped lines, a flat varying; "
+          "a strip leaving the view, whose line wholly outside does not advance the counter.",
           draws)
 
 stipple_scene("line_stipple.json", "rectangular", "rectangular")
