@@ -45,7 +45,9 @@ PipelineState readState(fuzz::ByteReader& in) {
   r.depthBias = {in.flag(), in.number(), in.number(), in.number()};
   r.lineWidth = in.flag() ? in.number() : static_cast<float>(1 + in.below(8));
   r.lineRasterization = static_cast<LineRasterization>(in.below(2));
-  s.depth = {in.flag(), in.flag(), static_cast<CompareOp>(in.below(8))};
+  s.depth.testEnable = in.flag();
+  s.depth.writeEnable = in.flag();
+  s.depth.compareOp = static_cast<CompareOp>(in.below(8));
   BlendState& b = s.blend;
   b.enable = in.flag();
   b.srcColorBlendFactor = static_cast<BlendFactor>(in.below(16));  // 15: not a factor

@@ -280,7 +280,8 @@ TEST(CourseMethods, RespectTheDepthTest) {
           SCOPED_TRACE(std::string(softraster::methodName(method)) + " op " + std::to_string(int(op)) +
                        (mode == softraster::DepthMode::InverseZ ? " 1/z" : " z") + (nearerSecond ? " nearer second" : ""));
           softraster::PipelineState state = noCulling();
-          state.depth = {true, true, op};
+          state.depth.testEnable = state.depth.writeEnable = true;
+          state.depth.compareOp = op;
           // For 1/z the distance is w: put the nearer triangle at w = 1, the farther one at w = 2.
           const auto layer = [&](float depth, float red) {
             std::vector<Ramp::Vertex> v = at(depth, red);
@@ -373,7 +374,8 @@ TEST(CourseMethods, NeverFaultOnHostileVertices) {
       for (std::size_t i = 0; i < cases.size(); ++i) {
         SCOPED_TRACE(std::string(softraster::methodName(method)) + " case " + std::to_string(i));
         softraster::PipelineState state = noCulling();
-        state.depth = {true, true, softraster::CompareOp::Less};
+        state.depth.testEnable = state.depth.writeEnable = true;
+        state.depth.compareOp = softraster::CompareOp::Less;
         Target target(24);
         target.framebuffer.clear({0, 0, 0, 0}, 1.0f);
         EXPECT_TRUE(draw(method, target, cases[i], state, {}, affine).ok());
