@@ -3,54 +3,11 @@
 Geometry is laid out in pixels and unprojected through the scenes' pinhole camera (at the origin,
 looking along +z, y down, focal length F), so each scene's layout is easy to reason about.
 Run from scenes/:  python3 tools/make_feature_scenes.py"""
-import json
 import math
 import random
 
-W, H, F = 256, 192, 200.0
-CAMERA = {"type": "pinhole", "position": [0, 0, 0], "focal_length": F, "near": 0.5, "far": 20}
-FRAMEBUFFER = {"width": W, "height": H, "clear_colour": [0.1, 0.1, 0.1, 1]}
-PALETTE = [[0.9, 0.2, 0.2], [0.2, 0.8, 0.2], [0.2, 0.3, 0.9], [0.9, 0.8, 0.2], [0.8, 0.3, 0.8],
-           [0.2, 0.8, 0.8], [0.95, 0.55, 0.15], [0.6, 0.6, 0.6]]
+from scene_layout import FRAMEBUFFER, F, PALETTE, at, ccw, cw, draw, fan, rainbow, scene, strip
 
-
-def at(px, py, z):
-    """World position seen at pixel (px, py) at camera depth z."""
-    return [round((px - W / 2) * z / F, 6), round((py - H / 2) * z / F, 6), round(z, 6)]
-
-
-def ccw(x, y, w, h, z=2.0):
-    """Counter-clockwise on screen (Vulkan's sense, y down): top-left, bottom-left, top-right."""
-    return [at(x, y, z), at(x, y + h, z), at(x + w, y, z)]
-
-
-def cw(x, y, w, h, z=2.0):
-    return [at(x, y, z), at(x + w, y, z), at(x, y + h, z)]
-
-
-def draw(name, positions, colours=None, **state):
-    d = {"name": name, "positions": positions}
-    if colours is not None:
-        d["colours"] = colours
-    d.update(state)
-    return d
-
-
-def rainbow(n, offset=0):
-    return [PALETTE[(i + offset) % len(PALETTE)] for i in range(n)]
-
-
-def scene(filename, description, draws, framebuffer=None, camera=None, tolerance=None):
-    s = {"description": description, "framebuffer": framebuffer or FRAMEBUFFER, "camera": camera or CAMERA,
-         "draws": draws}
-    if tolerance:
-        s["tolerance"] = tolerance
-    with open(filename, "w") as f:
-        json.dump(s, f, indent=1)
-        f.write("\n")
-
-
-# ---- culling: every cull mode with both front faces, a CCW and a CW triangle in each cell ----
 draws = []
 for row, front in enumerate(["counter_clockwise", "clockwise"]):
     for col, cull in enumerate(["none", "front", "back", "front_and_back"]):
@@ -62,21 +19,6 @@ scene("culling.json", "Back-face culling: none, front, back and front_and_back, 
       draws)
 
 # ---- topologies: lists, strips and fans, indexed and not ----
-def strip(x0, y0, step, height, n, z0, z1):
-    pts = []
-    for i in range(n):
-        x = x0 + (i // 2) * step
-        y = y0 + (height if i % 2 else 0)
-        pts.append(at(x, y, z0 + (z1 - z0) * i / (n - 1)))
-    return pts
-
-def fan(cx, cy, r, n, z):
-    pts = [at(cx, cy, z)]
-    for k in range(n):
-        a = 2 * math.pi * k / (n - 1) * 0.9
-        pts.append(at(cx + r * math.cos(a), cy - r * math.sin(a), z + 0.3 * math.sin(3 * a)))
-    return pts
-
 list_pts = ccw(8, 8, 40, 40, 2.5) + ccw(56, 8, 40, 40, 1.5) + cw(104, 8, 40, 40, 2)
 strip_pts = strip(8, 60, 30, 50, 10, 1.5, 3.0)
 fan_pts = fan(200, 48, 40, 9, 2.2)

@@ -2,70 +2,17 @@
 """Writes the topology and primitive-state scenes (issue 13): the negative-height viewport, primitive
 restart, provoking vertex last, stippled lines and the adjacency topologies. Geometry is laid out in
 pixels and unprojected through the pinhole camera (origin, looking along +z, y down, focal length
-F), as make_feature_scenes.py does. Run from scenes/:  python3 tools/make_topology_scenes.py"""
-import json
+F), with the helpers it shares with make_feature_scenes.py (scene_layout.py). Run from scenes/:  python3 tools/make_topology_scenes.py"""
 import math
 
-W, H, F = 256, 192, 200.0
-CAMERA = {"type": "pinhole", "position": [0, 0, 0], "focal_length": F, "near": 0.5, "far": 20}
-FRAMEBUFFER = {"width": W, "height": H, "clear_colour": [0.1, 0.1, 0.1, 1]}
-PALETTE = [[0.9, 0.2, 0.2], [0.2, 0.8, 0.2], [0.2, 0.3, 0.9], [0.9, 0.8, 0.2], [0.8, 0.3, 0.8],
-           [0.2, 0.8, 0.8], [0.95, 0.55, 0.15], [0.6, 0.6, 0.6]]
+from scene_layout import H, W, at, ccw, cw, draw, fan, rainbow, scene, strip
+
 RESTART = "restart"
 FLIPPED = {"x": 0, "y": H, "width": W, "height": -H}
 
 
-def at(px, py, z):
-    """World position seen at pixel (px, py) at camera depth z (with the ordinary viewport)."""
-    return [round((px - W / 2) * z / F, 6), round((py - H / 2) * z / F, 6), round(z, 6)]
-
-
-def ccw(x, y, w, h, z=2.0):
-    """Counter-clockwise on screen (Vulkan's sense, y down) with the ordinary viewport."""
-    return [at(x, y, z), at(x, y + h, z), at(x + w, y, z)]
-
-
-def cw(x, y, w, h, z=2.0):
-    return [at(x, y, z), at(x + w, y, z), at(x, y + h, z)]
-
-
-def strip(x0, y0, step, height, n, z0, z1):
-    pts = []
-    for i in range(n):
-        pts.append(at(x0 + (i // 2) * step, y0 + (height if i % 2 else 0), z0 + (z1 - z0) * i / (n - 1)))
-    return pts
-
-
-def fan(cx, cy, r, n, z, turn=0.9):
-    pts = [at(cx, cy, z)]
-    for k in range(n):
-        a = 2 * math.pi * k / (n - 1) * turn
-        pts.append(at(cx + r * math.cos(a), cy - r * math.sin(a), z + 0.3 * math.sin(3 * a)))
-    return pts
-
-
 def zigzag(x0, y0, dx, dy, n, z0, z1):
     return [at(x0 + dx * k, y0 + (dy if k % 2 else 0) + 0.37 * k, z0 + (z1 - z0) * k / max(1, n - 1)) for k in range(n)]
-
-
-def draw(name, positions, colours=None, **state):
-    d = {"name": name, "positions": positions}
-    if colours is not None:
-        d["colours"] = colours
-    d.update(state)
-    return d
-
-
-def rainbow(n, offset=0):
-    return [PALETTE[(i + offset) % len(PALETTE)] for i in range(n)]
-
-
-def scene(filename, description, draws, framebuffer=None, camera=None):
-    s = {"description": description, "framebuffer": framebuffer or FRAMEBUFFER, "camera": camera or CAMERA,
-         "draws": draws}
-    with open(filename, "w") as f:
-        json.dump(s, f, indent=1)
-        f.write("\n")
 
 
 # ---- 1. the negative-height viewport (GL-style y flip) ----
