@@ -179,6 +179,7 @@ int runSuite(const SuiteCommand& command, const SuiteOutputs& outputs) {
   run.suite = *suite;
   run.shard = shard;
   run.renderArguments = renderArgumentsOf(command.commandLine);
+  run.expectations = expectations;
   const Counts counts = countResults(run.scenes);
 
   bool written = true;

@@ -25,6 +25,31 @@ std::string suiteDifference(const std::vector<SceneEntry>& a, const std::vector<
   return "";
 }
 
+std::string expected(const Expectation* e) {
+  if (!e) return "not listed";
+  std::string text = "expected " + std::string(outcomeName(e->outcome));
+  if (!e->reason.empty()) text += " (" + quoted(e->reason) + ")";
+  return text;
+}
+
+// Why two runs applied different expectations, or empty when they agree on every scene's
+// outcome and reason (line numbers and the file's path may differ).
+std::string expectationsDifference(const std::optional<Expectations>& a, const std::optional<Expectations>& b,
+                                   const std::string& aName) {
+  if (!a && !b) return "";
+  if (!a) return "applied " + quoted(b->file.string()) + ", not none";
+  if (!b) return "applied none, not " + quoted(a->file.string());
+  std::map<std::string, std::pair<const Expectation*, const Expectation*>> both;
+  for (const auto& [name, e] : a->byScene) both[name].first = &e;
+  for (const auto& [name, e] : b->byScene) both[name].second = &e;
+  for (const auto& [name, pair] : both) {
+    const auto& [ea, eb] = pair;
+    if (ea && eb && ea->outcome == eb->outcome && ea->reason == eb->reason) continue;
+    return "scene " + quoted(name) + ": " + expected(eb) + "; in " + aName + ": " + expected(ea);
+  }
+  return "";
+}
+
 }  // namespace
 
 softraster::Result<RunResults> mergeShards(const std::vector<ShardResults>& shards) {
@@ -41,6 +66,7 @@ softraster::Result<RunResults> mergeShards(const std::vector<ShardResults>& shar
   merged.suite = suite;
   merged.suiteName = first.run.suiteName;
   merged.renderArguments = first.run.renderArguments;
+  merged.expectations = first.run.expectations;
   for (const ShardResults& shard : shards) {
     const std::string name = shard.file.string();
     const RunResults& run = shard.run;
@@ -51,6 +77,9 @@ softraster::Result<RunResults> mergeShards(const std::vector<ShardResults>& shar
     if (run.renderArguments != first.run.renderArguments) {
       return Status::error(name + ": other rendering options than " + firstName + ": " + quoted(run.renderArguments) +
                            ", not " + quoted(first.run.renderArguments));
+    }
+    if (const std::string why = expectationsDifference(first.run.expectations, run.expectations, firstName); !why.empty()) {
+      return Status::error(name + ": other expectations than " + firstName + ": " + why);
     }
     for (const SceneResult& r : run.scenes) {
       const auto it = position.find(r.entry.name);

@@ -2,7 +2,7 @@
 // results.json) into the record of one run over the whole suite, as if it had run unsharded:
 // scenes in suite order, shard 1/1. Checked first, each error one line naming the file and the
 // scene: every file was taken over the same suite (the same scene names and paths, in order) with
-// the same rendering options, and together they hold each scene of it exactly once (a scene in two
+// the same rendering options and the same expectations (every entry's outcome and reason), and together they hold each scene of it exactly once (a scene in two
 // files is duplicated, a scene in none missing).
 // The merged run's timing is the shards' (finished: the latest; seconds: the longest, as shards run
 // side by side; jobs: the most); its JUnit file and command line are the caller's to set.

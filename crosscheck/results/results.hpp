@@ -83,6 +83,9 @@ struct RunResults {
   // The run's options that change a render, as `crosscheck compare` takes them ("--softraster-fma
   // separate --set camera.yaw=90"), for the report's reproduce commands; shards must agree on them.
   std::string renderArguments;
+  // The expectations file the run applied (--expectations; none: nullopt), as parsed: shards
+  // must agree on it, or a scene could be expected to fail in one shard and not in another.
+  std::optional<Expectations> expectations;
   std::string commandLine;                  // how this run was started (shown in the report; not in results.json)
   std::filesystem::path junitFile;          // the JUnit file the run wrote (empty: none)
   double seconds = 0;                       // wall time of the whole run

@@ -360,6 +360,33 @@ json deviationsJson(const RunResults& run) {
   return list;
 }
 
+// The expectations file as a run applied it: its path as given and every entry in name order.
+json expectationsJson(const std::optional<Expectations>& expectations) {
+  if (!expectations) return nullptr;
+  json entries = json::array();
+  for (const auto& [name, e] : expectations->byScene) {
+    entries.push_back({{"scene", name}, {"outcome", outcomeName(e.outcome)}, {"reason", e.reason}, {"line", e.line}});
+  }
+  return {{"file", expectations->file.generic_string()}, {"entries", entries}};
+}
+
+std::optional<Expectations> readExpectations(const json& value, const std::string& place) {
+  if (value.is_null()) return std::nullopt;
+  Expectations expectations;
+  expectations.file = readString(field(value, place, "file"), place + "/file");
+  const json& entries = field(value, place, "entries");
+  if (!entries.is_array()) bad(place + "/entries", "expected an array");
+  for (std::size_t i = 0; i < entries.size(); ++i) {
+    const std::string p = place + "/entries/" + std::to_string(i);
+    Expectation e;
+    e.outcome = readOutcome(field(entries[i], p, "outcome"), p + "/outcome");
+    e.reason = readString(field(entries[i], p, "reason"), p + "/reason");
+    e.line = readInteger<int>(field(entries[i], p, "line"), p + "/line");
+    expectations.byScene[readString(field(entries[i], p, "scene"), p + "/scene")] = e;
+  }
+  return expectations;
+}
+
 }  // namespace
 
 json runResultsToJson(const RunResults& run) {
@@ -372,6 +399,7 @@ json runResultsToJson(const RunResults& run) {
           {"suite", suite},
           {"shard", {{"index", run.shard.index}, {"count", run.shard.count}}},
           {"render_arguments", run.renderArguments},
+          {"expectations", expectationsJson(run.expectations)},
           {"junit_file", run.junitFile.generic_string()},
           {"seconds", number(run.seconds)},
           {"jobs", run.jobs},
@@ -403,6 +431,8 @@ softraster::Result<RunResults> runResultsFromJson(const json& value) {
       bad("/shard", "expected 1 <= index <= count");
     }
     run.renderArguments = readString(field(value, "", "render_arguments"), "/render_arguments");
+    // Absent in files written before it was recorded: not known, as no expectations.
+    if (value.contains("expectations")) run.expectations = readExpectations(value["expectations"], "/expectations");
     run.junitFile = readString(field(value, "", "junit_file"), "/junit_file");
     run.seconds = readNumber(field(value, "", "seconds"), "/seconds");
     run.jobs = readInteger<unsigned>(field(value, "", "jobs"), "/jobs");

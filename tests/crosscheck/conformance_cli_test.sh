@@ -327,6 +327,10 @@ case $case_name in
       "${s}1" "$artifacts/other" -o "$artifacts/m"
     check_merge "^crosscheck: $artifacts/known3/results.json: other rendering options than ${s}1/results.json: '--softraster-fma $other_fma', not ''$" \
       "${s}1" "${s}2" "$artifacts/known3" -o "$artifacts/m"
+    # The same options but another expectations file: a scene could be expected to fail in one shard only.
+    run conformance "$fixtures" --shard 2/3 -o "$artifacts/expected2" --expectations "$expectations/all_known.txt"
+    check_merge "^crosscheck: $artifacts/expected2/results.json: other expectations than ${s}1/results.json: applied '$expectations/all_known.txt', not none$" \
+      "${s}1" "$artifacts/expected2" "${s}3" -o "$artifacts/m"
     check_merge "^crosscheck: $artifacts/nothing.json: cannot read results file: file not found$" "$artifacts/nothing.json" -o "$artifacts/m"
     check_merge "^crosscheck: $expectations/report.txt: not JSON: " "$expectations/report.txt" -o "$artifacts/m"
     sed 's/^ "format": 1,$/ "format": 7,/' "${s}1/results.json" >"$artifacts/format7.json"

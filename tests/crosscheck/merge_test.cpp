@@ -92,6 +92,29 @@ TEST(Merge, EachErrorNamesTheFileAndTheScene) {
   ShardResults options = two;
   options.run.renderArguments = "--softraster-fma separate";
   EXPECT_EQ(mergeError({one, options}), "two.json: other rendering options than one.json: '--softraster-fma separate', not ''");
+  // Expectations: the same entries (line numbers and path aside), or one line naming the first scene that differs.
+  Expectations known;
+  known.file = "scenes/expectations.txt";
+  known.byScene["c"] = {Outcome::Fail, "lavapipe rounds differently", 3};
+  ShardResults withExpectations = one, sameExpectations = two;
+  withExpectations.run.expectations = known;
+  sameExpectations.run.expectations = known;
+  sameExpectations.run.expectations->file = "elsewhere/expectations.txt";
+  sameExpectations.run.expectations->byScene["c"].line = 7;
+  const auto agreed = mergeShards({withExpectations, sameExpectations});
+  ASSERT_TRUE(agreed) << agreed.error();
+  ASSERT_TRUE(agreed->expectations);
+  EXPECT_EQ(agreed->expectations->file, "scenes/expectations.txt");
+  EXPECT_EQ(mergeError({withExpectations, two}), "two.json: other expectations than one.json: applied none, not 'scenes/expectations.txt'");
+  EXPECT_EQ(mergeError({one, sameExpectations}), "two.json: other expectations than one.json: applied 'elsewhere/expectations.txt', not none");
+  ShardResults skipping = sameExpectations;
+  skipping.run.expectations->byScene["c"].outcome = Outcome::Skip;
+  EXPECT_EQ(mergeError({withExpectations, skipping}),
+            "two.json: other expectations than one.json: scene 'c': expected Skip ('lavapipe rounds differently'); "
+            "in one.json: expected Fail ('lavapipe rounds differently')");
+  ShardResults extra = sameExpectations;
+  extra.run.expectations->byScene["a"] = {Outcome::Crash, "", 1};
+  EXPECT_EQ(mergeError({withExpectations, extra}), "two.json: other expectations than one.json: scene 'a': expected Crash; in one.json: not listed");
   ShardResults stray = two;
   stray.run.scenes.push_back(scene("z", Outcome::Pass));
   EXPECT_EQ(mergeError({one, stray}), "two.json: scene 'z' is not in its suite");
