@@ -25,7 +25,7 @@ if [ "$job" = tests ]; then
     libgtest-dev                            # the unit and cross-check tests
     clang                                   # an outside consumer built with Clang too
     chromium libxml2-utils bsdutils         # the report in a browser, JUnit (xmllint), a terminal (script)
-    python3                                 # the bench JSON check; the scene generators in scenes/tools/
+    python3 python3-yaml                    # the bench JSON check, the README's CI recipe run; scenes/tools/
     xvfb xauth                              # crosscheck view's window under a virtual X server (xvfb-run)
   )
 fi
