@@ -23,6 +23,7 @@ packages=(
 if [ "$job" = tests ]; then
   packages+=(
     libgtest-dev                            # the unit and cross-check tests
+    libbenchmark-dev                        # softraster_benchmarks (benchmarks/), built to keep it compiling
     clang                                   # an outside consumer built with Clang too
     chromium libxml2-utils bsdutils         # the report in a browser, JUnit (xmllint), a terminal (script)
     python3 python3-yaml                    # the bench JSON check, the README's CI recipe run; scenes/tools/

@@ -1,0 +1,128 @@
+// softraster's draw loop timed with Google Benchmark, one translation unit with one shading model
+// (vertex_color, D32_SFLOAT), so it builds in a minute where crosscheck bench needs every model.
+// For profiling and tuning the exact method's fast path between full benches: frames of
+// the shapes crosscheck bench's scenes stress (a full-screen quad: pixels; spheres of 100k and 1M
+// triangles: the front end and the band queue; stacked quads: overdraw), at 1 and 2 threads.
+//   softraster_benchmarks --benchmark_filter=Sphere --benchmark_repetitions=5
+// Deliberately not a replacement for `crosscheck bench`: no lavapipe beside it, no agreement
+// check; times are the machine's (shared and noisy: compare medians, side by side). "CPU" is the
+// whole process's (every thread's), so a thread count's overhead shows even on a loaded machine.
+#include "vertex_color.hpp"
+
+#include <softraster/pipeline.hpp>
+
+#include <benchmark/benchmark.h>
+
+#include <cmath>
+#include <cstdint>
+#include <numbers>
+#include <vector>
+
+namespace {
+
+using Shader = shaders::VertexColor;
+constexpr std::uint32_t kWidth = 1920, kHeight = 1080;
+
+struct Mesh {
+  std::vector<Shader::Vertex> vertices;
+  std::vector<std::uint32_t> indices;
+};
+
+// A sphere of about `triangles` triangles in clip space (x, y in [-0.9, 0.9] scaled to the
+// aspect ratio, z in [0.1, 0.9]), latitude by longitude, coloured by position.
+Mesh sphere(std::uint32_t triangles) {
+  const auto rings = static_cast<std::uint32_t>(std::sqrt(triangles / 4.0));
+  const std::uint32_t segments = 2 * rings;
+  Mesh m;
+  for (std::uint32_t r = 0; r <= rings; ++r) {
+    const double theta = std::numbers::pi * r / rings;
+    for (std::uint32_t s = 0; s <= segments; ++s) {
+      const double phi = 2 * std::numbers::pi * s / segments;
+      const float x = static_cast<float>(std::sin(theta) * std::cos(phi)), y = static_cast<float>(std::cos(theta));
+      const float z = static_cast<float>(std::sin(theta) * std::sin(phi));
+      m.vertices.push_back({{0.9f * x * kHeight / kWidth, 0.9f * y, 0.5f + 0.4f * z},
+                            {0.5f + 0.5f * x, 0.5f + 0.5f * y, 0.5f + 0.5f * z, 1.0f}});
+    }
+  }
+  for (std::uint32_t r = 0; r < rings; ++r) {
+    for (std::uint32_t s = 0; s < segments; ++s) {
+      const std::uint32_t a = r * (segments + 1) + s, b = a + segments + 1;
+      m.indices.insert(m.indices.end(), {a, b, a + 1, a + 1, b, b + 1});
+    }
+  }
+  return m;
+}
+
+// `count` full-screen quads, back to front (z from 0.9 down) or front to back.
+Mesh quads(std::uint32_t count, bool backToFront) {
+  Mesh m;
+  for (std::uint32_t q = 0; q < count; ++q) {
+    const float z = backToFront ? 0.9f - 0.08f * q : 0.1f + 0.08f * q;
+    const float c = static_cast<float>(q) / static_cast<float>(count);
+    const auto base = static_cast<std::uint32_t>(m.vertices.size());
+    for (const auto& [x, y] : {std::pair{-1.0f, -1.0f}, {1.0f, -1.0f}, {-1.0f, 1.0f}, {1.0f, 1.0f}}) {
+      m.vertices.push_back({{x, y, z}, {c, 0.5f * (x + 1.0f), 0.5f * (y + 1.0f), 1.0f}});
+    }
+    m.indices.insert(m.indices.end(), {base, base + 2, base + 1, base + 1, base + 2, base + 3});
+  }
+  return m;
+}
+
+// One frame per iteration: clear, then the mesh as one indexed draw (depth LESS, no culling).
+void drawFrames(benchmark::State& bench, const Mesh& mesh) {
+  softraster::ContextOptions options;
+  options.threads = static_cast<unsigned>(bench.range(0));
+  const softraster::Context context(options);
+  auto framebuffer = softraster::Framebuffer::create(kWidth, kHeight);
+  if (!framebuffer) {
+    bench.SkipWithError(framebuffer.error().c_str());
+    return;
+  }
+  softraster::PipelineState state;
+  state.rasterization.cullMode = softraster::CullMode::None;
+  Shader::Uniforms uniforms;
+  uniforms.modelViewProjection = softraster::Mat4::identity();
+  for (auto _ : bench) {
+    framebuffer->clear({0, 0, 0, 1}, 1.0f);
+    const softraster::Status status =
+        context.drawIndexed<Shader, softraster::DepthFormat::D32Sfloat>(state, uniforms, mesh.vertices, mesh.indices, *framebuffer);
+    if (!status) {
+      bench.SkipWithError(status.message().c_str());
+      return;
+    }
+    benchmark::DoNotOptimize(framebuffer->colour().data());
+    benchmark::ClobberMemory();
+  }
+  bench.counters["triangles"] = static_cast<double>(mesh.indices.size() / 3);
+}
+
+void Sphere100k(benchmark::State& bench) {
+  static const Mesh mesh = sphere(100'000);
+  drawFrames(bench, mesh);
+}
+void Sphere1M(benchmark::State& bench) {
+  static const Mesh mesh = sphere(1'000'000);
+  drawFrames(bench, mesh);
+}
+void FullScreenQuad(benchmark::State& bench) {
+  static const Mesh mesh = quads(1, true);
+  drawFrames(bench, mesh);
+}
+void QuadStackBackToFront(benchmark::State& bench) {
+  static const Mesh mesh = quads(10, true);
+  drawFrames(bench, mesh);
+}
+void QuadStackFrontToBack(benchmark::State& bench) {
+  static const Mesh mesh = quads(10, false);
+  drawFrames(bench, mesh);
+}
+
+}  // namespace
+
+BENCHMARK(Sphere100k)->ArgName("threads")->Arg(1)->Arg(2)->Unit(benchmark::kMillisecond)->MeasureProcessCPUTime()->UseRealTime();
+BENCHMARK(Sphere1M)->ArgName("threads")->Arg(1)->Arg(2)->Unit(benchmark::kMillisecond)->MeasureProcessCPUTime()->UseRealTime();
+BENCHMARK(FullScreenQuad)->ArgName("threads")->Arg(1)->Arg(2)->Unit(benchmark::kMillisecond)->MeasureProcessCPUTime()->UseRealTime();
+BENCHMARK(QuadStackBackToFront)->ArgName("threads")->Arg(1)->Arg(2)->Unit(benchmark::kMillisecond)->MeasureProcessCPUTime()->UseRealTime();
+BENCHMARK(QuadStackFrontToBack)->ArgName("threads")->Arg(1)->Arg(2)->Unit(benchmark::kMillisecond)->MeasureProcessCPUTime()->UseRealTime();
+
+BENCHMARK_MAIN();
