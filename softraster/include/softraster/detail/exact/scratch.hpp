@@ -18,7 +18,7 @@
 namespace softraster::detail {
 
 // CourseRows: the course's scanline method's per-row left/right arrays (course/scanline.hpp).
-enum class ScratchSlot : std::uint8_t { IndexSequence, ShadedVertices, Triangles, Lines, BandRecords, BandBins, CourseRows };
+enum class ScratchSlot : std::uint8_t { IndexSequence, ShadedVertices, Triangles, Lines, BandLists, CourseRows };
 
 class DrawScratch {
  public:

@@ -42,10 +42,25 @@ template <class Stage, class Uniforms, int N>
 class BandQueue {
   enum class Kind : std::uint8_t { Triangle, Quad, SampledTriangle };
   struct Record {
+    // Built in place from the set-up primitive, each field written once (no zeroing first); a
+    // triangle leaves edges[3] unset, and nothing reads it.
+    template <int E>
+    Record(Kind k, const EdgeFunction (&e)[E], const PixelRect& b, const TriangleInterpolants<N>& t)
+        : kind(k), bounds(b), interpolants(t) {
+      std::copy(e, e + E, edges);
+    }
     Kind kind;
     EdgeFunction edges[4];
     PixelRect bounds;
     TriangleInterpolants<N> interpolants;
+  };
+  // One front-end worker's records and their bins (per band: indices into records), on cache
+  // lines of its own: the vectors' end pointers move with every record, and two workers
+  // recording at once must not write the same line (false sharing cost more than the second
+  // thread gained on a million small triangles).
+  struct alignas(64) List {
+    std::vector<Record> records;
+    std::vector<std::vector<std::uint32_t>> bins;
   };
 
  public:
@@ -66,16 +81,17 @@ class BandQueue {
         inverseZ_(inverseZ),
         deviations_(deviations),
         bands_(region.empty() ? 0 : (region.y1 - region.y0) / kBandRows + 1),
-        lists_(scratch.vector<std::vector<Record>>(ScratchSlot::BandRecords)),
-        bins_(scratch.vector<std::vector<std::uint32_t>>(ScratchSlot::BandBins)) {
+        lists_(scratch.vector<List>(ScratchSlot::BandLists)) {
     if (pool_ == nullptr) {
       direct_.emplace(state, uniforms, framebuffer, viewport, region, inverseZ, deviations);
       return;
     }
     lists_.resize(workers());
-    for (auto& list : lists_) list.clear();
-    bins_.resize(workers() * static_cast<std::size_t>(bands_));
-    for (auto& bin : bins_) bin.clear();
+    for (List& list : lists_) {
+      list.records.clear();
+      list.bins.resize(static_cast<std::size_t>(bands_));
+      for (auto& bin : list.bins) bin.clear();
+    }
   }
 
   // Where one front-end worker's set-up primitives go: the same calls as a fragment stage.
@@ -116,7 +132,7 @@ class BandQueue {
   void endRound() {
     if (direct_) return;
     bool empty = true;
-    for (const auto& list : lists_) empty = empty && list.empty();
+    for (const List& list : lists_) empty = empty && list.records.empty();
     if (!empty || framebuffer_.clearPending()) flush();
   }
 
@@ -126,16 +142,12 @@ class BandQueue {
               const TriangleInterpolants<N>& t) {
     const PixelRect box = intersect(bounds, region_);
     if (box.empty()) return;  // no band would draw it
-    std::vector<Record>& records = lists_[list];
+    List& l = lists_[list];
+    std::vector<Record>& records = l.records;
     const auto index = static_cast<std::uint32_t>(records.size());
-    Record& r = records.emplace_back();
-    r.kind = kind;
-    std::copy(edges, edges + E, r.edges);
-    r.bounds = bounds;
-    r.interpolants = t;
+    records.emplace_back(kind, edges, bounds, t);
     const int first = (box.y0 - region_.y0) / kBandRows, last = (box.y1 - region_.y0) / kBandRows;
-    std::vector<std::uint32_t>* bins = bins_.data() + static_cast<std::size_t>(list) * bands_;
-    for (int b = first; b <= last; ++b) bins[b].push_back(index);
+    for (int b = first; b <= last; ++b) l.bins[static_cast<std::size_t>(b)].push_back(index);
   }
 
   void flush() {
@@ -151,8 +163,10 @@ class BandQueue {
       }
       drawBand(band);
     });
-    for (auto& list : lists_) list.clear();
-    for (auto& bin : bins_) bin.clear();
+    for (List& list : lists_) {
+      list.records.clear();
+      for (auto& bin : list.bins) bin.clear();
+    }
   }
 
   // The draw region's rows of one band.
@@ -170,11 +184,11 @@ class BandQueue {
 
   void replay(std::size_t band) const {
     std::optional<Stage> stage;  // made when the band has something to draw
-    for (std::size_t list = 0; list < lists_.size(); ++list) {
-      const std::vector<std::uint32_t>& bin = bins_[list * static_cast<std::size_t>(bands_) + band];
+    for (const List& list : lists_) {
+      const std::vector<std::uint32_t>& bin = list.bins[band];
       if (bin.empty()) continue;
       if (!stage) stage.emplace(state_, uniforms_, framebuffer_, viewport_, bandRows(band), inverseZ_, deviations_);
-      const std::vector<Record>& records = lists_[list];
+      const std::vector<Record>& records = list.records;
       for (const std::uint32_t i : bin) {
         const Record& r = records[i];
         const EdgeFunction triangle[3] = {r.edges[0], r.edges[1], r.edges[2]};
@@ -197,8 +211,7 @@ class BandQueue {
   Deviations deviations_;
   int bands_;
   std::optional<Stage> direct_;
-  std::vector<std::vector<Record>>& lists_;        // the Context's scratch, kept between draws: records per list
-  std::vector<std::vector<std::uint32_t>>& bins_;  // bins_[list * bands_ + band]: that list's records in the band
+  std::vector<List>& lists_;  // the Context's scratch, kept between draws: one per front-end worker
 };
 
 }  // namespace softraster::detail
