@@ -143,6 +143,34 @@ TEST(Stencil, LinesAndPointsOfUnfilledPolygonsTakeTheFrontState) {
   EXPECT_GT(count(fill, 0x11), 1000u);
 }
 
+// The same scene with softraster following the spec (Deviations::Spec): the edges and corners of
+// the back-facing unfilled polygons take the back state (0x22) where lavapipe writes 0x11, on the
+// fast and the scalar path alike, and nothing else changes (the line and point lists stay front).
+TEST(Stencil, SpecModeGivesUnfilledBackFacingPolygonsTheBackState) {
+  const crosscheck::Frame driver = renderAgreeing("stencil_polygon_modes", {});
+  auto scene = crosscheck::loadScene(agreement::kScenes / "stencil_polygon_modes.json", {});
+  ASSERT_TRUE(scene) << scene.error();
+  for (softraster::Method method : {softraster::Method::Exact, softraster::Method::ExactScalar}) {
+    softraster::ContextOptions options;
+    options.method = method;
+    options.deviations = softraster::Deviations::Spec;
+    auto spec = crosscheck::renderSoftraster(*scene, options);
+    ASSERT_TRUE(spec) << spec.error();
+    ASSERT_EQ(spec->stencil.size(), driver.stencil.size());
+    std::size_t changed = 0;
+    for (std::size_t i = 0; i < driver.stencil.size(); ++i) {
+      if (spec->stencil[i] == driver.stencil[i]) continue;
+      ++changed;
+      EXPECT_EQ(driver.stencil[i], 0x11) << "pixel " << i;
+      EXPECT_EQ(spec->stencil[i], 0x22) << "pixel " << i;
+    }
+    EXPECT_GT(changed, 100u);
+    EXPECT_EQ(count(*spec, 0x22), changed);
+    EXPECT_GT(count(*spec, 0x11), 300u) << "the front-facing polygons' and the lists' lines and points";
+    EXPECT_NE(spec->rgba, driver.rgba) << "the scene shows its stencil values as colour";
+  }
+}
+
 TEST(Stencil, SceneErrorsNameTheFileAndTheRule) {
   const std::string s = "stencil_ops.json";
   expectSceneError({"framebuffer.depth_format=\"d32_sfloat\""}, s,

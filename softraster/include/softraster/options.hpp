@@ -78,9 +78,11 @@ constexpr std::optional<Method> methodFromName(std::string_view name) {
 // Where lavapipe provably deviates from the Vulkan specification (docs/lavapipe-rules.md,
 // "Deviations"), whose behaviour softraster follows:
 //   Driver: lavapipe's, so cross-checks agree bit for bit (the default);
-//   Spec:   the specification's words. The one known deviation: with 4x MSAA lavapipe's scissor
+//   Spec:   the specification's words. The known deviations: with 4x MSAA lavapipe's scissor
 //           planes let samples through in the column left of and the row above the scissor
-//           rectangle; the spec's scissor test discards every sample of those fragments.
+//           rectangle, where the spec's scissor test discards every sample of those fragments;
+//           and lavapipe gives the lines and points of a back-facing polygon drawn in polygon
+//           mode line or point the front stencil state, where the spec gives them the back one.
 enum class Deviations : std::uint8_t { Driver, Spec };
 
 // A Deviations value's name on the command line and in results ("driver", "spec").

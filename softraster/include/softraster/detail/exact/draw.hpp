@@ -78,6 +78,7 @@ class ExactDraw {
         transform_(makeViewportTransform(viewport_)),
         region_(drawRegion(state.scissor, viewport_, framebuffer.width(), framebuffer.height())),
         multisample_(framebuffer.samples() == 4),
+        specFacing_(options.deviations == Deviations::Spec),
         // With 4x MSAA the fragment stage may also touch the column and row lavapipe's scissor
         // planes reach (MsaaRegionEdges); the bands (fast/bands.hpp) cover them too.
         fragments_(pool, scratch, state, uniforms, framebuffer, viewport_,
@@ -123,6 +124,9 @@ class ExactDraw {
   struct Worker {
     typename Queue::Recorder sink;
     ClippedPolygon<N> polygon;
+    // The stencil face of the lines and points being drawn: front, but for an unfilled
+    // back-facing polygon's in Deviations::Spec (lavapipe gives them the front face).
+    bool facingFront = true;
   };
 
   // Primitives per round of the parallel front end (the top comment), and the fewest a draw
@@ -139,7 +143,7 @@ class ExactDraw {
   void forEachRange(std::size_t count, std::size_t align, bool oneRange, Range&& range) {
     ThreadPool* pool = fragments_.pool();
     if (pool == nullptr || count < kParallelPrimitives || oneRange) {
-      Worker worker{fragments_.recorder(0), {}};
+      Worker worker{fragments_.recorder(0), {}, true};
       range(worker, 0, count);
       return;
     }
@@ -150,7 +154,7 @@ class ExactDraw {
       const std::size_t per = ((end - start + workers - 1) / workers + align - 1) / align * align;
       pool->run(workers, [&](std::size_t k) {
         const std::size_t begin = std::min(end, start + k * per);
-        Worker worker{fragments_.recorder(static_cast<unsigned>(k)), {}};
+        Worker worker{fragments_.recorder(static_cast<unsigned>(k)), {}, true};
         range(worker, begin, std::min(end, begin + per));
       });
       fragments_.endRound();
@@ -322,10 +326,12 @@ class ExactDraw {
     }
     Vertex biased[3] = {a, b, c};
     if (rs_.depthBias.enable) offsetUnfilledTriangle(biased[0], biased[1], biased[2], rs_.depthBias, Format);
+    worker.facingFront = !specFacing_ || facesFrontInPipeline(a.window, b.window, c.window, rs_.frontFace);
     drawUnfilledTriangle(
         rs_.polygonMode, biased[0], biased[1], biased[2], edgeFlags, kInterpolation,
         [&](const Vertex& p, const Vertex& q) { drawLine(worker, p, q); },
         [&](const Vertex& p) { drawPoint(worker, p); }, provokingLast_);
+    worker.facingFront = true;
   }
 
   // Snapping, the fixed-point cull, setup and fragments of one filled triangle; or the course
@@ -375,13 +381,16 @@ class ExactDraw {
                           ? setupBresenhamLine(a.window, b.window, rs_.lineWidth)
                           : setupRectangularLine(a.window, b.window, rs_.lineWidth);
     if (!line) return;
-    worker.sink.shadePixels(line->quad.edges, line->quad.bounds,
-                            setupLineInterpolants(a, b, *line, kInterpolation, provokingLast_));
+    TriangleInterpolants<N> interpolants = setupLineInterpolants(a, b, *line, kInterpolation, provokingLast_);
+    interpolants.frontFacing = worker.facingFront;
+    worker.sink.shadePixels(line->quad.edges, line->quad.bounds, interpolants);
   }
 
   void drawPointHere(Worker& worker, const Vertex& v) {
     const QuadEdges quad = setupPoint(v.window, v.pointSize);
-    worker.sink.shadePixels(quad.edges, quad.bounds, setupPointInterpolants(v, kInterpolation));
+    TriangleInterpolants<N> interpolants = setupPointInterpolants(v, kInterpolation);
+    interpolants.frontFacing = worker.facingFront;
+    worker.sink.shadePixels(quad.edges, quad.bounds, interpolants);
   }
 
   // Constant for the draw.
@@ -393,6 +402,7 @@ class ExactDraw {
   PixelRect region_;
   bool multisample_;
   bool provokingLast_ = rs_.provokingVertex == ProvokingVertex::Last;
+  bool specFacing_;  // Deviations::Spec: an unfilled polygon's lines and points take its stencil face
   Queue fragments_;  // the stage, on one thread or in bands
   WindingFilter winding_{true, true};
   // Scratch: the Context's, reused across draws.

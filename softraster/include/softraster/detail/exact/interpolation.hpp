@@ -27,7 +27,8 @@ struct TriangleInterpolants {
   PlaneEquation oneOverW;
   std::array<PlaneEquation, N> varyings;
   // Not an interpolant, but the primitive's one other per-primitive value the fragment stage
-  // reads: which stencil face applies (set by the draw loop; lines and points stay front).
+  // reads: which stencil face applies (set by the draw loop; lines and points are front, but
+  // an unfilled back-facing polygon's with Deviations::Spec).
   bool frontFacing = true;
 };
 
