@@ -73,9 +73,9 @@ TEST(MsaaSamples, ADifferenceInOneSampleOtherThanZeroIsCaught) {
   const std::size_t k = sampleAt(*soft, 30, 8, 2);  // row 8: sample 0 is clear, sample 2 is drawn
   {
     crosscheck::Frame f = *soft;
-    f.sampleRgba[4 * k + 1] ^= 1;  // one step of green in sample 2; the resolve is left alone
+    f.sampleRgba[4 * k + 1] ^= 0x40;  // 64 steps of green in sample 2; the resolve is left alone
     const crosscheck::Comparison c = crosscheck::compareFrames(f, *reference, *scene);
-    EXPECT_EQ(c.colourMaxDelta[1], 1);
+    EXPECT_EQ(c.colourMaxDelta[1], 64);
     EXPECT_EQ(c.resolvedColourMaxDelta[1], 0);
     EXPECT_EQ(c.colourPixelsOver, 1u);
     EXPECT_FALSE(c.passed());
