@@ -1,6 +1,7 @@
 // vkref frames: what a caller hands the Renderer (a FrameRequest of DrawCalls, each with its
 // ShaderProgram and softraster::PipelineState), what it gets back (FrameImages: colour, depth as
-// floats, depth as stored and stencil; with MSAA also every sample) and the handle of a frame prepared once and submitted many times.
+// floats, depth as stored and stencil; with MSAA also every sample) and the handle of a frame
+// prepared once and submitted many times.
 // A frame may render depth passes first (shadow maps) whose depth its draws then sample.
 // Deliberately plain values: no Vulkan type appears here, and nothing in a request is kept after
 // Renderer::prepare returns (vertices, indices and uniform blocks are uploaded, push constants recorded).
