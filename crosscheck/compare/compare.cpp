@@ -30,10 +30,35 @@ ClearValues clearValues(const Scene& scene) {
   return {clearColourBytes(scene), softraster::depthClearValue(scene.depthFormat, scene.clearDepth), scene.clearStencil};
 }
 
-bool covered(const Frame& f, std::size_t i, const ClearValues& clear) {
-  return f.depthStorage[i] != clear.depth || (!f.stencil.empty() && f.stencil[i] != clear.stencil) ||
-         !std::equal(clear.colour.begin(), clear.colour.end(), f.rgba.begin() + static_cast<std::ptrdiff_t>(4 * i));
+// A frame's samples: with MSAA every sample as stored before the resolve, else the pixels (one
+// sample each). Sample s of pixel i is at i * samples + s.
+struct Samples {
+  const std::uint8_t* rgba;
+  const std::uint32_t* depth;
+  const std::uint8_t* stencil;  // null without a stencil aspect
+  std::uint32_t samples;
+};
+
+Samples samplesOf(const Frame& f) {
+  if (f.samples > 1)
+    return {f.sampleRgba.data(), f.sampleDepthStorage.data(), f.sampleStencil.empty() ? nullptr : f.sampleStencil.data(),
+            f.samples};
+  return {f.rgba.data(), f.depthStorage.data(), f.stencil.empty() ? nullptr : f.stencil.data(), 1};
 }
+
+bool sampleCovered(const Samples& f, std::size_t k, const ClearValues& clear) {
+  return f.depth[k] != clear.depth || (f.stencil && f.stencil[k] != clear.stencil) ||
+         !std::equal(clear.colour.begin(), clear.colour.end(), f.rgba + 4 * k);
+}
+
+// Whether each sample of pixel i is covered, one bit per sample.
+unsigned coverageMask(const Samples& f, std::size_t i, const ClearValues& clear) {
+  unsigned mask = 0;
+  for (std::uint32_t s = 0; s < f.samples; ++s) mask |= unsigned{sampleCovered(f, i * f.samples + s, clear)} << s;
+  return mask;
+}
+
+bool covered(const Frame& f, std::size_t i, const ClearValues& clear) { return coverageMask(samplesOf(f), i, clear) != 0; }
 
 // |a - b| of two stored depths, in depth units ([0, 1] range): whole steps of 1/(2^n - 1) for
 // UNORM formats, the float difference for D32_SFLOAT (infinite where only one side is NaN).
@@ -57,26 +82,45 @@ Comparison compareFrames(const Frame& a, const Frame& b, const Scene& scene) {
     c.failures.push_back("image sizes or depth formats differ");
     return c;
   }
+  if (a.samples != b.samples || a.sampleRgba.size() != b.sampleRgba.size() ||
+      a.sampleStencil.size() != b.sampleStencil.size()) {
+    c.failures.push_back("sample counts differ");
+    return c;
+  }
+  const Samples sa = samplesOf(a), sb = samplesOf(b);
+  const std::uint32_t samples = sa.samples;
+  c.samples = samples;
   const Tolerance& tol = scene.tolerance;
   const ClearValues clear = clearValues(scene);
   c.pixels = static_cast<std::uint64_t>(a.width) * a.height;
   std::array<std::uint64_t, 4> sums{};
   double squaredErrorRgb = 0;
   for (std::size_t i = 0; i < c.pixels; ++i) {
-    if (covered(a, i, clear) != covered(b, i, clear)) ++c.coverageMismatches;
-    if (!a.stencil.empty() && a.stencil[i] != b.stencil[i]) ++c.stencilMismatches;
-    bool over = false;
-    for (int ch = 0; ch < 4; ++ch) {
+    if (coverageMask(sa, i, clear) != coverageMask(sb, i, clear)) ++c.coverageMismatches;
+    bool over = false, depthOver = false, stencilDiffers = false;
+    for (std::uint32_t s = 0; s < samples; ++s) {  // every sample (the pixel itself with one)
+      const std::size_t k = i * samples + s;
+      stencilDiffers = stencilDiffers || (sa.stencil && sa.stencil[k] != sb.stencil[k]);
+      for (int ch = 0; ch < 4; ++ch) {
+        const int d = std::abs(int{sa.rgba[4 * k + ch]} - int{sb.rgba[4 * k + ch]});
+        c.colourMaxDelta[ch] = std::max(c.colourMaxDelta[ch], d);
+        over = over || d > tol.colourThreshold;
+      }
+      const double dz = depthDelta(sa.depth[k], sb.depth[k], a.depthFormat);
+      c.depthMaxDelta = std::max(c.depthMaxDelta, dz);
+      depthOver = depthOver || dz > tol.depthThreshold;
+    }
+    for (int ch = 0; ch < 4; ++ch) {  // the resolved colour (the pixel's one sample without MSAA)
       const int d = std::abs(int{a.rgba[4 * i + ch]} - int{b.rgba[4 * i + ch]});
+      c.resolvedColourMaxDelta[ch] = std::max(c.resolvedColourMaxDelta[ch], d);
       c.colourMaxDelta[ch] = std::max(c.colourMaxDelta[ch], d);
       sums[ch] += static_cast<std::uint64_t>(d);
       if (ch < 3) squaredErrorRgb += double(d) * d;
       over = over || d > tol.colourThreshold;
     }
     if (over) ++c.colourPixelsOver;
-    const double dz = depthDelta(a.depthStorage[i], b.depthStorage[i], a.depthFormat);
-    c.depthMaxDelta = std::max(c.depthMaxDelta, dz);
-    if (dz > tol.depthThreshold) ++c.depthPixelsOver;
+    if (depthOver) ++c.depthPixelsOver;
+    if (stencilDiffers) ++c.stencilMismatches;
   }
   for (int ch = 0; ch < 4; ++ch) c.colourMeanDelta[ch] = double(sums[ch]) / double(c.pixels);
   const double mse = squaredErrorRgb / (3.0 * double(c.pixels));

@@ -1,9 +1,11 @@
 // Image comparison of two Frames of one scene, within the scene's Tolerance: the metrics
 // (metrics.hpp) and the two difference heatmaps.
-// Coverage: a pixel is covered in a frame when its colour, depth or stencil differs from the
-// clear values; a coverage mismatch is a pixel covered in one frame only. Stencil (with a
-// depth/stencil format) is compared exactly: a stencil mismatch is a pixel whose stored stencil
-// differs. (A fragment that writes
+// Coverage: a sample is covered in a frame when its colour, depth or stencil differs from the
+// clear values; a coverage mismatch is a pixel whose samples are not covered alike in both frames.
+// Stencil (with a depth/stencil format) is compared exactly: a stencil mismatch is a pixel whose
+// stored stencil differs in any sample. With MSAA every sample is compared (colour, depth,
+// stencil, coverage) and the resolved colour too (metrics.hpp says which metric is which);
+// without, a pixel is its one sample. (A fragment that writes
 // exactly the clear colour with depth writes off is invisible to this test.)
 // Deliberately no perceptual metric and no position-deviation tolerance: the exact method is
 // held to the bit, and edge differences are counted, not forgiven.
@@ -21,7 +23,7 @@ namespace crosscheck {
 // Measures the differences and checks them against scene.tolerance (limitFailures).
 Comparison compareFrames(const Frame& result, const Frame& reference, const Scene& scene);
 
-// Pixels covered in a frame (colour, depth or stencil differs from the scene's clear values).
+// Pixels covered in a frame (in any sample, colour, depth or stencil differs from the scene's clear values).
 std::uint64_t coveredPixels(const Frame& frame, const Scene& scene);
 
 // RGBA8 heatmap of the difference: black where equal, blue up to the colour threshold, red to

@@ -13,16 +13,21 @@
 
 namespace crosscheck {
 
+// With MSAA every count is over pixels, a pixel counting when any of its samples differs, and
+// every maximum is over every sample (colour: also over the resolved colour); the colour mean and
+// PSNR are of the resolved colour. `samples` says how many samples per pixel were compared.
 struct Comparison {
   std::uint64_t pixels = 0;
+  std::uint32_t samples = 1;                 // samples per pixel compared (1, or 4 with MSAA: every one)
   std::uint64_t coverageMismatches = 0;
   std::array<int, 4> colourMaxDelta{};       // per channel R, G, B, A, in 8-bit steps
-  std::array<double, 4> colourMeanDelta{};   // per channel, over all pixels
+  std::array<int, 4> resolvedColourMaxDelta{};  // per channel, of the resolved colour alone (= colourMaxDelta with 1 sample)
+  std::array<double, 4> colourMeanDelta{};   // per channel, over all pixels (resolved colour)
   std::uint64_t colourPixelsOver = 0;        // any channel over the colour threshold
   double psnr = 0;                           // over RGB; +inf when identical
   double depthMaxDelta = 0;
   std::uint64_t depthPixelsOver = 0;
-  std::uint64_t stencilMismatches = 0;       // pixels whose stored stencil differs (no tolerance: exact)
+  std::uint64_t stencilMismatches = 0;       // pixels whose stored stencil differs in any sample (no tolerance: exact)
   std::vector<std::string> failures;         // each "metric value > limit"; empty when passed
   bool passed() const { return failures.empty(); }
 };

@@ -30,9 +30,16 @@ void appendScene(std::string& out, const SceneResult& r) {
   const Comparison& c = *r.comparison;
   const Tolerance& t = r.tolerance;
   append(out, "%s: %s\n", path.c_str(), std::string(outcomeName(r.outcome)).c_str());
+  if (c.samples > 1) {
+    append(out, "  samples compared     %u per pixel (every sample; colour also resolved)\n", c.samples);
+  }
   append(out, "  coverage mismatches  %llu (allowed %llu)\n", count(c.coverageMismatches), count(t.maxCoverageMismatches));
   append(out, "  colour max %s RGBA  %d %d %d %d (threshold %d)\n", kAbsDelta, c.colourMaxDelta[0], c.colourMaxDelta[1],
          c.colourMaxDelta[2], c.colourMaxDelta[3], t.colourThreshold);
+  if (c.samples > 1) {
+    append(out, "  resolved max %s RGBA %d %d %d %d\n", kAbsDelta, c.resolvedColourMaxDelta[0], c.resolvedColourMaxDelta[1],
+           c.resolvedColourMaxDelta[2], c.resolvedColourMaxDelta[3]);
+  }
   append(out, "  colour mean %s RGBA %.6f %.6f %.6f %.6f\n", kAbsDelta, c.colourMeanDelta[0], c.colourMeanDelta[1],
          c.colourMeanDelta[2], c.colourMeanDelta[3]);
   append(out, "  colour pixels over   %llu (allowed %llu)\n", count(c.colourPixelsOver), count(t.maxColourPixelsOver));

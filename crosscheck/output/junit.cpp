@@ -33,10 +33,16 @@ std::string systemOut(const SceneResult& r) {
   if (r.comparison) {
     const Comparison& c = *r.comparison;
     const Tolerance& t = r.tolerance;
+    if (c.samples > 1) out += "samples_compared: " + std::to_string(c.samples) + " per pixel (every sample; colour also resolved)\n";
     out += "coverage_mismatches: " + std::to_string(c.coverageMismatches) + " (allowed " + std::to_string(t.maxCoverageMismatches) + ")\n";
     out += "colour_max_delta_rgba: " + std::to_string(c.colourMaxDelta[0]) + " " + std::to_string(c.colourMaxDelta[1]) + " " +
            std::to_string(c.colourMaxDelta[2]) + " " + std::to_string(c.colourMaxDelta[3]) + " (threshold " +
            std::to_string(t.colourThreshold) + ")\n";
+    if (c.samples > 1) {
+      out += "resolved_colour_max_delta_rgba: " + std::to_string(c.resolvedColourMaxDelta[0]) + " " +
+             std::to_string(c.resolvedColourMaxDelta[1]) + " " + std::to_string(c.resolvedColourMaxDelta[2]) + " " +
+             std::to_string(c.resolvedColourMaxDelta[3]) + "\n";
+    }
     out += "colour_mean_delta_rgba: " + number("%.6f", c.colourMeanDelta[0]) + number(" %.6f", c.colourMeanDelta[1]) +
            number(" %.6f", c.colourMeanDelta[2]) + number(" %.6f", c.colourMeanDelta[3]) + "\n";
     out += "colour_pixels_over: " + std::to_string(c.colourPixelsOver) + " (allowed " + std::to_string(t.maxColourPixelsOver) + ")\n";

@@ -113,8 +113,17 @@ softraster::Status SoftrasterScene::render() {
 
 namespace {
 
-Frame frameFrom(const Scene& scene, softraster::Framebuffer& framebuffer, double milliseconds, bool move) {
+// `samples`: the framebuffer before the resolve (with MSAA), whose every sample the frame also
+// carries (copied: the next render() draws into it again).
+Frame frameFrom(const Scene& scene, softraster::Framebuffer& framebuffer, const softraster::Framebuffer* samples,
+                double milliseconds, bool move) {
   Frame frame;
+  if (samples) {
+    frame.samples = samples->samples();
+    frame.sampleRgba = samples->colour();
+    frame.sampleDepthStorage = samples->depthStorage();
+    frame.sampleStencil = samples->stencilStorage();
+  }
   frame.milliseconds = milliseconds;
   frame.width = scene.width;
   frame.height = scene.height;
@@ -137,10 +146,12 @@ Frame frameFrom(const Scene& scene, softraster::Framebuffer& framebuffer, double
 
 Frame SoftrasterScene::frame() const {
   softraster::Framebuffer copy = scene_.samples > 1 ? resolved_ : framebuffer_;
-  return frameFrom(scene_, copy, milliseconds_, true);
+  return frameFrom(scene_, copy, scene_.samples > 1 ? &framebuffer_ : nullptr, milliseconds_, true);
 }
 
-Frame SoftrasterScene::takeFrame() { return frameFrom(scene_, output(), milliseconds_, true); }
+Frame SoftrasterScene::takeFrame() {
+  return frameFrom(scene_, output(), scene_.samples > 1 ? &framebuffer_ : nullptr, milliseconds_, true);
+}
 
 softraster::Result<Frame> renderSoftraster(const Scene& scene, const softraster::ContextOptions& options) {
   SoftrasterScene prepared(scene, options);
@@ -215,6 +226,10 @@ softraster::Result<Frame> readVulkan(const Scene& scene, vkref::Renderer& render
   frame.depthFormat = scene.depthFormat;
   frame.depthStorage = std::move(images.depthStorage);
   frame.stencil = std::move(images.stencil);
+  frame.samples = images.samples;
+  frame.sampleRgba = std::move(images.sampleRgba);
+  frame.sampleDepthStorage = std::move(images.sampleDepthStorage);
+  frame.sampleStencil = std::move(images.sampleStencil);
   return frame;
 }
 

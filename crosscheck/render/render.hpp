@@ -1,5 +1,5 @@
 // Renders a Scene with either renderer into a Frame: RGBA8 colour, float depth and (with a
-// depth/stencil format) stencil, row 0 at the top. Both adapters hand the renderers the same vertices and uniforms (made by each draw's row
+// depth/stencil format) stencil, row 0 at the top; with MSAA the resolve and every sample. Both adapters hand the renderers the same vertices and uniforms (made by each draw's row
 // of shaders/shading_models.hpp), indices, matrices and PipelineState, and time one span each
 // (Frame::milliseconds). openVulkan is the one place a vkref::Renderer is opened.
 // renderSoftraster / renderVulkan are one call, one frame. For steady-state frames (the bench) a
@@ -30,6 +30,13 @@ struct Frame {
   softraster::DepthFormat depthFormat = softraster::DepthFormat::D32Sfloat;
   std::vector<std::uint32_t> depthStorage;  // as the format stores it, for exact comparison
   std::vector<std::uint8_t> stencil;        // one byte per pixel with a depth/stencil format, else empty
+  // With MSAA the four above are the resolve (colour averaged, depth and stencil sample 0), and the
+  // samples before it follow, in softraster::Framebuffer's order ((y * width + x) * samples + s,
+  // Vulkan's sample order); with one sample these stay empty and `samples` is 1.
+  std::uint32_t samples = 1;
+  std::vector<std::uint8_t> sampleRgba;           // 4 bytes per sample
+  std::vector<std::uint32_t> sampleDepthStorage;  // as depthStorage
+  std::vector<std::uint8_t> sampleStencil;        // as stencil
   double milliseconds = 0;                  // the renderer's timed span (render.cpp): softraster's clear,
                                             // draws and resolve; vkref's submit (the same work)
 };

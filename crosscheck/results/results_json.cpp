@@ -36,8 +36,10 @@ json comparisonJson(const Comparison& c) {
   json mean = json::array();
   for (double v : c.colourMeanDelta) mean.push_back(number(v));
   return {{"pixels", c.pixels},
+          {"samples_compared", c.samples},
           {"coverage_mismatches", c.coverageMismatches},
           {"colour_max_delta", c.colourMaxDelta},
+          {"resolved_colour_max_delta", c.resolvedColourMaxDelta},
           {"colour_mean_delta", mean},
           {"colour_pixels_over", c.colourPixelsOver},
           {"psnr", number(c.psnr)},
@@ -133,6 +135,18 @@ Comparison readComparison(const json& j, const std::string& place) {
   for (std::size_t i = 0; i < 4; ++i) {
     c.colourMaxDelta[i] = readInteger<int>(max[i], place + "/colour_max_delta/" + std::to_string(i));
     c.colourMeanDelta[i] = readNumber(mean[i], place + "/colour_mean_delta/" + std::to_string(i));
+  }
+  // Absent from files written before every sample was compared: one sample (the resolve) then.
+  c.resolvedColourMaxDelta = c.colourMaxDelta;
+  if (j.contains("samples_compared")) {
+    c.samples = readInteger<std::uint32_t>(j["samples_compared"], place + "/samples_compared");
+  }
+  if (j.contains("resolved_colour_max_delta")) {
+    const json& resolved = readArray(j["resolved_colour_max_delta"], place + "/resolved_colour_max_delta", 4);
+    for (std::size_t i = 0; i < 4; ++i) {
+      c.resolvedColourMaxDelta[i] =
+          readInteger<int>(resolved[i], place + "/resolved_colour_max_delta/" + std::to_string(i));
+    }
   }
   c.colourPixelsOver = readInteger<std::uint64_t>(field(j, place, "colour_pixels_over"), place + "/colour_pixels_over");
   c.psnr = readNumber(field(j, place, "psnr"), place + "/psnr");

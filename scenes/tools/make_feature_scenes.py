@@ -337,7 +337,7 @@ scene("sphere_coverage.json", "A closed sphere of 9800 triangles with back faces
 msaa_fb = {"width": 160, "height": 120, "clear_colour": [0.1, 0.1, 0.1, 1], "samples": 4}
 scene("msaa_room.json", "4x MSAA on the room with two boxes: coverage and depth per sample at Vulkan's standard "
       "positions, one shading per pixel, colour resolved by averaging (as lavapipe's resolve blit: float sum in "
-      "sample order times 0.25), depth compared through sample 0 (VK_RESOLVE_MODE_SAMPLE_ZERO).",
+      "sample order times 0.25); colour and depth compared on every sample and colour also after the resolve.",
       [{"name": "cornell_box", "obj": "meshes/cornell_box.obj", "cull": "back"}], framebuffer=msaa_fb,
       camera={"type": "pinhole", "position": [0, -0.45, -0.98], "pitch": -20, "focal_length": 60, "near": 0.05,
               "far": 10})

@@ -271,8 +271,8 @@ def stencil_msaa():
         "description": "Stencil with 4x MSAA: three slanted, interpenetrating triangles increment the stencil per "
                        "sample where they pass the depth test and invert it where they fail, so edge pixels hold "
                        "different values in different samples; then each value is shown as colour (compare equal, per "
-                       "sample). Colour is compared after the resolve, stencil and depth by sample 0 (Vulkan's "
-                       "SAMPLE_ZERO resolve). D24_UNORM_S8_UINT.",
+                       "sample). Colour, depth and stencil are compared on every sample (read back before the resolve), "
+                       "colour also after it. D24_UNORM_S8_UINT.",
         "framebuffer": framebuffer(w, h, samples=4),
         "camera": {"type": "clip_space"},
         "draws": draws,

@@ -33,7 +33,9 @@ SceneResult everyFieldSet() {
   Comparison c;
   c.pixels = 76800;
   c.coverageMismatches = 12;
+  c.samples = 4;
   c.colourMaxDelta = {1, 2, 3, 255};
+  c.resolvedColourMaxDelta = {1, 0, 3, 7};
   c.colourMeanDelta = {0.1, 1.0 / 3.0, 0.0, 1e-300};
   c.colourPixelsOver = 9;
   c.psnr = std::numeric_limits<double>::infinity();
@@ -103,7 +105,9 @@ void expectSame(const SceneResult& a, const SceneResult& b) {
     const Comparison &x = *a.comparison, &y = *b.comparison;
     EXPECT_EQ(x.pixels, y.pixels);
     EXPECT_EQ(x.coverageMismatches, y.coverageMismatches);
+    EXPECT_EQ(x.samples, y.samples);
     EXPECT_EQ(x.colourMaxDelta, y.colourMaxDelta);
+    EXPECT_EQ(x.resolvedColourMaxDelta, y.resolvedColourMaxDelta);
     for (int i = 0; i < 4; ++i) EXPECT_TRUE(same(x.colourMeanDelta[i], y.colourMeanDelta[i])) << i;
     EXPECT_EQ(x.colourPixelsOver, y.colourPixelsOver);
     EXPECT_TRUE(same(x.psnr, y.psnr)) << x.psnr << " " << y.psnr;
@@ -194,6 +198,18 @@ TEST(ResultsJson, FieldsAddedWithTheChartAreOptional) {
   const auto bad = sceneResultFromJson(value);
   ASSERT_FALSE(bad);
   EXPECT_NE(bad.error().find("/variants/lavapipe_milliseconds: missing"), std::string::npos) << bad.error();
+}
+
+// A file written before every sample was compared: one sample, the resolve's maximum is the maximum.
+TEST(ResultsJson, FieldsAddedWithEverySampleAreOptional) {
+  json value = sceneResultToJson(everyFieldSet());
+  value["comparison"].erase("samples_compared");
+  value["comparison"].erase("resolved_colour_max_delta");
+  const auto back = sceneResultFromJson(value);
+  ASSERT_TRUE(back) << back.error();
+  ASSERT_TRUE(back->comparison);
+  EXPECT_EQ(back->comparison->samples, 1u);
+  EXPECT_EQ(back->comparison->resolvedColourMaxDelta, back->comparison->colourMaxDelta);
 }
 
 TEST(ResultsJson, DefaultsCrashesTimeoutsAndNonFiniteNumbers) {

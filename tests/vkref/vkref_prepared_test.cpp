@@ -9,6 +9,7 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <cstring>
 #include <memory>
 #include <string>
@@ -102,6 +103,10 @@ void expectSameImages(const vkref::FrameImages& a, const vkref::FrameImages& b) 
   EXPECT_TRUE(a.rgba == b.rgba) << "colour differs";
   EXPECT_TRUE(a.depthStorage == b.depthStorage) << "stored depth differs";
   EXPECT_EQ(std::memcmp(a.depth.data(), b.depth.data(), a.depth.size() * sizeof(float)), 0) << "depth differs";
+  EXPECT_EQ(a.samples, b.samples);
+  EXPECT_TRUE(a.sampleRgba == b.sampleRgba) << "colour samples differ";
+  EXPECT_TRUE(a.sampleDepthStorage == b.sampleDepthStorage) << "depth samples differ";
+  EXPECT_TRUE(a.sampleStencil == b.sampleStencil) << "stencil samples differ";
 }
 
 TEST_F(PreparedFrame, SubmittedTwiceGivesTheSameImages) {
@@ -138,6 +143,45 @@ TEST_F(PreparedFrame, SubmittedTwiceGivesTheSameImages) {
       EXPECT_GT(drawn, 200u);
       EXPECT_GT(stacked, 10u);
     }
+  }
+}
+
+// With 4x MSAA every sample comes back as well as the resolve, in softraster's order, for every
+// depth format: the samples' average (lavapipe's resolve: float sum in sample order times 0.25,
+// round half to even) is the resolved colour, sample 0 of depth is the resolved depth (also
+// checked by readBack itself), and stencil holds the clear value in every sample.
+TEST_F(PreparedFrame, EverySampleIsReadBack) {
+  const vkref::ShaderProgram program = vertexColorProgram();
+  for (softraster::DepthFormat depth :
+       {softraster::DepthFormat::D16Unorm, softraster::DepthFormat::X8D24UnormPack32, softraster::DepthFormat::D32Sfloat,
+        softraster::DepthFormat::D24UnormS8Uint, softraster::DepthFormat::D32SfloatS8Uint}) {
+    SCOPED_TRACE("depth format " + std::to_string(int(depth)));
+    vkref::FrameRequest request = overlappingTriangles(program, 4, depth);
+    request.clearStencil = 0x5a;
+    auto images = renderer_->render(request);
+    ASSERT_TRUE(images) << images.error();
+    const std::size_t pixels = std::size_t{images->width} * images->height;
+    ASSERT_EQ(images->samples, 4u);
+    ASSERT_EQ(images->sampleRgba.size(), pixels * 16);
+    ASSERT_EQ(images->sampleDepthStorage.size(), pixels * 4);
+    ASSERT_EQ(images->sampleDepth.size(), pixels * 4);
+    ASSERT_EQ(images->sampleStencil.size(), softraster::hasStencil(depth) ? pixels * 4 : 0);
+    std::size_t partial = 0;  // pixels whose samples differ in depth (edges)
+    for (std::size_t p = 0; p < pixels; ++p) {
+      EXPECT_EQ(images->sampleDepthStorage[4 * p], images->depthStorage[p]) << p;
+      bool differs = false;
+      for (std::size_t s = 1; s < 4; ++s) differs = differs || images->sampleDepthStorage[4 * p + s] != images->depthStorage[p];
+      partial += differs;
+      for (std::size_t ch = 0; ch < 4; ++ch) {
+        float sum = 0;
+        for (std::size_t s = 0; s < 4; ++s) sum += float(images->sampleRgba[16 * p + 4 * s + ch]) * (1.0f / 255);
+        const float resolved = std::nearbyint(sum * 0.25f * 255.0f);
+        ASSERT_EQ(int(resolved), int(images->rgba[4 * p + ch])) << "pixel " << p << " channel " << ch;
+      }
+      for (std::size_t s = 0; s < images->sampleStencil.size() / pixels; ++s)
+        ASSERT_EQ(int(images->sampleStencil[4 * p + s]), 0x5a) << p;
+    }
+    EXPECT_GT(partial, 20u);
   }
 }
 

@@ -42,7 +42,7 @@ softraster::Result<HostImages> createHostImages(const Device& device, const Targ
   return host;
 }
 
-Status recordCopies(VkCommandBuffer cmd, const Targets& targets, const HostImages& host) {
+Status recordCopies(VkCommandBuffer cmd, const Targets& targets, const HostImages& host, const FrameSamples* samples) {
   const VkCommandBufferBeginInfo begin{.sType = VK_STRUCTURE_TYPE_COMMAND_BUFFER_BEGIN_INFO};
   if (Status s = check(vkBeginCommandBuffer(cmd, &begin), "vkBeginCommandBuffer"); !s) return s;
   const VkExtent3D extent{targets.width, targets.height, 1};
@@ -63,6 +63,7 @@ Status recordCopies(VkCommandBuffer cmd, const Targets& targets, const HostImage
                                 .dstStageMask = VK_PIPELINE_STAGE_2_HOST_BIT,
                                 .dstAccessMask = VK_ACCESS_2_HOST_READ_BIT};
   barrier(cmd, {}, &toHost);
+  if (samples) samples->record(cmd);
   return check(vkEndCommandBuffer(cmd), "vkEndCommandBuffer");
 }
 

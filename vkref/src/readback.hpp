@@ -2,12 +2,13 @@
 // buffers, and their unpacking into FrameImages: colour as RGBA8, depth as floats in [0, 1] and
 // as stored (D16 and X8_D24 as UNORM integers, D32_SFLOAT as the float's bits; a depth/stencil
 // format's depth aspect as its depth-only twin's) and the stencil aspect as bytes.
-// Deliberately no resolve (passes resolves MSAA while rendering), no layout changes (passes leaves
+// Deliberately no resolve (passes resolves MSAA while rendering; samples.hpp reads the samples), no layout changes (passes leaves
 // the images ready to copy) and no format conversion beyond depth's: colour is R8G8B8A8 as is.
 #pragma once
 
 #include "device.hpp"
 #include "resources.hpp"
+#include "samples.hpp"
 
 #include <vkref/frame.hpp>
 
@@ -30,7 +31,9 @@ softraster::Result<HostImages> createHostImages(const Device& device, const Targ
 
 // Records the copies of `targets` (in TRANSFER_SRC_OPTIMAL layout) into `host`, and the barrier
 // that makes them visible to the host, from vkBeginCommandBuffer to vkEndCommandBuffer.
-softraster::Status recordCopies(VkCommandBuffer cmd, const Targets& targets, const HostImages& host);
+// With `samples` (a multisampled frame) the per-sample read-back is recorded after the copies.
+softraster::Status recordCopies(VkCommandBuffer cmd, const Targets& targets, const HostImages& host,
+                                const FrameSamples* samples = nullptr);
 
 // The images in `host` after the copies have run.
 FrameImages unpack(const HostImages& host, std::uint32_t width, std::uint32_t height);

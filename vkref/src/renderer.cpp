@@ -4,7 +4,7 @@
 // indices and uniform blocks into one buffer each, uploads its textures (textures.cpp), takes its
 // pipelines from the cache and records its two command
 // buffers: the render pass with any depth passes before it (passes.cpp) and the copies to the
-// host (readback.cpp); submit() runs
+// host (readback.cpp), with MSAA also the per-sample read-back (samples.cpp); submit() runs
 // the first, readBack() the second and unpacks the images.
 // Deliberately synchronous: every submission is waited for before the call returns, so a frame
 // is never in flight between calls. Nothing is printed and nothing is global; failures come back
@@ -16,6 +16,7 @@
 #include "pipelines.hpp"
 #include "readback.hpp"
 #include "resources.hpp"
+#include "samples.hpp"
 #include "textures.hpp"
 
 #include <utility>
@@ -28,6 +29,7 @@ using softraster::Status;
 struct Renderer::Impl {
   std::unique_ptr<detail::Device> device;
   std::unique_ptr<detail::PipelineCache> pipelines;  // destroyed before the device
+  std::unique_ptr<detail::SampleReader> sampleReader;  // made with the first multisampled frame
 };
 
 // What prepare() made. Members are destroyed in reverse order: the command buffers (after any
@@ -40,6 +42,7 @@ struct PreparedFrame::Impl {
   detail::UniformSet uniforms;
   detail::FrameTextures textures;
   detail::HostImages host;
+  std::unique_ptr<detail::FrameSamples> samples;  // with MSAA: every sample's read-back
   std::unique_ptr<detail::Commands> commands;
   bool submitted = false;
 };
@@ -146,6 +149,16 @@ Result<PreparedFrame> Renderer::prepare(const FrameRequest& request) {
   auto host = detail::createHostImages(device, frame->targets, request.depthFormat);
   if (!host) return host.status();
   frame->host = std::move(*host);
+  if (frame->targets.multisampled()) {
+    if (!impl_->sampleReader) {
+      auto reader = detail::SampleReader::create(device);
+      if (!reader) return reader.status().prefixed("per-sample read-back");
+      impl_->sampleReader = std::move(*reader);
+    }
+    auto samples = detail::FrameSamples::create(device, *impl_->sampleReader, frame->targets);
+    if (!samples) return samples.status().prefixed("per-sample read-back");
+    frame->samples = std::move(*samples);
+  }
   auto geometry = detail::uploadGeometry(device, drawn);
   if (!geometry) return geometry.status();
   frame->geometry = std::move(*geometry);
@@ -207,7 +220,7 @@ Result<PreparedFrame> Renderer::prepare(const FrameRequest& request) {
                                     .draws = std::span(passDraws).subspan(firstOwn),
                                     .depthPasses = passRecords};
   if (Status s = detail::recordRenderPass(frame->commands->render(), framePass); !s) return s;
-  if (Status s = detail::recordCopies(frame->commands->copy(), frame->targets, frame->host); !s) return s;
+  if (Status s = detail::recordCopies(frame->commands->copy(), frame->targets, frame->host, frame->samples.get()); !s) return s;
   return PreparedFrame(std::move(frame));
 }
 
@@ -226,7 +239,11 @@ Result<FrameImages> Renderer::readBack(const PreparedFrame& frame) {
   if (f.device != impl_->device.get()) return Status::error("readBack: the frame was prepared by another Renderer");
   if (!f.submitted) return Status::error("readBack: the frame has not been submitted");
   if (Status s = f.commands->submitAndWait(f.commands->copy()); !s) return s;
-  return detail::unpack(f.host, f.targets.width, f.targets.height);
+  FrameImages images = detail::unpack(f.host, f.targets.width, f.targets.height);
+  if (f.samples) {
+    if (Status s = f.samples->unpack(images, f.host.depthFormat); !s) return s;
+  }
+  return images;
 }
 
 Result<FrameImages> Renderer::render(const FrameRequest& request) {

@@ -164,10 +164,13 @@ softraster::Result<Targets> createTargets(const Device& device, std::uint32_t wi
   if (!depth) return depth.status();
   t.depth = std::move(*depth);
   if (t.multisampled()) {
-    auto msColour = Image::create(device, kColourFormat, colourUsage, VK_IMAGE_ASPECT_COLOR_BIT, width, height, samples);
+    // Sampled too: the per-sample read-back (samples.hpp) fetches every sample in a compute shader.
+    auto msColour = Image::create(device, kColourFormat, colourUsage | VK_IMAGE_USAGE_SAMPLED_BIT,
+                                  VK_IMAGE_ASPECT_COLOR_BIT, width, height, samples);
     if (!msColour) return msColour.status();
     t.msColour = std::move(*msColour);
-    auto msDepth = Image::create(device, depthFormat, depthUsage, depthAspects(depthFormat), width, height, samples);
+    auto msDepth = Image::create(device, depthFormat, depthUsage | VK_IMAGE_USAGE_SAMPLED_BIT, depthAspects(depthFormat),
+                                 width, height, samples);
     if (!msDepth) return msDepth.status();
     t.msDepth = std::move(*msDepth);
   }

@@ -67,7 +67,8 @@ class Image {
 };
 
 // The images one frame renders into. `colour` and `depth` are single-sampled and copied out;
-// with MSAA the draws go to `msColour` and `msDepth`, which resolve into them.
+// with MSAA the draws go to `msColour` and `msDepth`, which resolve into them and are also
+// sampled by the per-sample read-back (samples.hpp).
 struct Targets {
   std::uint32_t width = 0, height = 0;
   VkFormat depthFormat = VK_FORMAT_UNDEFINED;

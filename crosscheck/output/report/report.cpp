@@ -283,12 +283,17 @@ std::string metricsTable(const SceneResult& r) {
   std::string rows;
   if (r.comparison) {
     const Comparison& c = *r.comparison;
+    if (c.samples > 1) {
+      rows += metricRow("samples compared", std::to_string(c.samples) + " per pixel (every sample; colour also resolved)", "",
+                        false);
+    }
     rows += metricRow("coverage mismatches", std::to_string(c.coverageMismatches),
                       "\xE2\x89\xA4 " + std::to_string(t.maxCoverageMismatches), c.coverageMismatches > t.maxCoverageMismatches);
     rows += metricRow("colour pixels over threshold", std::to_string(c.colourPixelsOver),
                       "\xE2\x89\xA4 " + std::to_string(t.maxColourPixelsOver), c.colourPixelsOver > t.maxColourPixelsOver);
     rows += metricRow("colour max |\xCE\x94| RGBA", rgbaText(c.colourMaxDelta), "threshold " + std::to_string(t.colourThreshold),
                       *std::max_element(c.colourMaxDelta.begin(), c.colourMaxDelta.end()) > t.colourThreshold);
+    if (c.samples > 1) rows += metricRow("resolved colour max |\xCE\x94| RGBA", rgbaText(c.resolvedColourMaxDelta), "", false);
     rows += metricRow("colour mean |\xCE\x94| RGBA", meanText(c.colourMeanDelta), "", false);
     rows += metricRow("PSNR (RGB, dB)", psnrText(c.psnr), "", false);
     rows += metricRow("depth pixels over threshold", std::to_string(c.depthPixelsOver),

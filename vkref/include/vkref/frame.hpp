@@ -1,6 +1,7 @@
 // vkref frames: what a caller hands the Renderer (a FrameRequest of DrawCalls, each with its
 // ShaderProgram and softraster::PipelineState), what it gets back (FrameImages: colour, depth as
-// floats, depth as stored and stencil) and the handle of a frame prepared once and submitted many times.
+// floats, depth as stored and stencil; with MSAA also every sample) and the handle of a frame
+// prepared once and submitted many times.
 // A frame may render depth passes first (shadow maps) whose depth its draws then sample.
 // Deliberately plain values: no Vulkan type appears here, and nothing in a request is kept after
 // Renderer::prepare returns (vertices, indices and uniform blocks are uploaded, push constants recorded).
@@ -76,7 +77,8 @@ struct FrameRequest {
   std::uint8_t clearStencil = 0;  // with a depth/stencil format
   softraster::DepthFormat depthFormat = softraster::DepthFormat::D32Sfloat;
   std::uint32_t samples = 1;  // 1, or 4: rendered multisampled, colour resolved (average) and
-                              // depth and stencil resolved (sample 0) before read-back
+                              // depth and stencil resolved (sample 0); read back both the
+                              // resolve and every sample (FrameImages)
   std::vector<DrawCall> draws;  // drawn in order; a draw with nothing to assemble is skipped
   std::vector<DepthPass> depthPasses;  // rendered first, in order, each with the barriers its samplers need
 };
@@ -87,6 +89,15 @@ struct FrameImages {
   std::vector<float> depth;                // width*height, as floats in [0, 1]
   std::vector<std::uint32_t> depthStorage; // width*height, as stored: UNORM integer or the float's bits
   std::vector<std::uint8_t> stencil;       // width*height with a depth/stencil format, else empty
+  // With MSAA the four above are the resolve (colour averaged, depth and stencil sample 0), and
+  // the images before it follow: every sample, in softraster::Framebuffer's order (the samples of
+  // a pixel adjacent, in Vulkan's sample order: index (y * width + x) * samples + s). With one
+  // sample `samples` is 1 and these stay empty.
+  std::uint32_t samples = 1;
+  std::vector<std::uint8_t> sampleRgba;           // 4 bytes per sample
+  std::vector<float> sampleDepth;                 // as `depth`
+  std::vector<std::uint32_t> sampleDepthStorage;  // as `depthStorage`
+  std::vector<std::uint8_t> sampleStencil;        // with a depth/stencil format, else empty
 };
 
 // A frame made ready by Renderer::prepare: its images, its uploaded vertices and indices and its

@@ -1,0 +1,83 @@
+// vkref samples: every sample of a multisampled frame read back, not only the resolve. Vulkan
+// copies no multisampled image to a buffer (vkCmdCopyImageToBuffer: "srcImage must have a sample
+// count equal to VK_SAMPLE_COUNT_1_BIT"), so a compute shader (vkref/shaders/read_samples.comp)
+// fetches each sample of the colour, depth and stencil images with texelFetch and writes them
+// into one host-visible storage buffer, in softraster's order (a pixel's samples adjacent, in
+// Vulkan's sample order). Recorded into the frame's copy command buffer, so it runs in
+// readBack() and never in the timed submit().
+// Deliberately no resolve and no single-sample path (frames with one sample need none of this),
+// and no format but the frame's own: R8G8B8A8_UNORM colour and the five depth formats. The UNORM
+// depth a sampled view returns as float(c) * float(1/(2^n - 1)) is turned back into c on the host;
+// that float is one-to-one but for D24's 16777214 and 16777215 (both 1.0), read as 16777215 in
+// samples 1..3 (sample 0 is the resolve's exact value).
+#pragma once
+
+#include "device.hpp"
+#include "resources.hpp"
+
+#include <vkref/frame.hpp>
+
+#include <softraster/formats.hpp>
+#include <softraster/status.hpp>
+
+#include <vulkan/vulkan.h>
+
+#include <memory>
+
+namespace vkref::detail {
+
+// The compute pipelines (one for depth formats, one that also reads stencil), their set layouts
+// and pipeline layouts. One per Renderer, made when its first multisampled frame is prepared.
+class SampleReader {
+ public:
+  static softraster::Result<std::unique_ptr<SampleReader>> create(const Device& device);
+  ~SampleReader();
+  SampleReader(const SampleReader&) = delete;
+  SampleReader& operator=(const SampleReader&) = delete;
+
+  struct Variant {
+    VkDescriptorSetLayout setLayout = VK_NULL_HANDLE;
+    VkPipelineLayout layout = VK_NULL_HANDLE;
+    VkPipeline pipeline = VK_NULL_HANDLE;
+  };
+  const Variant& variant(bool stencil) const { return variants_[stencil ? 1 : 0]; }
+
+ private:
+  explicit SampleReader(VkDevice device) : device_(device) {}
+  VkDevice device_;
+  Variant variants_[2];
+};
+
+// One multisampled frame's share: views of its multisampled images, the storage buffer the
+// samples land in, and the descriptor set that binds them.
+class FrameSamples {
+ public:
+  static softraster::Result<std::unique_ptr<FrameSamples>> create(const Device& device, const SampleReader& reader,
+                                                                  const Targets& targets);
+  ~FrameSamples();
+  FrameSamples(const FrameSamples&) = delete;
+  FrameSamples& operator=(const FrameSamples&) = delete;
+
+  // Records, after the render pass's submission: the multisampled images to
+  // SHADER_READ_ONLY_OPTIMAL, the dispatch, the images back to their attachment layouts (so the
+  // frame may be read again before it is submitted again) and the barrier that makes the buffer
+  // visible to the host.
+  void record(VkCommandBuffer cmd) const;
+  // Fills out's samples, sampleRgba, sampleDepth, sampleDepthStorage and sampleStencil from the
+  // buffer after the commands ran. An error when sample 0 of depth or stencil differs from the
+  // sample-0 resolve already in `out` (the read-back would be wrong, not the renderer).
+  softraster::Status unpack(FrameImages& out, softraster::DepthFormat format) const;
+
+ private:
+  FrameSamples(VkDevice device, const SampleReader::Variant& variant, const Targets& targets)
+      : device_(device), variant_(variant), targets_(targets) {}
+  VkDevice device_;
+  const SampleReader::Variant& variant_;
+  const Targets& targets_;
+  VkImageView depthView_ = VK_NULL_HANDLE, stencilView_ = VK_NULL_HANDLE;
+  VkDescriptorPool pool_ = VK_NULL_HANDLE;
+  VkDescriptorSet set_ = VK_NULL_HANDLE;
+  Buffer buffer_;
+};
+
+}  // namespace vkref::detail
