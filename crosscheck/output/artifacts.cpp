@@ -25,9 +25,40 @@ std::pair<float, float> sharedDepthRange(const Frame& soft, const Frame& vulkan,
 }
 
 // Bit-identical colour and depth (depth compared as bits, so NaN equals NaN and -0 differs from 0).
+// With MSAA every sample too (colour, depth as stored, stencil).
 bool identicalFrames(const Frame& a, const Frame& b) {
   return a.width == b.width && a.height == b.height && a.rgba == b.rgba && a.stencil == b.stencil && a.depth.size() == b.depth.size() &&
-         std::memcmp(a.depth.data(), b.depth.data(), a.depth.size() * sizeof(float)) == 0;
+         std::memcmp(a.depth.data(), b.depth.data(), a.depth.size() * sizeof(float)) == 0 && a.samples == b.samples &&
+         a.sampleRgba == b.sampleRgba && a.sampleDepthStorage == b.sampleDepthStorage && a.sampleStencil == b.sampleStencil;
+}
+
+// Sample s of an MSAA frame as a one-sample frame (colour, depth as stored, stencil): what the
+// per-sample images are drawn from.
+Frame sampleFrame(const Frame& f, std::uint32_t s) {
+  Frame out;
+  out.width = f.width;
+  out.height = f.height;
+  out.depthFormat = f.depthFormat;
+  const std::size_t pixels = std::size_t{f.width} * f.height;
+  out.rgba.resize(4 * pixels);
+  out.depthStorage.resize(pixels);
+  if (!f.sampleStencil.empty()) out.stencil.resize(pixels);
+  for (std::size_t i = 0; i < pixels; ++i) {
+    const std::size_t k = i * f.samples + s;
+    std::memcpy(&out.rgba[4 * i], &f.sampleRgba[4 * k], 4);
+    out.depthStorage[i] = f.sampleDepthStorage[k];
+    if (!out.stencil.empty()) out.stencil[i] = f.sampleStencil[k];
+  }
+  return out;
+}
+
+// Both frames carry every sample, alike.
+bool hasSamples(const Frame& soft, const Frame& vulkan) {
+  const std::size_t samples = std::size_t{soft.width} * soft.height * soft.samples;
+  return soft.samples > 1 && soft.samples == vulkan.samples && soft.width == vulkan.width && soft.height == vulkan.height &&
+         soft.sampleRgba.size() == 4 * samples && vulkan.sampleRgba.size() == 4 * samples &&
+         soft.sampleDepthStorage.size() == samples && vulkan.sampleDepthStorage.size() == samples &&
+         soft.sampleStencil.size() == vulkan.sampleStencil.size() && (soft.sampleStencil.empty() || soft.sampleStencil.size() == samples);
 }
 
 // RGBA averaged over factor x factor blocks (partial blocks at the right and bottom edges), rounded.
@@ -80,6 +111,14 @@ softraster::Status writeSceneImages(const std::filesystem::path& root, const std
     static_cast<void>(write("soft.stencil", "soft.stencil.png", soft, stencilToGrey(soft)) &&
                       write("vulkan.stencil", "vulkan.stencil.png", vulkan, stencilToGrey(vulkan)) &&
                       write("stencil.diff", "stencil.diff.png", soft, stencilDiffHeatmap(soft, vulkan)));
+  }
+  // With MSAA, each sample as stored before the resolve: both colours and their difference.
+  for (std::uint32_t s = 0; status && hasSamples(soft, vulkan) && s < soft.samples; ++s) {
+    const Frame a = sampleFrame(soft, s), b = sampleFrame(vulkan, s);
+    const std::string n = std::to_string(s);
+    static_cast<void>(write(("soft.sample" + n).c_str(), ("soft.sample" + n + ".png").c_str(), a, a.rgba) &&
+                      write(("vulkan.sample" + n).c_str(), ("vulkan.sample" + n + ".png").c_str(), b, b.rgba) &&
+                      write(("sample" + n + ".diff").c_str(), ("sample" + n + ".diff.png").c_str(), a, diffHeatmap(a, b, scene)));
   }
   return status;
 }

@@ -2,8 +2,9 @@
 // soft.png, vulkan.png, diff.png (diffHeatmap), soft.depth.png and vulkan.depth.png (both depth
 // buffers mapped to grey over one shared range, so equal depths look equal) and depth.diff.png
 // (depthDiffHeatmap); with a depth/stencil format also soft.stencil.png, vulkan.stencil.png (grey =
-// the stored value) and stencil.diff.png (stencilDiffHeatmap); the runner's scenes record what was
-// written. Also the compare command's five images (eight with stencil) and the render command's
+// the stored value) and stencil.diff.png (stencilDiffHeatmap); with MSAA, for each sample s as
+// stored before the resolve, soft.sampleS.png, vulkan.sampleS.png and sampleS.diff.png (its
+// diffHeatmap, coverage of that sample included); the runner's scenes record what was written. Also the compare command's five images (eight with stencil) and the render command's
 // depth view.
 // Also copying a scene's files to another folder (merge).
 // Deliberately PNG only and nothing about how a page shows them (that is report/report.hpp).
@@ -27,7 +28,7 @@ namespace crosscheck {
 std::pair<float, float> sharedDepthRange(const Frame& soft, const Frame& vulkan, float clearDepth);
 
 // Which images a scene gets: all six, or (Compact, for the report) when both frames are
-// bit-identical in colour and depth only "preview": preview.png, the colour box-filtered down to
+// bit-identical in colour, depth and stencil (every sample with MSAA) only "preview": preview.png, the colour box-filtered down to
 // at most kPreviewSize pixels on its longer side (nothing differs, so there is nothing to look at
 // closely, and a suite that passes makes a small report); all six otherwise.
 enum class SceneImageSet { All, Compact };

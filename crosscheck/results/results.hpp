@@ -30,7 +30,8 @@ namespace crosscheck {
 
 struct SceneImage {
   std::string kind;             // "soft", "vulkan", "diff", "soft.depth", "vulkan.depth", "depth.diff",
-                                // with stencil "soft.stencil", "vulkan.stencil", "stencil.diff"
+                                // with stencil "soft.stencil", "vulkan.stencil", "stencil.diff",
+                                // with MSAA per sample S "soft.sampleS", "vulkan.sampleS", "sampleS.diff"
   std::filesystem::path file;   // relative to SceneResult::imageRoot
 };
 

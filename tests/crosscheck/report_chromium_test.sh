@@ -11,8 +11,10 @@
 #   ARTIFACTS/report/report-check.png  every scene opened (?check, 1400x3000)
 #   ARTIFACTS/report/report-chart.png  the speed-vs-accuracy chart (#chart)
 #   ARTIFACTS/report/report-stability.png  a report of two stability cases: its table
+#   ARTIFACTS/report/report-samples.png    an MSAA scene that differs, opened: its sample views
 # It also checks the chart (panels as SVG elements, a marker with a tooltip per method and option,
-# the Pareto fronts), --no-chart, and the stability table of a report over two stability cases.
+# the Pareto fronts), --no-chart, the stability table of a report over two stability cases, and
+# the sample menu of an MSAA scene that differs (picking a sample swaps its three images).
 # Usage: report_chromium_test.sh CROSSCHECK SOURCE_DIR ARTIFACTS_DIR
 # Exit 0: passed, 1: failed, 77: skipped because chromium is not installed.
 set -uo pipefail
@@ -143,6 +145,22 @@ for name in near_plane_crossing closed_mesh_edges; do
 done
 browse --window-size=1400,1600 --screenshot="$artifacts/report-stability.png" "$stability_page#stability" >/dev/null ||
   fail "no stability screenshot"
+# An MSAA scene that differs (the MSAA scissor with softraster following the spec: lavapipe writes
+# samples 1..3 in a column and a row, never sample 0): its sample menu shows each sample's images,
+# every one of which loads.
+"$crosscheck" report scenes/msaa_scissor_viewport.json --softraster-deviations spec --no-chart -o "$artifacts/samples" \
+  >"$artifacts/samples.txt" 2>&1
+[ $? -eq 1 ] || fail "the MSAA report should fail in spec mode: $(cat "$artifacts/samples.txt")"
+samples_page="file://$(cd "$artifacts/samples" && pwd)/index.html"
+browse --dump-dom "$samples_page?check" >"$artifacts/samples-dom.html" || fail "chromium failed on the MSAA report"
+body=$(grep -o '<body[^>]*>' "$artifacts/samples-dom.html" | head -n 1)
+[ "$(attr data-check)" = done ] || fail "the MSAA report's self-check did not finish: '$(attr data-check)'"
+[ "$(attr data-images-failed)" = 0 ] || fail "MSAA report images failed to load: $(attr data-images-failed-list)"
+[ "$(attr data-sample-probe)" = "msaa_scissor_viewport/soft.sample3.png msaa_scissor_viewport/vulkan.sample3.png msaa_scissor_viewport/sample3.diff.png 3" ] ||
+  fail "picking sample 3 showed '$(attr data-sample-probe)'"
+browse --window-size=1400,2400 --screenshot="$artifacts/report-samples.png" "$samples_page#scene=msaa_scissor_viewport" >/dev/null ||
+  fail "no MSAA screenshot"
+
 browse --window-size=1400,1400 --screenshot="$artifacts/report-chart.png" "$page#chart" >/dev/null || fail "no chart screenshot"
 
 browse --window-size=1400,1000 --screenshot="$artifacts/report.png" "$page" >/dev/null || fail "no screenshot"

@@ -9,6 +9,8 @@
 #include <nlohmann/json.hpp>
 #include <zlib.h>
 
+#include <algorithm>
+#include <array>
 #include <bit>
 #include <ctime>
 #include <filesystem>
@@ -196,6 +198,48 @@ TEST(Report, PixelDataDecodesToTheFramesExactly) {
     EXPECT_EQ(std::bit_cast<float>(bits), soft.depth[i]) << i;
   }
   EXPECT_EQ(inflated(fromBase64(d["vulkanDepth"]), 24).size(), 24u);
+}
+
+// An MSAA scene that differs gets each sample's images, and its section a menu to pick one: with
+// softraster following the spec at the MSAA scissor, lavapipe's extra samples (1..3, in a column
+// and a row) differ while sample 0 does not, which only the per-sample views show.
+TEST(Report, MsaaScenesGetEverySampleAndAMenuToPickOne) {
+  const fs::path dir = kArtifacts / "report-samples";
+  fs::remove_all(dir);
+  ConformanceOptions options;
+  options.isolation = Isolation::Threads;
+  options.softraster.deviations = softraster::Deviations::Spec;
+  std::array<std::size_t, 4> differing{};
+  options.onFrames = [&](SceneResult& result, const Scene& scene, const Frame& soft, const Frame& vulkan) {
+    EXPECT_EQ(soft.samples, 4u);
+    for (std::size_t k = 0; k < soft.sampleRgba.size() / 4; ++k) {
+      if (!std::equal(&soft.sampleRgba[4 * k], &soft.sampleRgba[4 * k] + 4, &vulkan.sampleRgba[4 * k])) ++differing[k % 4];
+    }
+    return writeSceneImages(dir, result.entry.name, &result, scene, soft, vulkan, SceneImageSet::Compact);
+  };
+  const fs::path scene = fs::path(SOURCE_DIR) / "scenes" / "msaa_scissor_viewport.json";
+  const std::vector<SceneResult> results = runConformance({{"msaa_scissor_viewport", scene}}, options);
+  ASSERT_EQ(results.size(), 1u);
+  EXPECT_EQ(results[0].outcome, Outcome::Fail) << results[0].error;
+  EXPECT_EQ(differing[0], 0u) << "lavapipe's scissor planes never let sample 0 through";
+  EXPECT_GT(differing[3], 100u);
+  for (const std::string n : {"0", "1", "2", "3"}) {
+    for (const std::string kind : {"soft.sample" + n, "vulkan.sample" + n, "sample" + n + ".diff"}) {
+      const auto image = std::find_if(results[0].images.begin(), results[0].images.end(),
+                                      [&](const SceneImage& i) { return i.kind == kind; });
+      ASSERT_NE(image, results[0].images.end()) << kind;
+      EXPECT_TRUE(fs::exists(dir / image->file)) << image->file;
+    }
+  }
+  RunResults run;
+  run.scenes = results;
+  const std::string html = reportHtml(run, dir);
+  EXPECT_EQ(count(html, "<select class=\"sample-pick\">"), 1u);
+  EXPECT_EQ(count(html, "<option value=\"3\">3</option>"), 1u);
+  EXPECT_EQ(count(html, " data-samples=\"msaa_scissor_viewport/soft.sample0.png msaa_scissor_viewport/soft.sample1.png "
+                        "msaa_scissor_viewport/soft.sample2.png msaa_scissor_viewport/soft.sample3.png\""),
+            1u);
+  EXPECT_EQ(count(html, " data-samples=\""), 3u);
 }
 
 TEST(Report, DepthViewsShareOneRange) {

@@ -333,6 +333,27 @@ std::string figure(const SceneResult& r, std::string_view kind, const std::strin
          e(caption + " of " + r.entry.name) + "\"" + extra + "><div class=\"marker\"></div></div></figure>\n";
 }
 
+// An MSAA scene's samples as stored before the resolve: softraster's, Vulkan's and their
+// difference for the sample the menu picks (report.js swaps the three images' sources from their
+// data-samples lists), so a sample that differs while the resolve agrees can be seen.
+std::string sampleViews(const SceneResult& r) {
+  std::string menu, lists[3];
+  int samples = 0;
+  for (; imageOf(r, "soft.sample" + std::to_string(samples)); ++samples) {
+    const std::string n = std::to_string(samples);
+    const SceneImage* images[3] = {imageOf(r, "soft.sample" + n), imageOf(r, "vulkan.sample" + n), imageOf(r, "sample" + n + ".diff")};
+    for (int k = 0; k < 3; ++k) lists[k] += (samples ? " " : "") + (images[k] ? url(images[k]->file) : std::string());
+    menu += "<option value=\"" + n + "\">" + n + "</option>";
+  }
+  const auto pickable = [&](int k) { return " data-samples=\"" + lists[k] + "\""; };
+  return "<div class=\"tools\"><label>sample <select class=\"sample-pick\">" + menu + "</select></label><span>each of the " +
+         std::to_string(samples) + " samples as stored before the resolve (compared one by one, as the metrics are)</span></div>\n"
+         "<div class=\"views\">\n" +
+         figure(r, "soft.sample0", "softraster, sample <b class=\"sample-label\">0</b>", pickable(0)) +
+         figure(r, "vulkan.sample0", "Vulkan, sample <b class=\"sample-label\">0</b>", pickable(1)) +
+         figure(r, "sample0.diff", "difference of sample <b class=\"sample-label\">0</b> (heatmap)", pickable(2)) + "</div>\n";
+}
+
 // The diff heatmap's colours (diffHeatmap); `threshold` is the scene's colour threshold, or
 // "T" for the legend at the top of the page.
 std::string colourLegend(const std::string& threshold) {
@@ -490,6 +511,7 @@ std::string sceneSection(const RunResults& run, const SceneResult& r, std::size_
            figure(r, "vulkan.stencil", "Vulkan stencil") +
            figure(r, "stencil.diff", "stencil difference (magenta: differs; compared exactly)") + "</div>\n";
     }
+    if (imageOf(r, "soft.sample0")) s += sampleViews(r);
     s += "<p class=\"run\">Depth views map " + e(fixed("%.9g", r.depthViewRange.first)) + " to black and " +
          e(fixed("%.9g", r.depthViewRange.second)) + " to white, the same for both (the range they drew); depths outside it, such as the "
          "clear depth, saturate.</p>\n";

@@ -220,6 +220,17 @@
         });
       });
     });
+    // An MSAA scene's sample menu: the images with a data-samples list show the picked sample.
+    var samplePick = section.querySelector('select.sample-pick');
+    if (samplePick) {
+      samplePick.addEventListener('change', function () {
+        var n = +samplePick.value;
+        forEach(section.querySelectorAll('img[data-samples]'), function (img) {
+          img.src = img.getAttribute('data-samples').split(' ')[n];
+        });
+        forEach(section.querySelectorAll('.sample-label'), function (label) { label.textContent = String(n); });
+      });
+    }
     var flickerImg = section.querySelector('img.flicker');
     if (flickerImg) {
       var label = section.querySelector('.flicker-label');
@@ -313,6 +324,19 @@
     img.closest('details.scene').querySelector('button.swap').click();
     return shown;
   }
+  // Picks sample 3 in the first MSAA scene's sample menu and returns the three images it shows
+  // then and the label, then picks sample 0 again.
+  function sampleProbe() {
+    var pick = document.querySelector('select.sample-pick');
+    if (!pick) return '';
+    var section = pick.closest('details.scene');
+    var choose = function (n) { pick.value = String(n); pick.dispatchEvent(new Event('change')); };
+    choose(3);
+    var shown = Array.prototype.map.call(section.querySelectorAll('img[data-samples]'), function (img) { return img.getAttribute('src'); });
+    shown.push(section.querySelector('.sample-label').textContent);
+    choose(0);
+    return shown.join(' ');
+  }
   // Filters: "only unexpected", then the name "depth", then back; returns the visible row counts.
   function filterProbe() {
     if (!table || !unexpectedFilter || !nameFilter) return '';
@@ -369,6 +393,7 @@
       body.setAttribute('data-summary-rows', table ? String(table.tBodies[0].rows.length) : '0');
       body.setAttribute('data-sort-probe', sortProbe());
       body.setAttribute('data-flicker-probe', flickerProbe());
+      body.setAttribute('data-sample-probe', sampleProbe());
       body.setAttribute('data-filter-probe', filterProbe());
       baselineProbe();
       var lines = document.getElementById('expectations-lines');
