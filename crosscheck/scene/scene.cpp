@@ -278,11 +278,14 @@ CameraMatrices readCamera(const json& camera, const std::string& place, int widt
 
 // A draw's "blend" object (scenes/README.md): source, destination and op for colour and alpha
 // alike, "colour" and "alpha" objects overriding them for one side, constants, write_mask and
-// enable (default true; false keeps the write mask with blending off).
+// enable (default true; false keeps the write mask with blending off); or logic_op (a VkLogicOp
+// name), which turns the logic op on and blending off (enable then defaults to false: Vulkan
+// treats blending as disabled with a logic op).
 softraster::BlendState readBlend(const json& b, const std::string& place) {
   using softraster::BlendFactor;
   using softraster::BlendOp;
-  checkKeys(b, place, {"enable", "source", "destination", "op", "colour", "alpha", "constants", "write_mask"});
+  using softraster::LogicOp;
+  checkKeys(b, place, {"enable", "source", "destination", "op", "colour", "alpha", "constants", "write_mask", "logic_op"});
   const std::vector<std::pair<const char*, BlendFactor>> factors = {
       {"zero", BlendFactor::Zero},
       {"one", BlendFactor::One},
@@ -304,8 +307,19 @@ softraster::BlendState readBlend(const json& b, const std::string& place) {
                                                             {"reverse_subtract", BlendOp::ReverseSubtract},
                                                             {"min", BlendOp::Min},
                                                             {"max", BlendOp::Max}};
+  const std::vector<std::pair<const char*, LogicOp>> logicOps = {
+      {"clear", LogicOp::Clear},       {"and", LogicOp::And},
+      {"and_reverse", LogicOp::AndReverse}, {"copy", LogicOp::Copy},
+      {"and_inverted", LogicOp::AndInverted}, {"no_op", LogicOp::NoOp},
+      {"xor", LogicOp::Xor},           {"or", LogicOp::Or},
+      {"nor", LogicOp::Nor},           {"equivalent", LogicOp::Equivalent},
+      {"invert", LogicOp::Invert},     {"or_reverse", LogicOp::OrReverse},
+      {"copy_inverted", LogicOp::CopyInverted}, {"or_inverted", LogicOp::OrInverted},
+      {"nand", LogicOp::Nand},         {"set", LogicOp::Set}};
   softraster::BlendState state;
-  state.enable = readBool(b, "enable", place, true);
+  state.logicOpEnable = b.contains("logic_op");
+  if (state.logicOpEnable) state.logicOp = readEnum(b, "logic_op", place, LogicOp::Copy, logicOps);
+  state.enable = readBool(b, "enable", place, !state.logicOpEnable);
   const BlendFactor source = readEnum(b, "source", place, BlendFactor::One, factors);
   const BlendFactor destination = readEnum(b, "destination", place, BlendFactor::Zero, factors);
   const BlendOp op = readEnum(b, "op", place, BlendOp::Add, ops);

@@ -1,6 +1,6 @@
 #!/usr/bin/env python3
 """Writes the blending scenes of the conformance suite: blend_factors, blend_ops, blend_write_mask,
-blend_products, transparency and msaa_blend (one JSON file each).
+blend_products, transparency, msaa_blend, logic_ops and logic_ops_msaa (one JSON file each).
 The 2D scenes use the clip_space camera with positions laid out in pixels (x_win = x * W/2 + W/2),
 vertex colours with alpha, and colours chosen off the 1/255 grid so that every product rounds.
 Run from scenes/:  python3 tools/make_blend_scenes.py"""
@@ -223,3 +223,39 @@ dump("msaa_blend.json", scene(
     "src_alpha_saturate with alpha max, and reverse-subtract of the constant colour. Edges blend per sample "
     "(each covered sample blends with its own destination), then the samples are averaged by the resolve.",
     W, H, draws, samples=4))
+
+# ---- logic_ops: every VkLogicOp, plain, with a write mask, and with blendEnable set (ignored) ----
+LOGIC_OPS = ["clear", "and", "and_reverse", "copy", "and_inverted", "no_op", "xor", "or", "nor", "equivalent",
+             "invert", "or_reverse", "copy_inverted", "or_inverted", "nand", "set"]
+rng = random.Random(47)
+W, H = 272, 64
+draws = [background(W, H)]
+for row, extra in enumerate([{}, {"write_mask": "rb"},
+                             {"enable": True, "source": "src_alpha", "destination": "one_minus_src_alpha"}]):
+    for col, op in enumerate(LOGIC_OPS):
+        draws.append(quad(f"{op} ({['plain', 'write mask rb', 'blend enable set'][row]})", 8 + 16 * col + 0.5,
+                          6 + 19 * row + 0.5, 14.25, 17.25, [rgba(rng, 0.0, 1.0) for _ in range(4)], W, H,
+                          depth_test=False, blend=dict({"logic_op": op}, **extra)))
+dump("logic_ops.json", scene(
+    "Every logic op (VkLogicOp, columns left to right: clear, and, and_reverse, copy, and_inverted, no_op, xor, "
+    "or, nor, equivalent, invert, or_reverse, copy_inverted, or_inverted, nand, set) on the R8G8B8A8_UNORM target "
+    "over a background whose colour and alpha differ in every corner, each quad with a different colour in each "
+    "corner; top row plain, middle row with write mask rb (g and a keep the background), bottom row with "
+    "blendEnable also set (src_alpha / one_minus_src_alpha), which Vulkan ignores with a logic op. The op works "
+    "bit by bit on the colour converted to UNORM8 as a store converts it and on the stored byte.", W, H, draws))
+
+# ---- logic_ops_msaa: logic ops per sample with 4x MSAA ----
+rng = random.Random(53)
+W, H = 192, 128
+draws = [background(W, H)]
+for i in range(10):
+    cx, cy = 24 + (i % 5) * 36 + rng.uniform(-5, 5), 34 + (i // 5) * 60 + rng.uniform(-5, 5)
+    pts = [[cx + rng.uniform(-40, 40), cy + rng.uniform(-36, 36)] for _ in range(3)]
+    draws.append({"name": f"triangle {i} ({['xor', 'equivalent', 'or_inverted', 'nand', 'and_reverse'][i % 5]})",
+                  "positions": [clip(x, y, W, H, 0.5) for x, y in pts], "colours": [rgba(rng, 0.0, 1.0) for _ in range(3)],
+                  "cull": "none", "depth_test": False,
+                  "blend": {"logic_op": ["xor", "equivalent", "or_inverted", "nand", "and_reverse"][i % 5]}})
+dump("logic_ops_msaa.json", scene(
+    "4x MSAA with logic ops: ten overlapping triangles over a background whose colour and alpha differ in every "
+    "corner, drawn with xor, equivalent, or_inverted, nand and and_reverse in turn: each covered sample combines "
+    "with its own stored value, then the samples are averaged by the resolve.", W, H, draws, samples=4))

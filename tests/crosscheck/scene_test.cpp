@@ -220,6 +220,22 @@ TEST(SceneFile, BlendSidesConstantsAndWriteMask) {
   EXPECT_EQ(off.colorWriteMask, 0);
 }
 
+TEST(SceneFile, LogicOpTurnsBlendingOff) {
+  const softraster::BlendState x = blendWith({"draws.0.blend={\"logic_op\": \"xor\", \"write_mask\": \"rb\"}"});
+  EXPECT_TRUE(x.logicOpEnable);
+  EXPECT_EQ(x.logicOp, softraster::LogicOp::Xor);
+  EXPECT_FALSE(x.enable) << "Vulkan treats blending as disabled with a logic op";
+  EXPECT_EQ(x.colorWriteMask, softraster::kColourR | softraster::kColourB);
+  const softraster::BlendState both = blendWith({"draws.0.blend.logic_op=or_inverted"});  // beside the file's factors
+  EXPECT_TRUE(both.logicOpEnable);
+  EXPECT_EQ(both.logicOp, softraster::LogicOp::OrInverted);
+  EXPECT_FALSE(both.enable);
+  EXPECT_FALSE(blendWith({}).logicOpEnable);
+  EXPECT_NE(blendError({"draws.0.blend.logic_op=mix"})
+                .find("/draws/0/blend/logic_op: 'mix' is not one of clear, and, and_reverse, copy"),
+            std::string::npos);
+}
+
 TEST(SceneFile, BlendBadValuesAreOneErrorLineEach) {
   EXPECT_NE(blendError({"draws.0.blend.source=src1_color"})
                 .find("/draws/0/blend/source: 'src1_color' is not one of zero, one, src_color"),

@@ -1,5 +1,6 @@
 // Blending on RGBA8: the 8-bit multiply is exact, the scalar stage's arithmetic on known values,
-// and the fast path's SIMD blend is the scalar one byte for byte for every factor, op and mask.
+// every logic op on known bytes, and the fast path's SIMD blend is the scalar one byte for byte
+// for every factor, op, logic op and mask.
 #include <softraster/detail/fast/batch.hpp>
 #include <softraster/detail/fragment/colour.hpp>
 #include <softraster/state.hpp>
@@ -98,6 +99,30 @@ TEST(Blend, ScalarArithmeticOnKnownValues) {
   EXPECT_EQ(scalarBlend(s, d, softraster::detail::colourBlend(masked)), (std::array<std::uint8_t, 4>{10, 100, 240, 64}));
 }
 
+// Every VkLogicOp on s = 0xCA (1100 1010) over d = 0xA6 (1010 0110), worked out by hand; a write
+// mask keeps the destination's other bytes, and blendEnable beside a logic op is ignored.
+TEST(Blend, LogicOpsOnKnownBytes) {
+  using softraster::LogicOp;
+  const std::array<std::uint8_t, 16> expected = {0x00, 0x82, 0x48, 0xCA, 0x24, 0xA6, 0x6C, 0xEE,
+                                                 0x11, 0x93, 0x59, 0xDB, 0x35, 0xB7, 0x7D, 0xFF};
+  for (int op = 0; op < 16; ++op) {
+    for (bool enable : {false, true}) {
+      BlendState b = blendOf(BlendFactor::SrcAlpha, BlendFactor::OneMinusSrcAlpha, BlendOp::Add, BlendFactor::One,
+                             BlendFactor::One, BlendOp::Add);
+      b.enable = enable;
+      b.logicOpEnable = true;
+      b.logicOp = LogicOp(op);
+      const auto out = scalarBlend({0xCA, 0xCA, 0xCA, 0xCA}, {0xA6, 0xA6, 0xA6, 0xA6}, softraster::detail::colourBlend(b));
+      for (int c = 0; c < 4; ++c) EXPECT_EQ(out[static_cast<std::size_t>(c)], expected[static_cast<std::size_t>(op)]) << "op " << op;
+      b.colorWriteMask = softraster::kColourR | softraster::kColourB;
+      const auto masked = scalarBlend({0xCA, 0xCA, 0xCA, 0xCA}, {0xA6, 0xA6, 0xA6, 0xA6}, softraster::detail::colourBlend(b));
+      EXPECT_EQ(masked, (std::array<std::uint8_t, 4>{expected[static_cast<std::size_t>(op)], 0xA6,
+                                                     expected[static_cast<std::size_t>(op)], 0xA6}))
+          << "op " << op;
+    }
+  }
+}
+
 #if SOFTRASTER_HAS_FAST_PATH
 
 namespace {
@@ -156,6 +181,12 @@ TEST(Blend, FastPathIsTheScalarBlendForEveryFactorOpAndMask) {
       b.enable = enable;
       b.colorWriteMask = static_cast<std::uint8_t>(mask);
       check(b);
+      for (int op = 0; op < 16; ++op) {  // a logic op instead of blending, whatever enable says
+        b.logicOpEnable = true;
+        b.logicOp = softraster::LogicOp(op);
+        check(b);
+        b.logicOpEnable = false;
+      }
     }
   }
 }

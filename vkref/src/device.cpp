@@ -176,6 +176,7 @@ Status Device::createDevice() {
   features.fillModeNonSolid = features2.features.fillModeNonSolid;
   features.largePoints = features2.features.largePoints;
   features.geometryShader = features2.features.geometryShader;  // the adjacency topologies need it
+  features.logicOp = features2.features.logicOp;
 
   // VK_EXT_line_rasterization (Bresenham and stippled lines) and VK_EXT_provoking_vertex
   // (provoking vertex last): enabled with the features vkref uses when the device has them.

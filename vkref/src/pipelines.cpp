@@ -30,11 +30,13 @@ static_assert(static_cast<int>(softraster::StencilOp::IncrementAndClamp) == VK_S
               "softraster::StencilOp lists Vulkan's stencil ops in Vulkan's order");
 static_assert(static_cast<int>(softraster::BlendFactor::SrcAlphaSaturate) == VK_BLEND_FACTOR_SRC_ALPHA_SATURATE &&
                   static_cast<int>(softraster::BlendOp::Max) == VK_BLEND_OP_MAX &&
-                  static_cast<int>(softraster::kColourA) == static_cast<int>(VK_COLOR_COMPONENT_A_BIT),
+                  static_cast<int>(softraster::kColourA) == static_cast<int>(VK_COLOR_COMPONENT_A_BIT) &&
+                  static_cast<int>(softraster::LogicOp::Set) == VK_LOGIC_OP_SET &&
+                  static_cast<int>(softraster::LogicOp::Xor) == VK_LOGIC_OP_XOR,
               "softraster's blend enums are Vulkan's values");
 // A tripwire: a field added to PipelineState must also join PipelineCache::Key (and compile()),
 // or draws differing only in it would share a pipeline.
-static_assert(sizeof(softraster::PipelineState) == 144, "PipelineState changed: update PipelineCache::Key");
+static_assert(sizeof(softraster::PipelineState) == 148, "PipelineState changed: update PipelineCache::Key");
 
 // The viewport a draw uses: a zero width or height means the whole framebuffer.
 VkViewport viewportFor(const softraster::Viewport& v, std::uint32_t width, std::uint32_t height) {
@@ -146,6 +148,9 @@ Status checkDraw(const DrawCall& d, std::uint32_t width, std::uint32_t height, c
     return Status::error("depth bias clamp is not supported by the device");
   if (s.rasterization.lineWidth != 1.0f && !features.wideLines)
     return Status::error("wide lines are not supported by the device");
+  if (s.blend.logicOpEnable && !features.logicOp)
+    return Status::error("logic ops are not supported by the device (the logicOp feature)");
+  if (s.blend.logicOp > softraster::LogicOp::Set) return Status::error("unknown logic op");
   if (s.rasterization.polygonMode > softraster::PolygonMode::Point) return Status::error("unsupported polygon mode");
   if (s.rasterization.polygonMode != softraster::PolygonMode::Fill && !features.fillModeNonSolid)
     return Status::error("polygon modes line and point are not supported by the device");
@@ -332,6 +337,7 @@ softraster::Result<VkPipeline> PipelineCache::get(const DrawCall& d, const Targe
   key.dstAlphaFactor = byte(b.dstAlphaBlendFactor);
   key.alphaOp = byte(b.alphaBlendOp);
   key.writeMask = b.colorWriteMask;
+  key.logicOp = b.logicOpEnable ? byte(b.logicOp) : 0xff;
   for (int i = 0; i < 4; ++i) key.blendConstants[static_cast<std::size_t>(i)] = bits(b.blendConstants[i]);
 
   if (const auto found = pipelines_.find(key); found != pipelines_.end()) return found->second;
@@ -458,6 +464,9 @@ softraster::Result<VkPipeline> PipelineCache::compile(const Program& p, const so
                                               .attachmentCount = target.colour ? 1u : 0u,
                                               .pAttachments = &blendAttachment};
     for (int i = 0; i < 4; ++i) blend.blendConstants[i] = b.blendConstants[i];
+    // softraster's LogicOp is VkLogicOp's values.
+    blend.logicOpEnable = b.logicOpEnable ? VK_TRUE : VK_FALSE;
+    blend.logicOp = static_cast<VkLogicOp>(b.logicOp);
     const VkPipelineRenderingCreateInfo rendering{.sType = VK_STRUCTURE_TYPE_PIPELINE_RENDERING_CREATE_INFO,
                                                   .colorAttachmentCount = target.colour ? 1u : 0u,
                                                   .pColorAttachmentFormats = &kColourFormat,

@@ -115,6 +115,7 @@ class PipelineCache {
     bool blend = false;
     std::uint8_t srcColorFactor = 0, dstColorFactor = 0, colorOp = 0, srcAlphaFactor = 0, dstAlphaFactor = 0,
                  alphaOp = 0, writeMask = 0;
+    std::uint8_t logicOp = 0xff;  // VkLogicOp, 0xff: logicOpEnable off
     std::array<std::uint32_t, 4> blendConstants{};  // by their bits
     auto operator<=>(const Key&) const = default;
   };

@@ -170,6 +170,7 @@ class Context {
     }
     if (b.colorBlendOp > BlendOp::Max || b.alphaBlendOp > BlendOp::Max) return Status::error("unknown blend op");
     if (b.colorWriteMask > kColourRGBA) return Status::error("colour write mask has bits other than R, G, B and A");
+    if (b.logicOp > LogicOp::Set) return Status::error("unknown logic op");
     const DepthState& ds = state.depth;
     if (ds.compareOp > CompareOp::Always) return Status::error("unknown depth compare op");
     for (const StencilOpState* face : {&ds.front, &ds.back}) {

@@ -149,15 +149,40 @@ enum class BlendFactor : std::uint8_t {
 // VkBlendOp's core set, 0..4 in Vulkan's order (MIN and MAX ignore the factors).
 enum class BlendOp : std::uint8_t { Add, Subtract, ReverseSubtract, Min, Max };
 
+// VkLogicOp, in Vulkan's order (s: the fragment's colour converted to the attachment's format,
+// d: the stored value; bitwise).
+enum class LogicOp : std::uint8_t {
+  Clear,         // 0
+  And,           // s & d
+  AndReverse,    // s & ~d
+  Copy,          // s
+  AndInverted,   // ~s & d
+  NoOp,          // d
+  Xor,           // s ^ d
+  Or,            // s | d
+  Nor,           // ~(s | d)
+  Equivalent,    // ~(s ^ d)
+  Invert,        // ~d
+  OrReverse,     // s | ~d
+  CopyInverted,  // ~s
+  OrInverted,    // ~s | d
+  Nand,          // ~(s & d)
+  Set,           // all ones
+};
+
 // VkColorComponentFlagBits.
 enum ColourComponent : std::uint8_t { kColourR = 1, kColourG = 2, kColourB = 4, kColourA = 8, kColourRGBA = 15 };
 
 // VkPipelineColorBlendAttachmentState of the one colour attachment, plus
-// VkPipelineColorBlendStateCreateInfo::blendConstants (static pipeline state). The default is
-// blending off with every component written. The write mask applies with blending off too.
-// On the R8G8B8A8_UNORM target both renderers blend in 8-bit integers (fragment/colour.hpp).
+// VkPipelineColorBlendStateCreateInfo::blendConstants, logicOpEnable and logicOp (static
+// pipeline state). The default is blending off with every component written. The write mask
+// applies with blending off too. On the R8G8B8A8_UNORM target both renderers blend in 8-bit
+// integers (fragment/colour.hpp). With logicOpEnable the logic op replaces blending (Vulkan:
+// blending is then treated as disabled) and works on the stored bytes.
 struct BlendState {
   bool enable = false;
+  bool logicOpEnable = false;
+  LogicOp logicOp = LogicOp::Copy;
   BlendFactor srcColorBlendFactor = BlendFactor::One;
   BlendFactor dstColorBlendFactor = BlendFactor::Zero;
   BlendOp colorBlendOp = BlendOp::Add;

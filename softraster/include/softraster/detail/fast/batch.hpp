@@ -179,7 +179,7 @@ inline Mask depthTestPasses(CompareOp op, Words incoming, Words stored) {
 
 // blendColour per lane on packed RGBA8 (fragment/colour.hpp's arithmetic, 32 bytes at a time):
 // factors as bytes, the products in 16-bit lanes, saturating 8-bit adds and subtractions, byte
-// min and max, then the write mask.
+// min and max, or a logic op on the bytes, then the write mask.
 [[SOFTRASTER_FAST_TARGET]] inline __m256i bytesOf(Words w) { return reinterpret_cast<__m256i>(w); }
 
 // Each pixel's alpha byte in all four of its bytes.
@@ -252,13 +252,38 @@ struct BlendInputs {
   return s;
 }
 
+// logicOp8 (fragment/colour.hpp) on every byte.
+[[SOFTRASTER_FAST_TARGET]] inline __m256i logicOpBytes(LogicOp op, __m256i s, __m256i d) {
+  switch (op) {
+    case LogicOp::Clear: return _mm256_setzero_si256();
+    case LogicOp::And: return _mm256_and_si256(s, d);
+    case LogicOp::AndReverse: return _mm256_andnot_si256(d, s);
+    case LogicOp::Copy: return s;
+    case LogicOp::AndInverted: return _mm256_andnot_si256(s, d);
+    case LogicOp::NoOp: return d;
+    case LogicOp::Xor: return _mm256_xor_si256(s, d);
+    case LogicOp::Or: return _mm256_or_si256(s, d);
+    case LogicOp::Nor: return inverse(_mm256_or_si256(s, d));
+    case LogicOp::Equivalent: return inverse(_mm256_xor_si256(s, d));
+    case LogicOp::Invert: return inverse(d);
+    case LogicOp::OrReverse: return _mm256_or_si256(s, inverse(d));
+    case LogicOp::CopyInverted: return inverse(s);
+    case LogicOp::OrInverted: return _mm256_or_si256(inverse(s), d);
+    case LogicOp::Nand: return inverse(_mm256_and_si256(s, d));
+    case LogicOp::Set: return _mm256_set1_epi8(-1);
+  }
+  return s;
+}
+
 [[SOFTRASTER_FAST_TARGET]] inline Words blendColour(Words source, Words destination, const ColourBlend& blend) {
   if (!blend.readsDestination) return source;
   const BlendState& b = blend.state;
   const __m256i s = bytesOf(source), d = bytesOf(destination);
   const __m256i alphaBytes = _mm256_set1_epi32(static_cast<int>(0xff000000u));
   __m256i out = s;
-  if (b.enable) {
+  if (b.logicOpEnable) {  // blending is off whatever b.enable says
+    out = logicOpBytes(b.logicOp, s, d);
+  } else if (b.enable) {
     const auto k = blend.constants;
     const std::uint32_t packed = k[0] | (k[1] << 8) | (k[2] << 16) | (std::uint32_t{k[3]} << 24);
     const BlendInputs in{s, d, alphaInEveryByte(s), alphaInEveryByte(d), _mm256_set1_epi32(static_cast<int>(packed)),

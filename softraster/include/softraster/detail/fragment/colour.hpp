@@ -13,9 +13,12 @@
 //     x*f/255 rounded to nearest but for 24 pairs, see mulUnorm8), ADD a saturating add,
 //     SUBTRACT and REVERSE_SUBTRACT saturating subtractions, MIN and MAX of source and
 //     destination (lavapipe sets their factors to ONE, lvp_execute.c), per channel;
-//   - components the write mask leaves out keep the destination byte (with blending off too).
-// Deliberately absent: dual-source factors, logic ops, other colour formats (sRGB and float
-// targets blend in float in lavapipe).
+//   - components the write mask leaves out keep the destination byte (with blending off too);
+//   - a logic op (VkLogicOp) instead of blending works bit by bit on the source converted to
+//     UNORM8 as a store converts it and the destination byte (lp_build_logicop on the converted
+//     values), then the write mask.
+// Deliberately absent: dual-source factors, other colour formats (sRGB and float targets blend
+// in float in lavapipe, and take no logic op).
 #pragma once
 
 #include <softraster/math.hpp>
@@ -52,8 +55,33 @@ struct ColourBlend {
 inline ColourBlend colourBlend(const BlendState& state) {
   ColourBlend b{state};
   for (int i = 0; i < 4; ++i) b.constants[i] = unorm8FromFloat(state.blendConstants[i]);
-  b.readsDestination = state.enable || (state.colorWriteMask & kColourRGBA) != kColourRGBA;
+  b.readsDestination = state.enable || (state.colorWriteMask & kColourRGBA) != kColourRGBA ||
+                       (state.logicOpEnable && state.logicOp != LogicOp::Copy);
   return b;
+}
+
+// VkLogicOp on one byte (s the source, d the destination), as the table in state.hpp.
+inline int logicOp8(LogicOp op, int s, int d) {
+  int out = 0;
+  switch (op) {
+    case LogicOp::Clear: out = 0; break;
+    case LogicOp::And: out = s & d; break;
+    case LogicOp::AndReverse: out = s & ~d; break;
+    case LogicOp::Copy: out = s; break;
+    case LogicOp::AndInverted: out = ~s & d; break;
+    case LogicOp::NoOp: out = d; break;
+    case LogicOp::Xor: out = s ^ d; break;
+    case LogicOp::Or: out = s | d; break;
+    case LogicOp::Nor: out = ~(s | d); break;
+    case LogicOp::Equivalent: out = ~(s ^ d); break;
+    case LogicOp::Invert: out = ~d; break;
+    case LogicOp::OrReverse: out = s | ~d; break;
+    case LogicOp::CopyInverted: out = ~s; break;
+    case LogicOp::OrInverted: out = ~s | d; break;
+    case LogicOp::Nand: out = ~(s & d); break;
+    case LogicOp::Set: out = 0xff; break;
+  }
+  return out & 0xff;
 }
 
 // x * f / 255 in 16-bit integers, lp_build_mul_norm's geometric series with rounding: the product
@@ -117,7 +145,9 @@ inline int blendChannel8(BlendOp op, BlendFactor sf, BlendFactor df, int c, cons
   for (int i = 0; i < 4; ++i) {
     if (!(b.colorWriteMask & (1u << i))) continue;
     int out = s[i];
-    if (b.enable) {
+    if (b.logicOpEnable) {  // blending is off whatever b.enable says
+      out = logicOp8(b.logicOp, s[i], d[i]);
+    } else if (b.enable) {
       out = i < 3 ? blendChannel8(b.colorBlendOp, b.srcColorBlendFactor, b.dstColorBlendFactor, i, s, d, blend.constants)
                   : blendChannel8(b.alphaBlendOp, b.srcAlphaBlendFactor, b.dstAlphaBlendFactor, i, s, d, blend.constants);
     }
