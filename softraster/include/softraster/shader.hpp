@@ -108,8 +108,12 @@ template <class S>
 concept WritesFragDepth = UsesFragmentBuiltins<S> && requires {
   { S::kWritesFragDepth } -> std::convertible_to<bool>;
 } && S::kWritesFragDepth;
+// A fragment function in one of the two special forms (quads, built-ins): a plain bool, not a
+// concept, so a shader that has neither gets one line about it in a failed check, not two chains.
 template <class S>
-concept HasStaticShaderFragment = ShadesQuads<S> || UsesFragmentBuiltins<S> || requires(const typename S::Uniforms& u, const float* in) {
+inline constexpr bool kSpecialFragmentForm = ShadesQuads<S> || UsesFragmentBuiltins<S>;
+template <class S>
+concept HasStaticShaderFragment = kSpecialFragmentForm<S> || requires(const typename S::Uniforms& u, const float* in) {
   S::fragment(u, in);
 } || requires(const typename S::Uniforms& u, const float* in) { S::template fragment<float>(u, in); };
 template <class S>
@@ -117,7 +121,7 @@ concept HasShaderVertexSignature = requires(const typename S::Uniforms& u, const
   { S::vertex(u, v, out) } -> std::same_as<Vec4>;
 };
 template <class S>
-concept HasShaderFragmentSignature = ShadesQuads<S> || UsesFragmentBuiltins<S> || requires(const typename S::Uniforms& u, const float* in) {
+concept HasShaderFragmentSignature = kSpecialFragmentForm<S> || requires(const typename S::Uniforms& u, const float* in) {
   { S::fragment(u, in) } -> std::same_as<Vec4>;
 } || requires(const typename S::Uniforms& u, const float* in) {
   { S::template fragment<float>(u, in) } -> std::same_as<Vec4>;
