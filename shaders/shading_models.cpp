@@ -14,6 +14,7 @@ std::span<const ShadingModel> blinnPhongModels();
 std::span<const ShadingModel> texturedModels();
 std::span<const ShadingModel> shadowedModels();
 std::span<const ShadingModel> depthModels();
+std::span<const ShadingModel> builtinsModels();
 }  // namespace rows
 
 std::span<const ShadingModel> shadingModels() {
@@ -21,7 +22,7 @@ std::span<const ShadingModel> shadingModels() {
     std::vector<ShadingModel> all;
     for (auto family : {rows::vertexColorModels(), rows::courseLightModels(), rows::phongModels(),
                         rows::blinnPhongModels(), rows::texturedModels(), rows::shadowedModels(),
-                        rows::depthModels()}) {
+                        rows::depthModels(), rows::builtinsModels()}) {
       all.insert(all.end(), family.begin(), family.end());
     }
     return all;

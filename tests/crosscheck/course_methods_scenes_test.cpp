@@ -45,6 +45,8 @@ TEST_P(CourseSceneDrawn, WithEveryMethod) {
         options.affineVaryings = affine;
         if (inverseZ) options.depthMode = softraster::DepthMode::InverseZ;
         const auto frame = crosscheck::renderSoftraster(*scene, options);
+        // gl_FragDepth has no meaning in the course's 1/z buffer: that draw is refused, with one error.
+        if (inverseZ && !frame && frame.error().find("gl_FragDepth needs the Vulkan depth mode") != std::string::npos) continue;
         ASSERT_TRUE(frame) << frame.error();
         ASSERT_EQ(frame->rgba.size(), std::size_t{4} * scene->width * scene->height);
         if (inverseZ) continue;  // a 1/z frame's clear depth differs, so coverage is not counted by it

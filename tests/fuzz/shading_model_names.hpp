@@ -37,6 +37,9 @@ inline constexpr ShadingModelName kShadingModelNames[] = {
     {"blinn_phong_shadowed_manual", shaders::kReadsNormals, 1, shaders::ShadowMapSampler::Plain},
     {"depth_only", 0, 0, shaders::ShadowMapSampler::None, true},
     {"depth_view", 0},
+    {"builtins_discard", 0},
+    {"builtins_frag_depth", 0},
+    {"varyings_64", 0},
 };
 
 }  // namespace fuzz

@@ -214,6 +214,15 @@ class Context {
                         std::span<const typename Shader::Vertex> vertices, std::span<const std::uint32_t> indices,
                         Framebuffer& framebuffer, detail::DrawScratch& scratch) const {
     if (Status status = validate(state, framebuffer); !status) return status;
+    if constexpr (UsesFragmentBuiltins<Shader>) {
+      if (state.rasterization.polygonMode != PolygonMode::Fill && detail::isTriangleTopology(state.topology)) {
+        return Status::error("polygon modes line and point with the fragment built-ins are not supported by softraster "
+                             "yet (lavapipe gives their lines and points the polygon's gl_FrontFacing)");
+      }
+      if (WritesFragDepth<Shader> && options_.depthMode != DepthMode::Vulkan) {
+        return Status::error("gl_FragDepth needs the Vulkan depth mode, not the 1/z depth buffer");
+      }
+    }
     if (drawIfFormat<Shader, DepthFormat::D16Unorm, Formats...>(state, uniforms, vertices, indices, framebuffer, scratch) ||
         drawIfFormat<Shader, DepthFormat::X8D24UnormPack32, Formats...>(state, uniforms, vertices, indices, framebuffer,
                                                                         scratch) ||
@@ -241,13 +250,16 @@ class Context {
   void drawWithFormat(const PipelineState& state, const typename Shader::Uniforms& uniforms,
                       std::span<const typename Shader::Vertex> vertices, std::span<const std::uint32_t> indices,
                       Framebuffer& framebuffer, detail::DrawScratch& scratch) const {
-    if (isCourseMethod(options_.method)) {
-      if (options_.fusedMultiplyAdd) {
-        drawCourseFused<Shader, Format>(state, uniforms, vertices, indices, framebuffer, scratch);
-      } else {
-        drawCourse<Shader, false, Format>(state, uniforms, vertices, indices, framebuffer, scratch);
+    // A shader with the fragment built-ins is drawn by the exact method whatever the method.
+    if constexpr (!UsesFragmentBuiltins<Shader>) {
+      if (isCourseMethod(options_.method)) {
+        if (options_.fusedMultiplyAdd) {
+          drawCourseFused<Shader, Format>(state, uniforms, vertices, indices, framebuffer, scratch);
+        } else {
+          drawCourse<Shader, false, Format>(state, uniforms, vertices, indices, framebuffer, scratch);
+        }
+        return;
       }
-      return;
     }
 #if SOFTRASTER_HAS_FAST_PATH
     if constexpr (ShadesBatches<Shader>) {

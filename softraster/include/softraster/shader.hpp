@@ -20,6 +20,9 @@
 //                                             written for FloatBatch only, shaded in 2x2 quads
 //   static constexpr std::array<Interpolation, kVaryings> S::kInterpolation;    default: all perspective
 //   static float S::pointSize(const Uniforms&, const Vertex&);                  gl_PointSize; default 1
+//   a fragment function with a third parameter, FragmentBuiltins<F>& (fragment_builtins.hpp):
+//   gl_FragCoord, gl_FrontFacing and discard; such a shader runs before the depth and stencil
+//   tests, on both exact paths (the course's methods draw it with the exact method)
 // Anything else a shader declares (the project's twins declare kAttributes, VertexAttribute
 // below, for vkref) softraster does not read.
 // A type that breaks the interface fails to compile at the draw call with one static_assert
@@ -28,6 +31,7 @@
 // shader does not declare costs nothing.
 #pragma once
 
+#include <softraster/fragment_builtins.hpp>
 #include <softraster/math.hpp>
 #include <softraster/simd.hpp>
 
@@ -39,7 +43,7 @@
 
 namespace softraster {
 
-inline constexpr int kMaxVaryings = 16;
+inline constexpr int kMaxVaryings = 64;  // Vulkan's minimum maxVertexOutputComponents
 
 // How a varying is interpolated across a primitive (GLSL: smooth, noperspective, flat).
 enum class Interpolation : std::uint8_t { Perspective, NoPerspective, Flat };
@@ -94,8 +98,22 @@ concept ShadesQuads = requires {
 } && S::kQuads && requires(const typename S::Uniforms& u, const FloatBatch* in) {
   { S::template fragment<FloatBatch>(u, in) } -> std::same_as<Vec4T<FloatBatch>>;
 };
+// A fragment function that reads or writes the fragment built-ins (fragment_builtins.hpp).
 template <class S>
-concept HasStaticShaderFragment = ShadesQuads<S> || requires(const typename S::Uniforms& u, const float* in) {
+concept UsesFragmentBuiltins = requires(const typename S::Uniforms& u, const float* in, FragmentBuiltins<float>& b) {
+  { S::template fragment<float>(u, in, b) } -> std::same_as<Vec4>;
+};
+// A shader with the built-ins that writes gl_FragDepth (fragment_builtins.hpp).
+template <class S>
+concept WritesFragDepth = UsesFragmentBuiltins<S> && requires {
+  { S::kWritesFragDepth } -> std::convertible_to<bool>;
+} && S::kWritesFragDepth;
+// A fragment function in one of the two special forms (quads, built-ins): a plain bool, not a
+// concept, so a shader that has neither gets one line about it in a failed check, not two chains.
+template <class S>
+inline constexpr bool kSpecialFragmentForm = ShadesQuads<S> || UsesFragmentBuiltins<S>;
+template <class S>
+concept HasStaticShaderFragment = kSpecialFragmentForm<S> || requires(const typename S::Uniforms& u, const float* in) {
   S::fragment(u, in);
 } || requires(const typename S::Uniforms& u, const float* in) { S::template fragment<float>(u, in); };
 template <class S>
@@ -103,7 +121,7 @@ concept HasShaderVertexSignature = requires(const typename S::Uniforms& u, const
   { S::vertex(u, v, out) } -> std::same_as<Vec4>;
 };
 template <class S>
-concept HasShaderFragmentSignature = ShadesQuads<S> || requires(const typename S::Uniforms& u, const float* in) {
+concept HasShaderFragmentSignature = kSpecialFragmentForm<S> || requires(const typename S::Uniforms& u, const float* in) {
   { S::fragment(u, in) } -> std::same_as<Vec4>;
 } || requires(const typename S::Uniforms& u, const float* in) {
   { S::template fragment<float>(u, in) } -> std::same_as<Vec4>;
@@ -130,7 +148,7 @@ constexpr bool checkShaderInterface() {
     static_assert(HasShaderUniformsType<S>, "softraster: the shader has no `Uniforms` type (struct Uniforms { ... }; may be empty)");
     return false;
   } else if constexpr (!HasShaderVaryingCount<S>) {
-    static_assert(HasShaderVaryingCount<S>, "softraster: the shader needs `static constexpr int kVaryings` between 0 and softraster::kMaxVaryings (16)");
+    static_assert(HasShaderVaryingCount<S>, "softraster: the shader needs `static constexpr int kVaryings` between 0 and softraster::kMaxVaryings (64)");
     return false;
   } else if constexpr (!HasShaderVertexMember<S>) {
     static_assert(HasShaderVertexMember<S>, "softraster: the shader has no `vertex` function (or it is overloaded); write static softraster::Vec4 vertex(const Uniforms&, const Vertex&, float* varyingsOut)");
@@ -207,6 +225,8 @@ float pointSizeOf(const typename Shader::Uniforms& uniforms, const typename Shad
 template <class Shader>
 concept ShadesBatches = requires(const typename Shader::Uniforms& u, const FloatBatch* v) {
   { Shader::template fragment<FloatBatch>(u, v) } -> std::same_as<Vec4T<FloatBatch>>;
+} || requires(const typename Shader::Uniforms& u, const FloatBatch* v, FragmentBuiltins<FloatBatch>& b) {
+  { Shader::template fragment<FloatBatch>(u, v, b) } -> std::same_as<Vec4T<FloatBatch>>;
 };
 
 // One pixel's colour from the shader, whichever form its fragment function takes.
@@ -217,6 +237,12 @@ Vec4 shadeFragment(const typename Shader::Uniforms& uniforms, const float* varyi
   } else {
     return Shader::fragment(uniforms, varyings);
   }
+}
+
+// One pixel's colour from a shader that takes the fragment built-ins (UsesFragmentBuiltins).
+template <class Shader>
+Vec4 shadeFragment(const typename Shader::Uniforms& uniforms, const float* varyings, FragmentBuiltins<float>& builtins) {
+  return Shader::template fragment<float>(uniforms, varyings, builtins);
 }
 
 }  // namespace softraster

@@ -7,7 +7,7 @@
 struct Broken {
   using Vertex = int;
   struct Uniforms {};
-  static constexpr int kVaryings = 17;
+  static constexpr int kVaryings = 65;
   static softraster::Vec4 vertex(const Uniforms&, const Vertex&, float*) { return {0, 0, 0, 1}; }
   template <class F>
   static softraster::Vec4T<F> fragment(const Uniforms&, const F*) { return {F(1), F(0), F(0), F(1)}; }

@@ -21,8 +21,10 @@
 // pair of adjacent pixels' eight samples one vector, as they lie in memory) and the shader once
 // per pixel at its centre, as the scalar shadeSamples does. The stencil test and update run on
 // the lanes (fast/stencil.hpp) after the depth test, per pixel or per sample, with the
-// primitive's face; a fragment failing either test is not shaded. Lines and points go to the
-// scalar stage it holds.
+// primitive's face; a fragment failing either test is not shaded. A shader with the fragment
+// built-ins (shader.hpp) is shaded first, before the tests, and its discarded lanes (all samples
+// of such a pixel) are dropped from coverage, as the scalar stage does. Lines and points go to
+// the scalar stage it holds.
 // Threads are the band queue's (fast/bands.hpp), which gives each thread a stage of its own.
 // Deliberately absent: a per-tile depth range, AVX-512.
 #pragma once
@@ -246,6 +248,12 @@ class FastFragmentStage {
     const Floats fx = broadcast(static_cast<float>(px)) + kLaneX;
     const Floats fy = broadcast(static_cast<float>(py)) + kLaneY;
     const std::size_t first = static_cast<std::size_t>(py) * target_.width + static_cast<std::size_t>(px);
+    [[maybe_unused]] Words shaded{};
+    [[maybe_unused]] Floats fragDepth{};
+    if constexpr (kBuiltins) {  // shaded first: discarded lanes test and write nothing (as the scalar stage)
+      shaded = shadeWithBuiltins(t, fx, fy, fx, fy, covered, fragDepth);
+      if (covered == 0) return;
+    }
     Words stored{}, current{};
     Mask passes = ~Mask{};
     const unsigned rasterized = covered;  // the stencil is tested and updated for all of them
@@ -258,7 +266,8 @@ class FastFragmentStage {
         stored = reinterpret_cast<Words>(evaluatePlane(t.oneOverW, fx, fy));
         passes = depthTestPasses<Format>(depthState.compareOp, current, stored);
       } else {
-        const Floats z = evaluatePlane(t.depth, fx, fy) + t.depthOffset;
+        Floats z = fragDepth;
+        if constexpr (!kWritesDepth) z = evaluatePlane(t.depth, fx, fy) + t.depthOffset;
         stored = depthToStorage<Format>(clampDepth(z, target_.depthRange));
         passes = depthTestPasses<Format>(depthState.compareOp, stored, current);
       }
@@ -278,9 +287,12 @@ class FastFragmentStage {
       covered &= maskBits(stencilPasses);
       if (covered == 0) return;
     }
-    std::array<FloatBatch, (N == 0 ? 1 : N)> varyings{};
-    if constexpr (N > 0) interpolateBlock(std::make_index_sequence<N>{}, t, fx, fy, varyings.data());
-    Words colour = packColour(Shader::template fragment<FloatBatch>(uniforms_, varyings.data()));
+    Words colour = shaded;
+    if constexpr (!kBuiltins) {
+      std::array<FloatBatch, (N == 0 ? 1 : N)> varyings{};
+      if constexpr (N > 0) interpolateBlock(std::make_index_sequence<N>{}, t, fx, fy, varyings.data());
+      colour = packColour(Shader::template fragment<FloatBatch>(uniforms_, varyings.data()));
+    }
     if (target_.blend.readsDestination) colour = blendColour(colour, loadBlock(colour_ + first, target_.width, covered), target_.blend);
     if (covered == 0xffu) {
       storeFullBlock(colour_ + first, target_.width, colour);
@@ -413,6 +425,15 @@ class FastFragmentStage {
     const std::size_t width = target_.width;
     const std::size_t firstPixel = static_cast<std::size_t>(py) * width + static_cast<std::size_t>(px);
     const Floats x0 = broadcast(static_cast<float>(px)), y0 = broadcast(static_cast<float>(py));
+    [[maybe_unused]] __m256i shaded{};
+    [[maybe_unused]] Floats fragDepth{};
+    if constexpr (kBuiltins) {  // shaded first, at the pixel centres; a discard drops every sample of its pixel
+      const Floats cx = (x0 + kLaneX) + broadcast(0.5f), cy = (y0 + kLaneY) + broadcast(0.5f);
+      unsigned kept = 0xffu;
+      shaded = reinterpret_cast<__m256i>(shadeWithBuiltins(t, x0 + kLaneX, y0 + kLaneY, cx, cy, kept, fragDepth));
+      covered &= kSpreadToSamples[kept];
+      if (covered == 0) return;
+    }
     std::uint32_t passed = covered;
     Words stored[4]{}, current[4]{};
     if (depthState.testEnable) {
@@ -426,7 +447,14 @@ class FastFragmentStage {
         // The sample's position as the scalar path forms it: float(pixel) + sample offset.
         const Floats fx = (x0 + broadcast(static_cast<float>(column)) + kHalfX) + kSampleX;
         const Floats fy = (y0 + broadcast(static_cast<float>(row))) + kSampleY;
-        const Floats z = evaluatePlane(t.depth, fx, fy) + t.depthOffset;
+        Floats z;
+        if constexpr (kWritesDepth) {  // gl_FragDepth: the pixel's one value on each of its samples
+          const int lane = 4 * row + column;
+          z = reinterpret_cast<Floats>(_mm256_permutevar8x32_ps(
+              reinterpret_cast<__m256>(fragDepth), _mm256_setr_epi32(lane, lane, lane, lane, lane + 1, lane + 1, lane + 1, lane + 1)));
+        } else {
+          z = evaluatePlane(t.depth, fx, fy) + t.depthOffset;
+        }
         stored[pair] = depthToStorage<Format>(clampDepth(z, target_.depthRange));
         passed |= (bits & maskBits(depthTestPasses<Format>(depthState.compareOp, stored[pair], current[pair]))) << (8 * pair);
       }
@@ -450,12 +478,14 @@ class FastFragmentStage {
       if (passed == 0) return;
     }
     // Shaded once per pixel, at its centre.
-    const Floats fx = (x0 + kLaneX) + broadcast(0.5f);
-    const Floats fy = (y0 + kLaneY) + broadcast(0.5f);
-    std::array<FloatBatch, (N == 0 ? 1 : N)> varyings{};
-    if constexpr (N > 0) interpolateBlock(std::make_index_sequence<N>{}, t, fx, fy, varyings.data());
-    const __m256i colour =
-        reinterpret_cast<__m256i>(packColour(Shader::template fragment<FloatBatch>(uniforms_, varyings.data())));
+    __m256i colour = shaded;
+    if constexpr (!kBuiltins) {
+      const Floats fx = (x0 + kLaneX) + broadcast(0.5f);
+      const Floats fy = (y0 + kLaneY) + broadcast(0.5f);
+      std::array<FloatBatch, (N == 0 ? 1 : N)> varyings{};
+      if constexpr (N > 0) interpolateBlock(std::make_index_sequence<N>{}, t, fx, fy, varyings.data());
+      colour = reinterpret_cast<__m256i>(packColour(Shader::template fragment<FloatBatch>(uniforms_, varyings.data())));
+    }
     for (int pair = 0; pair < 4; ++pair) {
       const unsigned bits = (passed >> (8 * pair)) & 0xffu;
       if (bits == 0) continue;
@@ -476,6 +506,28 @@ class FastFragmentStage {
       }
     }
   }
+
+  // A shader with the fragment built-ins (fragment/builtins.hpp), on the lanes: its packed colour,
+  // its gl_FragDepth in `fragDepth`, and `lanes` (bit per lane) narrowed to those it did not
+  // discard. (px, py): the lanes' pixel coordinates; (sx, sy): where the planes are evaluated
+  // (the same, or the MSAA pixel centres).
+  [[SOFTRASTER_FAST_TARGET]] Words shadeWithBuiltins(const BlockPlanes& t, Floats px, Floats py, Floats sx, Floats sy,
+                                                     unsigned& lanes, Floats& fragDepth) const {
+    std::array<FloatBatch, (N == 0 ? 1 : N)> varyings{};
+    if constexpr (N > 0) interpolateBlock(std::make_index_sequence<N>{}, t, sx, sy, varyings.data());
+    FragmentBuiltins<FloatBatch> builtins;
+    builtins.fragCoord = {FloatBatch(px + broadcast(0.5f)), FloatBatch(py + broadcast(0.5f)),
+                          FloatBatch(evaluatePlane(t.depth, sx, sy) + t.depthOffset),
+                          FloatBatch(evaluatePlane(t.oneOverW, sx, sy))};
+    builtins.frontFacing = t.frontFacing;
+    const Words colour = packColour(Shader::template fragment<FloatBatch>(uniforms_, varyings.data(), builtins));
+    lanes &= ~maskBits(builtins.discard.native());
+    fragDepth = builtins.fragDepth.native();
+    return colour;
+  }
+
+  static constexpr bool kBuiltins = UsesFragmentBuiltins<Shader>;
+  static constexpr bool kWritesDepth = WritesFragDepth<Shader>;
 
   FragmentStage<Shader, true, Format> scalar_;
   const typename Shader::Uniforms& uniforms_;

@@ -11,11 +11,16 @@
 //     or as the spec's per-fragment scissor test does (Deviations::Spec);
 //   - depth is tested and written only with the depth test on (Vulkan); the course's 1/z buffer
 //     (DepthMode::InverseZ) compares the other way round, larger being nearer.
+//   - a shader with the fragment built-ins (shader.hpp) runs before the depth and stencil tests,
+//     and a fragment it discards writes nothing (lavapipe: late tests, or early ones with the
+//     write deferred to the kill mask; the same pixels either way); one that writes
+//     gl_FragDepth has every sample tested and written with that value (clamped, no bias);
 // Deliberately absent: coverage itself (exact/rasterizer.hpp walks it), sample shading.
 #pragma once
 
 #include <softraster/detail/exact/interpolation.hpp>
 #include <softraster/detail/exact/rasterizer.hpp>
+#include <softraster/detail/fragment/builtins.hpp>
 #include <softraster/detail/fragment/colour.hpp>
 #include <softraster/detail/fragment/depth.hpp>
 #include <softraster/detail/fragment/stencil.hpp>
@@ -99,6 +104,11 @@ class FragmentStage {
     rasterizeEdges(edges, bounds, target_.region, [&](int px, int py) {
       const float fx = static_cast<float>(px), fy = static_cast<float>(py);
       const std::size_t pixel = static_cast<std::size_t>(py) * target_.width + static_cast<std::size_t>(px);
+      [[maybe_unused]] Vec4 colour{};
+      [[maybe_unused]] float fragDepth = 0.0f;
+      if constexpr (kBuiltins) {  // shaded first: a discarded fragment tests and writes nothing
+        if (!shadeWithBuiltins(t, px, py, 0.0f, varyings.data(), colour, fragDepth)) return;
+      }
       std::uint32_t stored = 0;
       bool passes = true;
       if (target_.depth.testEnable) {
@@ -106,13 +116,15 @@ class FragmentStage {
           stored = std::bit_cast<std::uint32_t>(evaluatePlane<Fused>(t.oneOverW, fx, fy));
           passes = depthTestPasses<Format>(target_.depth.compareOp, target_.depthStorage[pixel], stored);
         } else {
-          stored = depthToStorage<Format>(clampDepth(interpolateDepth<Fused>(t, fx, fy), target_.depthRange));
+          const float z = kWritesDepth ? fragDepth : interpolateDepth<Fused>(t, fx, fy);
+          stored = depthToStorage<Format>(clampDepth(z, target_.depthRange));
           passes = depthTestPasses<Format>(target_.depth.compareOp, stored, target_.depthStorage[pixel]);
         }
       }
       if (target_.stencil.enable && !stencilTestAndUpdate(t.frontFacing, pixel, passes)) return;
       if (!passes) return;
-      blendColour(target_.colour + 4 * pixel, shadeAt(t, px, py, 0.0f, varyings.data()), target_.blend);
+      if constexpr (!kBuiltins) colour = shadeAt(t, px, py, 0.0f, varyings.data());
+      blendColour(target_.colour + 4 * pixel, colour, target_.blend);
       if (target_.depth.testEnable && target_.depth.writeEnable) target_.depthStorage[pixel] = stored;
     });
   }
@@ -123,14 +135,21 @@ class FragmentStage {
     rasterizeEdgesSampled(edges, bounds, target_.region, [&](int px, int py, unsigned covered) {
       const unsigned mask = covered & target_.msaa.allowedSamples(px, py);
       if (mask == 0) return;
+      [[maybe_unused]] Vec4 c{};
+      [[maybe_unused]] float fragDepth = 0.0f;
+      if constexpr (kBuiltins) {  // a discarded fragment leaves every sample alone
+        if (!shadeWithBuiltins(t, px, py, 0.5f, varyings.data(), c, fragDepth)) return;
+      }
       const float fx = static_cast<float>(px), fy = static_cast<float>(py);
       const std::size_t pixel = static_cast<std::size_t>(py) * target_.width + static_cast<std::size_t>(px);
       std::uint32_t stored[4];
       unsigned passed = target_.depth.testEnable ? 0u : mask;  // without the depth test every covered sample passes
       for (int s = 0; s < 4 && target_.depth.testEnable; ++s) {
         if (!(mask & (1u << s))) continue;
-        const float z = clampDepth(
-            interpolateDepth<Fused>(t, fx + kSamplePositions4x[s][0], fy + kSamplePositions4x[s][1]), target_.depthRange);
+        const float z = clampDepth(  // gl_FragDepth: one value for every sample
+            kWritesDepth ? fragDepth
+                         : interpolateDepth<Fused>(t, fx + kSamplePositions4x[s][0], fy + kSamplePositions4x[s][1]),
+            target_.depthRange);
         stored[s] = depthToStorage<Format>(z);
         if (depthTestPasses<Format>(target_.depth.compareOp, stored[s], target_.depthStorage[pixel * 4 + static_cast<std::size_t>(s)])) {
           passed |= 1u << s;
@@ -145,7 +164,7 @@ class FragmentStage {
         }
       }
       if (passed == 0) return;
-      const Vec4 c = shadeAt(t, px, py, 0.5f, varyings.data());
+      if constexpr (!kBuiltins) c = shadeAt(t, px, py, 0.5f, varyings.data());
       for (int s = 0; s < 4; ++s) {
         if (!(passed & (1u << s))) continue;
         const std::size_t sample = pixel * 4 + static_cast<std::size_t>(s);
@@ -190,6 +209,20 @@ class FragmentStage {
     }
   }
 
+  // A shader with the fragment built-ins (fragment/builtins.hpp): its colour in `colour`, its
+  // gl_FragDepth in `fragDepth`, and whether the fragment survives (was not discarded).
+  bool shadeWithBuiltins(const TriangleInterpolants<N>& t, int px, int py, float offset, float* varyings,
+                         Vec4& colour, float& fragDepth) const {
+    interpolateVaryings<Fused>(t, kInterpolation, static_cast<float>(px) + offset, static_cast<float>(py) + offset,
+                               varyings);
+    FragmentBuiltins<float> builtins = fragmentBuiltinsAt<Fused>(t, px, py, offset);
+    colour = shadeFragment<Shader>(uniforms_, varyings, builtins);
+    fragDepth = builtins.fragDepth;
+    return !builtins.discard;
+  }
+
+  static constexpr bool kBuiltins = UsesFragmentBuiltins<Shader>;
+  static constexpr bool kWritesDepth = WritesFragDepth<Shader>;
   static constexpr InterpolationSet<N> kInterpolation = interpolationOf<Shader>();
 
   const typename Shader::Uniforms& uniforms_;
