@@ -224,7 +224,7 @@ TEST(Report, MsaaScenesGetEverySampleAndAMenuToPickOne) {
   EXPECT_EQ(differing[0], 0u) << "lavapipe's scissor planes never let sample 0 through";
   EXPECT_GT(differing[3], 100u);
   for (const std::string n : {"0", "1", "2", "3"}) {
-    for (const std::string kind : {"soft.sample" + n, "vulkan.sample" + n, "sample" + n + ".diff"}) {
+    for (const std::string& kind : {"soft.sample" + n, "vulkan.sample" + n, "sample" + n + ".diff"}) {
       const auto image = std::find_if(results[0].images.begin(), results[0].images.end(),
                                       [&](const SceneImage& i) { return i.kind == kind; });
       ASSERT_NE(image, results[0].images.end()) << kind;
