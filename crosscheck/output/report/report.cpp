@@ -270,7 +270,7 @@ std::string expectationsLines(const RunResults& run) {
 std::string reproduceCommand(const RunResults& run, const SceneResult& r) {
   std::string command = "crosscheck compare " + r.entry.path.generic_string();
   if (!run.renderArguments.empty()) command += " " + run.renderArguments;
-  return command + " --out out/" + r.entry.name;
+  return command + " -o out/" + r.entry.name;
 }
 
 std::string metricRow(const std::string& metric, const std::string& measured, const std::string& allowed, bool over) {
