@@ -33,14 +33,7 @@ struct BuiltinsDiscard {
   static Uniforms uniformsFrom(const DrawParameters& draw) { return {draw.modelViewProjection}; }
 
   static softraster::Vec4 vertex(const Uniforms& u, const Vertex& in, float* vColour) {
-    const softraster::Mat4& m = u.modelViewProjection;
-    const softraster::Vec4 clip =
-        m.columns[0] * in.position.x + m.columns[1] * in.position.y + m.columns[2] * in.position.z + m.columns[3];
-    vColour[0] = in.colour.x;
-    vColour[1] = in.colour.y;
-    vColour[2] = in.colour.z;
-    vColour[3] = in.colour.w;
-    return clip;
+    return vertexColorStage(u.modelViewProjection, in, vColour);  // vertex_color's vertex stage
   }
 
   template <class F>

@@ -21,6 +21,19 @@ struct VertexColorVertex {
   softraster::Vec4 colour;    // location 1
 };
 
+// The vertex stage: the position through the matrix (the same sum, in the same order, as the
+// GLSL; the w column taken as is, inPosition.w == 1) and the colour passed on. Also the vertex
+// stage of the built-ins twins (builtins_discard.hpp, builtins_frag_depth.hpp).
+inline softraster::Vec4 vertexColorStage(const softraster::Mat4& m, const VertexColorVertex& in, float* vColour) {
+  const softraster::Vec4 clip =
+      m.columns[0] * in.position.x + m.columns[1] * in.position.y + m.columns[2] * in.position.z + m.columns[3];
+  vColour[0] = in.colour.x;
+  vColour[1] = in.colour.y;
+  vColour[2] = in.colour.z;
+  vColour[3] = in.colour.w;
+  return clip;
+}
+
 template <softraster::Interpolation Qualifier>
 struct VertexColorShader {
   using Vertex = VertexColorVertex;
@@ -39,15 +52,7 @@ struct VertexColorShader {
   static Uniforms uniformsFrom(const DrawParameters& draw) { return {draw.modelViewProjection, draw.pointSize}; }
 
   static softraster::Vec4 vertex(const Uniforms& u, const Vertex& in, float* vColour) {
-    const softraster::Mat4& m = u.modelViewProjection;
-    // Same sum, same order as the GLSL; the w column is taken as is (inPosition.w == 1).
-    const softraster::Vec4 clip =
-        m.columns[0] * in.position.x + m.columns[1] * in.position.y + m.columns[2] * in.position.z + m.columns[3];
-    vColour[0] = in.colour.x;
-    vColour[1] = in.colour.y;
-    vColour[2] = in.colour.z;
-    vColour[3] = in.colour.w;
-    return clip;
+    return vertexColorStage(u.modelViewProjection, in, vColour);
   }
 
   static float pointSize(const Uniforms& u, const Vertex&) { return u.pointSize; }
