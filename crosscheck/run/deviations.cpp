@@ -21,6 +21,15 @@ const std::vector<KnownDeviation>& knownDeviations() {
        "draw module passes the polygon's facing on to them only when the fragment shader reads gl_FrontFacing "
        "(draw_pipe_unfilled.c), and llvmpipe's line and point setup otherwise say front",
        "stencil_polygon_modes"},
+      {"sample_mask_one_sample",
+       "Vulkan, VkPipelineMultisampleStateCreateInfo: \"Each bit in the sample mask is associated with a unique "
+       "sample index as defined for the coverage mask. Each bit b for mask word w in the sample mask corresponds to "
+       "sample index i, where i = 32 x w + b\"; the sample mask test (Fragment Operations) clears the coverage of "
+       "every sample whose bit is 0, so with one sample bit 0 decides",
+       "with one sample it ignores the mask's bits and discards the draw only when the whole 32-bit mask is 0 "
+       "(llvmpipe_update_derived: rasterizer discard for sample_mask == 0; the fragment code applies the mask only "
+       "when multisampled), so a mask with bit 0 clear and another bit set draws everything",
+       "sample_mask_single_sample"},
   };
   return kDeviations;
 }

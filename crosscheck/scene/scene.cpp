@@ -527,6 +527,33 @@ void readDrawState(const json& d, const std::string& place, softraster::Pipeline
                      "(VUID-VkPipelineDepthStencilStateCreateInfo-depthBoundsTestEnable-00598)");
   }
   if (d.contains("stencil")) readStencil(d["stencil"], placeOf(place, "stencil"), ds);
+  if (d.contains("multisample")) {
+    const std::string mp = placeOf(place, "multisample");
+    const json& m = d["multisample"];
+    checkKeys(m, mp, {"sample_mask", "alpha_to_coverage", "alpha_to_one", "min_sample_shading"});
+    auto& ms = state.multisample;
+    ms.sampleMask = static_cast<std::uint32_t>(readCount(m, "sample_mask", mp, ms.sampleMask, 0xFFFFFFFFu));
+    ms.alphaToCoverageEnable = readBool(m, "alpha_to_coverage", mp, ms.alphaToCoverageEnable);
+    ms.alphaToOneEnable = readBool(m, "alpha_to_one", mp, ms.alphaToOneEnable);
+    if (m.contains("min_sample_shading")) {
+      ms.sampleShadingEnable = true;
+      ms.minSampleShading = readFloat(m, "min_sample_shading", mp, 0.0f);
+      if (!(ms.minSampleShading >= 0.0f && ms.minSampleShading <= 1.0f)) {
+        throw SceneError(placeOf(mp, "min_sample_shading"),
+                         "must be in [0, 1] (VUID-VkPipelineMultisampleStateCreateInfo-minSampleShading-00786: "
+                         "\"If sampleShadingEnable is VK_TRUE, minSampleShading must be in the range [0,1]\")");
+      }
+    }
+    if ((ms.alphaToCoverageEnable || ms.alphaToOneEnable || ms.sampleShadingEnable) &&
+        rs.lineRasterization == softraster::LineRasterization::Bresenham) {
+      throw SceneError(mp, "alpha to coverage, alpha to one and sample shading need rectangular lines "
+                           "(VUID-VkGraphicsPipelineCreateInfo-lineRasterizationMode-02766: \"If the lineRasterizationMode "
+                           "member of a VkPipelineRasterizationLineStateCreateInfoEXT structure included in the pNext chain "
+                           "of pRasterizationState is VK_LINE_RASTERIZATION_MODE_BRESENHAM_EXT or "
+                           "VK_LINE_RASTERIZATION_MODE_RECTANGULAR_SMOOTH_EXT, then the alphaToCoverageEnable, "
+                           "alphaToOneEnable, and sampleShadingEnable members of pMultisampleState must all be VK_FALSE\")");
+    }
+  }
 }
 
 // Limits of a procedural sphere ("sphere": {...}): enough for the bench's 1M triangles, small
@@ -889,7 +916,7 @@ Draw readDrawMesh(const json& d, const std::string& place, const std::filesystem
                        "transform", "material", "topology", "viewport", "scissor", "cull", "front_face", "depth_clamp",
                        "depth_bias", "line_width", "line_rasterization", "point_size", "polygon_mode", "blend",
                        "depth_test", "depth_write", "depth_compare", "depth_bounds_test", "stencil",
-                       "primitive_restart", "provoking_vertex", "line_stipple"});
+                       "primitive_restart", "provoking_vertex", "line_stipple", "multisample"});
   Draw draw;
   draw.name = readString(d, "name", place, place);
   draw.shading = readShadingModel(d, place);

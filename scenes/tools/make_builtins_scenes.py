@@ -3,7 +3,9 @@
 (discard by a pattern of gl_FragCoord, colour by gl_FrontFacing and gl_FragCoord) over triangles
 of both windings and slanted depths, with the depth test and stencil on, single-sample and 4x
 MSAA, over two depth/stencil formats; and the builtins_frag_depth model (gl_FragDepth) over the
-depth formats, with depth bias (which gl_FragDepth replaces) and depth clamp; and varyings_64
+depth formats, with depth bias (which gl_FragDepth replaces) and depth clamp; both again with
+sample shading (4x MSAA, shaded per sample); builtins_sample (gl_SampleID, gl_SamplePosition)
+single-sample and 4x MSAA; and varyings_64
 (64 varying components, smooth, flat and noperspective) on triangles that clipping cuts.
 
 Run from the repository root: python3 scenes/tools/make_builtins_scenes.py
@@ -87,6 +89,19 @@ def varyings_draws():
     ]
 
 
+def sample_draws():
+    counting = {"compare_op": "always", "pass_op": "increment_and_clamp"}
+    return [
+        draw("background", quad(-4, -4, 260, 196, 3.5, 5.0), colour=[0.3, 0.3, 0.35], cull="none"),
+        draw("per sample, ccw", tri((10, 12, 2.0), (30, 180, 4.5), (150, 40, 3.0)), [[0.9, 0.2, 0.2, 0.3],
+             [0.2, 0.9, 0.2, 0.6], [0.2, 0.2, 0.9, 0.9]], shading="builtins_sample", cull="none", stencil=counting),
+        draw("per sample, cw", tri((250, 20, 2.5), (140, 120, 3.8), (245, 185, 2.2)), shading="builtins_sample",
+             cull="none", stencil=counting, colour=[0.9, 0.6, 0.1, 0.8]),
+        draw("vertex colour over them", tri((100, 60, 2.2), (120, 170, 2.3), (200, 90, 2.4)), colour=[0.2, 0.8, 0.9],
+             cull="none", depth_compare="less"),
+    ]
+
+
 def main():
     base = ("The fragment built-ins: builtins_discard discards pixels by a pattern of gl_FragCoord.xy and "
             "colours front faces by gl_FragCoord (x/128, y/128, z, 2w) and back faces by the vertex colour and "
@@ -114,6 +129,38 @@ def main():
     scene(os.path.join(OUT, "builtins_frag_depth_msaa.json"),
           fd + " D24_UNORM_S8_UINT, 4x MSAA: every covered sample takes the fragment's one gl_FragDepth.",
           frag_depth_draws(), dict(FRAMEBUFFER, depth_format="d24_unorm_s8_uint", samples=4), CAMERA)
+
+    ss = (" D24_UNORM_S8_UINT, 4x MSAA with sample shading (minSampleShading 1 on every draw but two: 0.26 "
+          "on the back-facing triangle, which lavapipe also shades per sample as ceil(4 * 0.26) > 1, and 0.25 on "
+          "the clockwise one, shaded once at the pixel centre as ceil(4 * 0.25) = 1): the shader runs once per "
+          "covered sample with gl_FragCoord.xy at the sample (px + 0.375, py + 0.125 for sample 0, ...) and .z "
+          "there, .w and the varyings at the pixel centre; a discard drops only its own sample, so the holes' "
+          "edges fall between samples, and each sample of a kept pixel has its own colour.")
+    shaded = draws()
+    fractions = {"back, cw, stencil written": 0.26, "front_face clockwise": 0.25}
+    for d in shaded:
+        d["multisample"] = {"min_sample_shading": fractions.get(d["name"], 1.0)}
+    scene(os.path.join(OUT, "builtins_discard_sample_shading.json"), base + ss, shaded, dict(fb, samples=4), CAMERA)
+    depth_shaded = frag_depth_draws()
+    for d in depth_shaded:
+        d["multisample"] = {"min_sample_shading": 1.0}
+    scene(os.path.join(OUT, "builtins_frag_depth_sample_shading.json"),
+          fd + " D24_UNORM_S8_UINT, 4x MSAA with sample shading (minSampleShading 1): each sample's invocation "
+          "writes its own gl_FragDepth from gl_FragCoord.z at the sample; the vertex-colour draws give the same "
+          "bits as without sample shading.",
+          depth_shaded, dict(FRAMEBUFFER, depth_format="d24_unorm_s8_uint", samples=4), CAMERA)
+
+    sd = ("The per-sample built-ins (builtins_sample: colour = (gl_SamplePosition.x, gl_SamplePosition.y, "
+          "gl_SampleID / 4, vertex alpha); sample 3 discarded where gl_FragCoord.y < 96). Reading gl_SampleID "
+          "makes the shader run once per covered sample, without any sample shading state: on triangles of both "
+          "windings over a background, with depth and a stencil that counts what each sample kept, and one "
+          "vertex-colour triangle drawn over them.")
+    scene(os.path.join(OUT, "builtins_sample.json"),
+          sd + " D24_UNORM_S8_UINT, single sample: gl_SampleID 0 and gl_SamplePosition (0.5, 0.5).",
+          sample_draws(), dict(FRAMEBUFFER, depth_format="d24_unorm_s8_uint"), CAMERA)
+    scene(os.path.join(OUT, "builtins_sample_msaa.json"),
+          sd + " D24_UNORM_S8_UINT, 4x MSAA: each sample's colour is its own position and index.",
+          sample_draws(), dict(FRAMEBUFFER, depth_format="d24_unorm_s8_uint", samples=4), CAMERA)
 
     vd = ("64 varying components (varyings_64: 16 vec4 outputs, smooth, flat and noperspective in turn, the vertex "
           "colour rotated by index, summed with weights (i + 1) / 256 in a fixed order in both languages): Vulkan's "

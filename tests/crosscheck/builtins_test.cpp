@@ -109,3 +109,39 @@ TEST(FragmentBuiltins, PolygonModeLineIsRefused) {
   EXPECT_NE(frame.error().find("front, ccw, stencil written"), std::string::npos) << frame.error();
   EXPECT_EQ(frame.error().find('\n'), std::string::npos) << frame.error();
 }
+
+// Sample shading (4x MSAA, minSampleShading 1): the shader runs once per covered sample with
+// gl_FragCoord.xy at the sample, so each sample of a kept front-facing pixel has its own red and
+// green, round(255 * (p + offset) / 128), not the pixel centre's; the discard pattern's edges lie
+// on pixel edges, so the holes are the ones without sample shading.
+TEST(FragmentBuiltins, SampleShadingShadesEverySampleAtItsPosition) {
+  const crosscheck::Frame f = renderAgreeing("builtins_discard_sample_shading", {});
+  ASSERT_EQ(f.samples, 4u);
+  constexpr float kOffsets[4][2] = {{0.375f, 0.125f}, {0.875f, 0.375f}, {0.125f, 0.625f}, {0.625f, 0.875f}};
+  const std::uint32_t x = 34, y = 42;
+  for (std::uint32_t s = 0; s < 4; ++s) {
+    const std::size_t i = 4 * ((static_cast<std::size_t>(y) * f.width + x) * 4 + s);
+    EXPECT_EQ(int{f.sampleRgba.at(i)}, static_cast<int>(std::nearbyint((x + kOffsets[s][0]) / 128 * 255))) << s;
+    EXPECT_EQ(int{f.sampleRgba.at(i + 1)}, static_cast<int>(std::nearbyint((y + kOffsets[s][1]) / 128 * 255))) << s;
+    EXPECT_EQ(int{f.sampleStencil.at((static_cast<std::size_t>(y) * f.width + x) * 4 + s)}, 3) << s;
+    const std::size_t hole = (static_cast<std::size_t>(40) * f.width + 32) * 4 + s;  // discarded on every sample
+    EXPECT_EQ(int{f.sampleStencil.at(hole)}, 2) << s;
+  }
+  EXPECT_NE(f.sampleRgba.at(4 * ((static_cast<std::size_t>(y) * f.width + x) * 4 + 0)),
+            f.sampleRgba.at(4 * ((static_cast<std::size_t>(y) * f.width + x) * 4 + 1)))
+      << "samples 0 and 1 are shaded at x + 0.375 and x + 0.875";
+}
+
+// Sample shading with gl_FragDepth: each sample's invocation writes its own depth, from
+// gl_FragCoord.z at the sample; without sample shading the four samples hold one value.
+TEST(FragmentBuiltins, SampleShadingWritesFragDepthPerSample) {
+  const crosscheck::Frame shaded = renderAgreeing("builtins_frag_depth_sample_shading", {});
+  const crosscheck::Frame once = renderAgreeing("builtins_frag_depth_msaa", {});
+  ASSERT_EQ(shaded.samples, 4u);
+  ASSERT_EQ(once.samples, 4u);
+  const std::size_t first = (static_cast<std::size_t>(40) * shaded.width + 40) * 4;
+  for (std::size_t s = 1; s < 4; ++s) {
+    EXPECT_NE(shaded.sampleDepthStorage.at(first + s), shaded.sampleDepthStorage.at(first)) << s;
+    EXPECT_EQ(once.sampleDepthStorage.at(first + s), once.sampleDepthStorage.at(first)) << s;
+  }
+}

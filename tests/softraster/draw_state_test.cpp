@@ -170,3 +170,39 @@ TEST(DrawState, LineStippleAndTopologyRefusals) {
   unknown.topology = static_cast<softraster::Topology>(10);  // VK_PRIMITIVE_TOPOLOGY_PATCH_LIST
   expectRefused(unknown, "unknown topology");
 }
+
+// The multisample state through the public API: a sample mask keeping no sample draws nothing;
+// with one sample lavapipe ignores bit 0 (Deviations::Driver draws a mask of 0xfffffffe) where
+// the spec does not (Deviations::Spec draws nothing); minSampleShading outside [0, 1] is refused
+// only with sample shading on (Vulkan ignores the value otherwise).
+TEST(DrawState, SampleMaskAndSampleShadingRules) {
+  const auto whiteWith = [](std::uint32_t mask, softraster::Deviations deviations) {
+    softraster::PipelineState state;
+    state.rasterization.cullMode = softraster::CullMode::None;
+    state.multisample.sampleMask = mask;
+    softraster::Framebuffer framebuffer = softraster::Framebuffer::create(16, 16).value();
+    framebuffer.clear({0, 0, 0, 1}, 1.0f);
+    const std::vector<White::Vertex> vertices{{{-1.0f, -1.0f, 0.5f}}, {{1.0f, -1.0f, 0.5f}}, {{-1.0f, 1.0f, 0.5f}}};
+    softraster::ContextOptions options;
+    options.deviations = deviations;
+    const softraster::Context context(options);
+    EXPECT_TRUE(context.draw<White>(state, White::Uniforms{}, std::span<const White::Vertex>(vertices), framebuffer).ok());
+    int white = 0;
+    for (std::size_t i = 0; i < framebuffer.colour().size(); i += 4) white += framebuffer.colour()[i] == 255;
+    return white;
+  };
+  const int all = whiteWith(0xFFFFFFFFu, softraster::Deviations::Driver);
+  EXPECT_GT(all, 100);
+  EXPECT_EQ(whiteWith(0xFFFFFFFEu, softraster::Deviations::Driver), all);
+  EXPECT_EQ(whiteWith(0xFFFFFFFEu, softraster::Deviations::Spec), 0);
+  EXPECT_EQ(whiteWith(0x1u, softraster::Deviations::Spec), all);
+  EXPECT_EQ(whiteWith(0u, softraster::Deviations::Driver), 0);
+
+  softraster::PipelineState state;
+  state.multisample.minSampleShading = 2.0f;  // ignored: sample shading is off
+  EXPECT_TRUE(drawWith(state).ok());
+  state.multisample.sampleShadingEnable = true;
+  expectRefused(state, "minSampleShading-00786");
+  state.multisample.minSampleShading = std::numeric_limits<float>::quiet_NaN();
+  expectRefused(state, "minSampleShading must be in [0, 1]");
+}

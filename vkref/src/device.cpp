@@ -177,6 +177,8 @@ Status Device::createDevice() {
   features.largePoints = features2.features.largePoints;
   features.geometryShader = features2.features.geometryShader;  // the adjacency topologies need it
   features.logicOp = features2.features.logicOp;
+  features.alphaToOne = features2.features.alphaToOne;
+  features.sampleRateShading = features2.features.sampleRateShading;
 
   // VK_EXT_line_rasterization (Bresenham and stippled lines) and VK_EXT_provoking_vertex
   // (provoking vertex last): enabled with the features vkref uses when the device has them.

@@ -36,7 +36,7 @@ static_assert(static_cast<int>(softraster::BlendFactor::SrcAlphaSaturate) == VK_
               "softraster's blend enums are Vulkan's values");
 // A tripwire: a field added to PipelineState must also join PipelineCache::Key (and compile()),
 // or draws differing only in it would share a pipeline.
-static_assert(sizeof(softraster::PipelineState) == 148, "PipelineState changed: update PipelineCache::Key");
+static_assert(sizeof(softraster::PipelineState) == 160, "PipelineState changed: update PipelineCache::Key");
 
 // The viewport a draw uses: a zero width or height means the whole framebuffer.
 VkViewport viewportFor(const softraster::Viewport& v, std::uint32_t width, std::uint32_t height) {
@@ -151,6 +151,16 @@ Status checkDraw(const DrawCall& d, std::uint32_t width, std::uint32_t height, c
   if (s.blend.logicOpEnable && !features.logicOp)
     return Status::error("logic ops are not supported by the device (the logicOp feature)");
   if (s.blend.logicOp > softraster::LogicOp::Set) return Status::error("unknown logic op");
+  if (s.multisample.sampleShadingEnable && !features.sampleRateShading)
+    return Status::error("sample shading is not supported by the device (the sampleRateShading feature)");
+  if (s.multisample.sampleShadingEnable && !(s.multisample.minSampleShading >= 0.0f && s.multisample.minSampleShading <= 1.0f))
+    return Status::error("minSampleShading outside [0, 1]");
+  if (s.multisample.alphaToOneEnable && !features.alphaToOne)
+    return Status::error("alpha to one is not supported by the device (the alphaToOne feature)");
+  if ((s.multisample.alphaToCoverageEnable || s.multisample.alphaToOneEnable) &&
+      s.rasterization.lineRasterization == softraster::LineRasterization::Bresenham)
+    return Status::error("alpha to coverage and alpha to one need rectangular lines (VUID-VkGraphicsPipelineCreateInfo-"
+                         "lineRasterizationMode-02766)");
   if (s.rasterization.polygonMode > softraster::PolygonMode::Point) return Status::error("unsupported polygon mode");
   if (s.rasterization.polygonMode != softraster::PolygonMode::Fill && !features.fillModeNonSolid)
     return Status::error("polygon modes line and point are not supported by the device");
@@ -338,6 +348,11 @@ softraster::Result<VkPipeline> PipelineCache::get(const DrawCall& d, const Targe
   key.alphaOp = byte(b.alphaBlendOp);
   key.writeMask = b.colorWriteMask;
   key.logicOp = b.logicOpEnable ? byte(b.logicOp) : 0xff;
+  key.sampleMask = s.multisample.sampleMask;
+  key.alphaToCoverage = s.multisample.alphaToCoverageEnable;
+  key.alphaToOne = s.multisample.alphaToOneEnable;
+  key.sampleShading = s.multisample.sampleShadingEnable;
+  key.minSampleShading = s.multisample.sampleShadingEnable ? bits(s.multisample.minSampleShading) : 0;
   for (int i = 0; i < 4; ++i) key.blendConstants[static_cast<std::size_t>(i)] = bits(b.blendConstants[i]);
 
   if (const auto found = pipelines_.find(key); found != pipelines_.end()) return found->second;
@@ -425,9 +440,15 @@ softraster::Result<VkPipeline> PipelineCache::compile(const Program& p, const so
     } else if (provokingLast) {
       rasterization.pNext = &provoking;
     }
+    const VkSampleMask sampleMask = state.multisample.sampleMask;  // pSampleMask[0]: up to 32 samples
     const VkPipelineMultisampleStateCreateInfo multisample{
         .sType = VK_STRUCTURE_TYPE_PIPELINE_MULTISAMPLE_STATE_CREATE_INFO,
-        .rasterizationSamples = target.samples};
+        .rasterizationSamples = target.samples,
+        .sampleShadingEnable = state.multisample.sampleShadingEnable ? VK_TRUE : VK_FALSE,
+        .minSampleShading = state.multisample.minSampleShading,
+        .pSampleMask = &sampleMask,
+        .alphaToCoverageEnable = state.multisample.alphaToCoverageEnable ? VK_TRUE : VK_FALSE,
+        .alphaToOneEnable = state.multisample.alphaToOneEnable ? VK_TRUE : VK_FALSE};
     // softraster's StencilOp and CompareOp are VkStencilOp and VkCompareOp values.
     const auto stencilFace = [](const softraster::StencilOpState& f) {
       return VkStencilOpState{.failOp = static_cast<VkStencilOp>(f.failOp),

@@ -116,6 +116,9 @@ class PipelineCache {
     std::uint8_t srcColorFactor = 0, dstColorFactor = 0, colorOp = 0, srcAlphaFactor = 0, dstAlphaFactor = 0,
                  alphaOp = 0, writeMask = 0;
     std::uint8_t logicOp = 0xff;  // VkLogicOp, 0xff: logicOpEnable off
+    std::uint32_t sampleMask = 0;  // VkPipelineMultisampleStateCreateInfo
+    bool alphaToCoverage = false, alphaToOne = false, sampleShading = false;
+    std::uint32_t minSampleShading = 0;  // by its bits
     std::array<std::uint32_t, 4> blendConstants{};  // by their bits
     auto operator<=>(const Key&) const = default;
   };

@@ -4,8 +4,10 @@
 //   static Vec4T<F> fragment(const Uniforms&, const F* varyingsIn, FragmentBuiltins<F>& builtins);
 // A twin that takes only two parameters is unchanged and pays nothing. FragmentBuiltins<F> holds
 //   fragCoord    x, y the pixel centre (px + 0.5, py + 0.5; also with 4x MSAA, where the fragment
-//                is shaded once at the centre), z the fragment's depth as lavapipe interpolates
-//                it (the depth bias added, before the depth-range clamp), w the interpolated 1/w;
+//                is shaded once at the centre; with sample shading the sample's position, the
+//                shader then running once per sample), z the fragment's depth as lavapipe
+//                interpolates it there (the depth bias added, before the depth-range clamp), w the
+//                interpolated 1/w (at the pixel centre, as the varyings, also with sample shading);
 //   frontFacing  the primitive's facing (one value per primitive, so a plain bool for both F;
 //                true for lines and points);
 //   discard      output: the lanes the shader discards (MaskOf<F>: bool for float, BatchMask for

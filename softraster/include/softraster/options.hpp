@@ -81,8 +81,10 @@ constexpr std::optional<Method> methodFromName(std::string_view name) {
 //   Spec:   the specification's words. The known deviations: with 4x MSAA lavapipe's scissor
 //           planes let samples through in the column left of and the row above the scissor
 //           rectangle, where the spec's scissor test discards every sample of those fragments;
-//           and lavapipe gives the lines and points of a back-facing polygon drawn in polygon
-//           mode line or point the front stencil state, where the spec gives them the back one.
+//           lavapipe gives the lines and points of a back-facing polygon drawn in polygon
+//           mode line or point the front stencil state, where the spec gives them the back one;
+//           and with one sample lavapipe ignores the sample mask's bit 0 (it discards a draw
+//           only for a mask of 0), where the spec keeps a fragment iff bit 0 is set.
 enum class Deviations : std::uint8_t { Driver, Spec };
 
 // A Deviations value's name on the command line and in results ("driver", "spec").

@@ -12,7 +12,8 @@
 // blending with every core factor and op, blend constants and the colour write mask; the stencil
 // test with front and back state on the D24_UNORM_S8_UINT and D32_SFLOAT_S8_UINT formats; stippled
 // lines and provoking vertex last (VK_EXT_line_rasterization, VK_EXT_provoking_vertex); negative
-// viewport heights. Where lavapipe deviates from the spec, ContextOptions::deviations chooses.
+// viewport heights; the sample mask, alpha to coverage and alpha to one (fragment/coverage.hpp).
+// Where lavapipe deviates from the spec, ContextOptions::deviations chooses.
 // Conventions are Vulkan's: clip space x right, y down, z in [0, w]; window origin at the top
 // left, pixel centres at +0.5; front faces counter-clockwise as seen in the image by default;
 // docs/library.md has them all, with the 4x sample positions.
@@ -171,6 +172,11 @@ class Context {
     if (b.colorBlendOp > BlendOp::Max || b.alphaBlendOp > BlendOp::Max) return Status::error("unknown blend op");
     if (b.colorWriteMask > kColourRGBA) return Status::error("colour write mask has bits other than R, G, B and A");
     if (b.logicOp > LogicOp::Set) return Status::error("unknown logic op");
+    const float minSampleShading = state.multisample.minSampleShading;
+    if (state.multisample.sampleShadingEnable && !(minSampleShading >= 0.0f && minSampleShading <= 1.0f)) {
+      return Status::error("minSampleShading must be in [0, 1] (VUID-VkPipelineMultisampleStateCreateInfo-"
+                           "minSampleShading-00786)");
+    }
     const DepthState& ds = state.depth;
     if (ds.compareOp > CompareOp::Always) return Status::error("unknown depth compare op");
     for (const StencilOpState* face : {&ds.front, &ds.back}) {
@@ -214,6 +220,16 @@ class Context {
                         std::span<const typename Shader::Vertex> vertices, std::span<const std::uint32_t> indices,
                         Framebuffer& framebuffer, detail::DrawScratch& scratch) const {
     if (Status status = validate(state, framebuffer); !status) return status;
+    if constexpr (UsesFragmentBuiltins<Shader>) {
+      const detail::SampleCoverage coverage = detail::sampleCoverage(state.multisample, framebuffer.samples(), options_.deviations);
+      if (coverage.perSample && coverage.alphaToCoverage) {
+        return Status::error("alpha to coverage with sample shading and the fragment built-ins is not supported by "
+                             "softraster yet (lavapipe's per-sample invocations narrow one another's coverage)");
+      }
+    }
+    if (detail::sampleCoverage(state.multisample, framebuffer.samples(), options_.deviations).sampleMask == 0) {
+      return {};  // no sample kept: nothing to draw (lavapipe discards the rasterization)
+    }
     if constexpr (UsesFragmentBuiltins<Shader>) {
       if (state.rasterization.polygonMode != PolygonMode::Fill && detail::isTriangleTopology(state.topology)) {
         return Status::error("polygon modes line and point with the fragment built-ins are not supported by softraster "

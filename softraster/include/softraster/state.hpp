@@ -4,8 +4,7 @@
 // honour is an error in that renderer, never a silent default.
 // 4x MSAA is supported; its sample count is the framebuffer's (framebuffer.hpp), not state here.
 // Deliberately absent until a scene needs it: dual-source blending (the SRC1 blend factors, which
-// need a second fragment output), logic ops, more than one colour attachment, the rest of
-// Vulkan's multisample state (sample shading, sample mask, alpha to coverage), smooth lines,
+// need a second fragment output), more than one colour attachment, smooth lines,
 // geometry and tessellation shaders (so adjacency vertices are only ever skipped). The depth
 // bounds test is absent for good: lavapipe reports depthBounds = false, so no Vulkan pipeline on
 // it may enable it.
@@ -193,6 +192,23 @@ struct BlendState {
   float blendConstants[4] = {0, 0, 0, 0};
 };
 
+// VkPipelineMultisampleStateCreateInfo without the sample count (the framebuffer's). sampleMask
+// is pSampleMask[0]: bit s keeps sample s of every fragment (with one sample,
+// bit 0; lavapipe then draws unless the whole mask is 0, a deviation: options.hpp). Alpha to
+// coverage keeps the samples the shader's alpha covers (lavapipe: with 4x MSAA sample s where
+// alpha > s / 4, with one sample alpha > 0.5; fragment/coverage.hpp); alpha to one then sets the
+// alpha to 1 before blending. Sample shading with
+// ceil(4 * minSampleShading) > 1 (4x MSAA) runs the fragment shader once per covered sample
+// (lavapipe: on every sample, whatever the fraction; the varyings stay at the pixel centre, the
+// fragment built-ins move to the sample: fragment/coverage.hpp).
+struct MultisampleState {
+  std::uint32_t sampleMask = 0xFFFFFFFFu;
+  bool alphaToCoverageEnable = false;
+  bool alphaToOneEnable = false;
+  bool sampleShadingEnable = false;
+  float minSampleShading = 0.0f;  // in [0, 1]
+};
+
 struct PipelineState {
   Topology topology = Topology::TriangleList;
   // VkPipelineInputAssemblyStateCreateInfo::primitiveRestartEnable: in an indexed draw the index
@@ -204,6 +220,7 @@ struct PipelineState {
   RasterizationState rasterization;
   DepthState depth;
   BlendState blend;
+  MultisampleState multisample;
 };
 
 }  // namespace softraster

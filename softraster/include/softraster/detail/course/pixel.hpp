@@ -152,8 +152,19 @@ class CourseFragments {
         stored = depthToStorage<Format>(clampDepth(values[0] + depthOffset_, target_.depthRange));
       }
     }
+    // The sample mask, and with alpha to coverage the colour first: the samples its alpha keeps.
+    unsigned kept = target_.coverage.sampleMask;
+    std::array<float, (N == 0 ? 1 : N)> varyings{};
+    Vec4 c{};
+    const bool shadedFirst = target_.coverage.shadesFirst();
+    if (shadedFirst) {
+      c = shadeValues(values, varyings.data());
+      kept &= samples_ == 4 ? alphaToCoverageSamples<4>(c.w) : alphaToCoverageSamples<1>(c.w);
+      if (kept == 0) return;
+    }
     unsigned passed = 0;
     for (unsigned s = 0; s < samples_; ++s) {
+      if (!(kept & (1u << s))) continue;
       const std::uint32_t old = target_.depthStorage[pixel * samples_ + s];
       const bool passes = !target_.depth.testEnable ||
                           (target_.inverseZ ? depthTestPasses<Format>(target_.depth.compareOp, old, stored)
@@ -168,7 +179,19 @@ class CourseFragments {
       if (passes) passed |= 1u << s;
     }
     if (passed == 0) return;
-    std::array<float, (N == 0 ? 1 : N)> varyings{};
+    if (!shadedFirst) c = shadeValues(values, varyings.data());
+    if (target_.coverage.alphaToOne) c.w = 1.0f;
+    for (unsigned s = 0; s < samples_; ++s) {
+      if (!(passed & (1u << s))) continue;
+      const std::size_t sample = pixel * samples_ + s;
+      blendColour(target_.colour + 4 * sample, c, target_.blend);
+      if (target_.depth.testEnable && target_.depth.writeEnable) target_.depthStorage[sample] = stored;
+    }
+  }
+
+  // The shader's colour from one pixel's interpolated values (the varyings divided as the top
+  // says, into `varyings`).
+  Vec4 shadeValues(const float* values, float* varyings) const {
     if constexpr (N > 0) {
       const float w = 1.0f / values[1];
       for (int i = 0; i < N; ++i) {
@@ -177,13 +200,7 @@ class CourseFragments {
         varyings[k] = divide ? values[k + 2] * w : values[k + 2];
       }
     }
-    const Vec4 c = shade(varyings.data());
-    for (unsigned s = 0; s < samples_; ++s) {
-      if (!(passed & (1u << s))) continue;
-      const std::size_t sample = pixel * samples_ + s;
-      blendColour(target_.colour + 4 * sample, c, target_.blend);
-      if (target_.depth.testEnable && target_.depth.writeEnable) target_.depthStorage[sample] = stored;
-    }
+    return shade(varyings);
   }
 
   // The shader's colour from one pixel's varyings. The course's methods shade one pixel at a

@@ -23,8 +23,11 @@
 // the lanes (fast/stencil.hpp) after the depth test, per pixel or per sample, with the
 // primitive's face; a fragment failing either test is not shaded. A shader with the fragment
 // built-ins (shader.hpp) is shaded first, before the tests, and its discarded lanes (all samples
-// of such a pixel) are dropped from coverage, as the scalar stage does. Lines and points go to
-// the scalar stage it holds.
+// of such a pixel) are dropped from coverage, as the scalar stage does; so is any shader with
+// alpha to coverage on, whose alpha drops lanes or samples (fragment/coverage.hpp). The sample
+// mask narrows MSAA coverage first; alpha to one sets the alpha to 1 before packing. Lines and
+// points go to the scalar stage it holds, and so do the triangles of a shader with the built-ins
+// under sample shading (shaded sample by sample).
 // Threads are the band queue's (fast/bands.hpp), which gives each thread a stage of its own.
 // Deliberately absent: a per-tile depth range, AVX-512.
 #pragma once
@@ -81,6 +84,12 @@ class FastFragmentStage {
   }
 
   void shadeSamples(const EdgeFunction (&edges)[3], const PixelRect& bounds, const TriangleInterpolants<N>& t) const {
+    if constexpr (kBuiltins) {
+      if (target_.coverage.perSample) {  // sample shading: the scalar stage shades sample by sample
+        scalar_.shadeSamples(edges, bounds, t);
+        return;
+      }
+    }
     shadeSampledTriangle(edges, bounds, t);
   }
 
@@ -248,10 +257,13 @@ class FastFragmentStage {
     const Floats fx = broadcast(static_cast<float>(px)) + kLaneX;
     const Floats fy = broadcast(static_cast<float>(py)) + kLaneY;
     const std::size_t first = static_cast<std::size_t>(py) * target_.width + static_cast<std::size_t>(px);
-    [[maybe_unused]] Words shaded{};
+    Words shaded{};
     [[maybe_unused]] Floats fragDepth{};
-    if constexpr (kBuiltins) {  // shaded first: discarded lanes test and write nothing (as the scalar stage)
-      shaded = shadeWithBuiltins(t, fx, fy, fx, fy, covered, fragDepth);
+    const bool shadedFirst = kBuiltins || target_.coverage.shadesFirst();
+    if (shadedFirst) {  // discarded lanes, and those alpha to coverage drops, test and write nothing (as the scalar stage)
+      std::uint32_t kept = 0xffu;
+      shaded = shadeFirst<1>(t, fx, fy, fx, fy, kept, fragDepth);
+      covered &= kept;
       if (covered == 0) return;
     }
     Words stored{}, current{};
@@ -288,10 +300,8 @@ class FastFragmentStage {
       if (covered == 0) return;
     }
     Words colour = shaded;
-    if constexpr (!kBuiltins) {
-      std::array<FloatBatch, (N == 0 ? 1 : N)> varyings{};
-      if constexpr (N > 0) interpolateBlock(std::make_index_sequence<N>{}, t, fx, fy, varyings.data());
-      colour = packColour(Shader::template fragment<FloatBatch>(uniforms_, varyings.data()));
+    if constexpr (!kBuiltins) {  // (a shader with the built-ins is always shaded first)
+      if (!shadedFirst) colour = shadeLanes(t, fx, fy);
     }
     if (target_.blend.readsDestination) colour = blendColour(colour, loadBlock(colour_ + first, target_.width, covered), target_.blend);
     if (covered == 0xffu) {
@@ -425,13 +435,16 @@ class FastFragmentStage {
     const std::size_t width = target_.width;
     const std::size_t firstPixel = static_cast<std::size_t>(py) * width + static_cast<std::size_t>(px);
     const Floats x0 = broadcast(static_cast<float>(px)), y0 = broadcast(static_cast<float>(py));
-    [[maybe_unused]] __m256i shaded{};
+    __m256i shaded{};
     [[maybe_unused]] Floats fragDepth{};
-    if constexpr (kBuiltins) {  // shaded first, at the pixel centres; a discard drops every sample of its pixel
+    covered &= target_.coverage.sampleMask * 0x11111111u;  // the sample mask, on every lane's nibble
+    if (covered == 0) return;
+    const bool shadedFirst = kBuiltins || target_.coverage.shadesFirst();
+    if (shadedFirst) {  // at the pixel centres; a discard drops every sample of its pixel, alpha to coverage some
       const Floats cx = (x0 + kLaneX) + broadcast(0.5f), cy = (y0 + kLaneY) + broadcast(0.5f);
-      unsigned kept = 0xffu;
-      shaded = reinterpret_cast<__m256i>(shadeWithBuiltins(t, x0 + kLaneX, y0 + kLaneY, cx, cy, kept, fragDepth));
-      covered &= kSpreadToSamples[kept];
+      std::uint32_t kept = ~0u;
+      shaded = reinterpret_cast<__m256i>(shadeFirst<4>(t, x0 + kLaneX, y0 + kLaneY, cx, cy, kept, fragDepth));
+      covered &= kept;
       if (covered == 0) return;
     }
     std::uint32_t passed = covered;
@@ -480,11 +493,9 @@ class FastFragmentStage {
     // Shaded once per pixel, at its centre.
     __m256i colour = shaded;
     if constexpr (!kBuiltins) {
-      const Floats fx = (x0 + kLaneX) + broadcast(0.5f);
-      const Floats fy = (y0 + kLaneY) + broadcast(0.5f);
-      std::array<FloatBatch, (N == 0 ? 1 : N)> varyings{};
-      if constexpr (N > 0) interpolateBlock(std::make_index_sequence<N>{}, t, fx, fy, varyings.data());
-      colour = reinterpret_cast<__m256i>(packColour(Shader::template fragment<FloatBatch>(uniforms_, varyings.data())));
+      if (!shadedFirst) {
+        colour = reinterpret_cast<__m256i>(shadeLanes(t, (x0 + kLaneX) + broadcast(0.5f), (y0 + kLaneY) + broadcast(0.5f)));
+      }
     }
     for (int pair = 0; pair < 4; ++pair) {
       const unsigned bits = (passed >> (8 * pair)) & 0xffu;
@@ -507,23 +518,60 @@ class FastFragmentStage {
     }
   }
 
-  // A shader with the fragment built-ins (fragment/builtins.hpp), on the lanes: its packed colour,
-  // its gl_FragDepth in `fragDepth`, and `lanes` (bit per lane) narrowed to those it did not
-  // discard. (px, py): the lanes' pixel coordinates; (sx, sy): where the planes are evaluated
+  // The lanes' packed colour, their varyings at (fx, fy), with alpha to one (the path where
+  // nothing is shaded before the tests).
+  [[SOFTRASTER_FAST_TARGET]] Words shadeLanes(const BlockPlanes& t, Floats fx, Floats fy) const {
+    std::array<FloatBatch, (N == 0 ? 1 : N)> varyings{};
+    if constexpr (N > 0) interpolateBlock(std::make_index_sequence<N>{}, t, fx, fy, varyings.data());
+    Vec4T<FloatBatch> c = Shader::template fragment<FloatBatch>(uniforms_, varyings.data());
+    if (target_.coverage.alphaToOne) c.w = FloatBatch(1.0f);
+    return packColour(c);
+  }
+
+  // The lanes shaded before the tests (a shader with the fragment built-ins, or alpha to
+  // coverage): their packed colour, their gl_FragDepth in `fragDepth`, and `kept` narrowed to what
+  // survives: with Samples 1 bit per lane (the lanes not discarded, whose alpha covers them),
+  // with 4 bit 4 * lane + s (every sample of a discarded lane dropped; alpha to coverage per
+  // sample). (px, py): the lanes' pixel coordinates; (sx, sy): where the planes are evaluated
   // (the same, or the MSAA pixel centres).
-  [[SOFTRASTER_FAST_TARGET]] Words shadeWithBuiltins(const BlockPlanes& t, Floats px, Floats py, Floats sx, Floats sy,
-                                                     unsigned& lanes, Floats& fragDepth) const {
+  template <int Samples>
+  [[SOFTRASTER_FAST_TARGET]] Words shadeFirst(const BlockPlanes& t, Floats px, Floats py, Floats sx, Floats sy,
+                                              std::uint32_t& kept, Floats& fragDepth) const {
     std::array<FloatBatch, (N == 0 ? 1 : N)> varyings{};
     if constexpr (N > 0) interpolateBlock(std::make_index_sequence<N>{}, t, sx, sy, varyings.data());
-    FragmentBuiltins<FloatBatch> builtins;
-    builtins.fragCoord = {FloatBatch(px + broadcast(0.5f)), FloatBatch(py + broadcast(0.5f)),
-                          FloatBatch(evaluatePlane(t.depth, sx, sy) + t.depthOffset),
-                          FloatBatch(evaluatePlane(t.oneOverW, sx, sy))};
-    builtins.frontFacing = t.frontFacing;
-    const Words colour = packColour(Shader::template fragment<FloatBatch>(uniforms_, varyings.data(), builtins));
-    lanes &= ~maskBits(builtins.discard.native());
-    fragDepth = builtins.fragDepth.native();
-    return colour;
+    Vec4T<FloatBatch> c;
+    if constexpr (kBuiltins) {
+      FragmentBuiltins<FloatBatch> builtins;
+      builtins.fragCoord = {FloatBatch(px + broadcast(0.5f)), FloatBatch(py + broadcast(0.5f)),
+                            FloatBatch(evaluatePlane(t.depth, sx, sy) + t.depthOffset),
+                            FloatBatch(evaluatePlane(t.oneOverW, sx, sy))};
+      builtins.frontFacing = t.frontFacing;
+      c = Shader::template fragment<FloatBatch>(uniforms_, varyings.data(), builtins);
+      const unsigned survivors = ~maskBits(builtins.discard.native()) & 0xffu;
+      kept &= Samples == 4 ? kSpreadToSamples[survivors] : survivors;
+      fragDepth = builtins.fragDepth.native();
+    } else {
+      c = Shader::template fragment<FloatBatch>(uniforms_, varyings.data());
+    }
+    if (target_.coverage.alphaToCoverage) kept &= alphaToCoverageBits<Samples>(c.w.native());
+    if (target_.coverage.alphaToOne) c.w = FloatBatch(1.0f);
+    return packColour(c);
+  }
+
+  // alphaToCoverageSamples (fragment/coverage.hpp) on the lanes: bit per lane with one sample,
+  // bit 4 * lane + s with four.
+  template <int Samples>
+  [[SOFTRASTER_FAST_TARGET]] static std::uint32_t alphaToCoverageBits(Floats alpha) {
+    if constexpr (Samples == 1) {
+      return maskBits(alpha > broadcast(0.5f));
+    } else {
+      std::uint32_t bits = 0;
+      for (unsigned s = 0; s < 4; ++s) {
+        const float threshold = 0.25f * static_cast<float>(s);  // 0, 0.25, 0.5, 0.75, as alphaToCoverageSamples
+        bits |= kSpreadToSamples[maskBits(alpha > broadcast(threshold))] & (0x11111111u << s);
+      }
+      return bits;
+    }
   }
 
   static constexpr bool kBuiltins = UsesFragmentBuiltins<Shader>;

@@ -15,13 +15,21 @@
 //     and a fragment it discards writes nothing (lavapipe: late tests, or early ones with the
 //     write deferred to the kill mask; the same pixels either way); one that writes
 //     gl_FragDepth has every sample tested and written with that value (clamped, no bias);
-// Deliberately absent: coverage itself (exact/rasterizer.hpp walks it), sample shading.
+//   - the sample mask narrows the coverage first; with alpha to coverage the fragment is shaded
+//     before the tests, which see only the samples its alpha keeps; alpha to one sets the
+//     alpha to 1 before blending (fragment/coverage.hpp);
+//   - sample shading (4x MSAA) with a shader that reads the built-ins: shaded once per covered
+//     sample, gl_FragCoord.xy and .z at the sample, each sample tested and written on its own
+//     (shadeSampleBySample); without the built-ins every sample would get the same colour, so
+//     such a shader is shaded once per pixel as before.
+// Deliberately absent: coverage itself (exact/rasterizer.hpp walks it).
 #pragma once
 
 #include <softraster/detail/exact/interpolation.hpp>
 #include <softraster/detail/exact/rasterizer.hpp>
 #include <softraster/detail/fragment/builtins.hpp>
 #include <softraster/detail/fragment/colour.hpp>
+#include <softraster/detail/fragment/coverage.hpp>
 #include <softraster/detail/fragment/depth.hpp>
 #include <softraster/detail/fragment/stencil.hpp>
 #include <softraster/detail/instruction_set.hpp>
@@ -45,6 +53,7 @@ struct FragmentTarget {
   ColourBlend blend;  // the draw's BlendState, prepared for UNORM8 (fragment/colour.hpp)
   PixelRect region;   // what this stage may touch: the draw's raster region, or one band of it
   MsaaRegionEdges msaa;  // 4x MSAA: the whole draw's region edges (the same for every band)
+  SampleCoverage coverage;  // sample mask, alpha to coverage, alpha to one
   DepthRange depthRange;
   bool inverseZ;
   std::uint32_t width;
@@ -64,6 +73,7 @@ inline FragmentTarget fragmentTarget(const PipelineState& state, Framebuffer& fr
               ? msaaRegionEdges(drawRegion(state.scissor, viewport, framebuffer.width(), framebuffer.height()),
                                 state.scissor, deviations)
               : MsaaRegionEdges{},
+          sampleCoverage(state.multisample, framebuffer.samples(), deviations),
           fragmentDepthRange(viewport, state.rasterization.depthClampEnable),
           inverseZ,
           framebuffer.width(),
@@ -104,10 +114,12 @@ class FragmentStage {
     rasterizeEdges(edges, bounds, target_.region, [&](int px, int py) {
       const float fx = static_cast<float>(px), fy = static_cast<float>(py);
       const std::size_t pixel = static_cast<std::size_t>(py) * target_.width + static_cast<std::size_t>(px);
-      [[maybe_unused]] Vec4 colour{};
+      Vec4 colour{};
       [[maybe_unused]] float fragDepth = 0.0f;
-      if constexpr (kBuiltins) {  // shaded first: a discarded fragment tests and writes nothing
-        if (!shadeWithBuiltins(t, px, py, 0.0f, varyings.data(), colour, fragDepth)) return;
+      const bool shadedFirst = kBuiltins || target_.coverage.shadesFirst();
+      if (shadedFirst) {  // a discarded fragment, or one its alpha does not cover, tests and writes nothing
+        if (!shadeFirst(t, px, py, 0.0f, varyings.data(), colour, fragDepth)) return;
+        if (target_.coverage.alphaToCoverage && !alphaToCoverageSamples<1>(colour.w)) return;
       }
       std::uint32_t stored = 0;
       bool passes = true;
@@ -123,7 +135,10 @@ class FragmentStage {
       }
       if (target_.stencil.enable && !stencilTestAndUpdate(t.frontFacing, pixel, passes)) return;
       if (!passes) return;
-      if constexpr (!kBuiltins) colour = shadeAt(t, px, py, 0.0f, varyings.data());
+      if constexpr (!kBuiltins) {  // (a shader with the built-ins is always shaded first)
+        if (!shadedFirst) colour = shadeAt(t, px, py, 0.0f, varyings.data());
+      }
+      if (target_.coverage.alphaToOne) colour.w = 1.0f;
       blendColour(target_.colour + 4 * pixel, colour, target_.blend);
       if (target_.depth.testEnable && target_.depth.writeEnable) target_.depthStorage[pixel] = stored;
     });
@@ -133,12 +148,21 @@ class FragmentStage {
     if (intersect(bounds, target_.msaa.drawRegion).empty()) return;  // lavapipe culls it
     std::array<float, (N == 0 ? 1 : N)> varyings{};
     rasterizeEdgesSampled(edges, bounds, target_.region, [&](int px, int py, unsigned covered) {
-      const unsigned mask = covered & target_.msaa.allowedSamples(px, py);
+      unsigned mask = covered & target_.msaa.allowedSamples(px, py) & target_.coverage.sampleMask;
       if (mask == 0) return;
-      [[maybe_unused]] Vec4 c{};
+      if constexpr (kBuiltins) {
+        if (target_.coverage.perSample) {
+          shadeSampleBySample(t, px, py, mask, varyings.data());
+          return;
+        }
+      }
+      Vec4 c{};
       [[maybe_unused]] float fragDepth = 0.0f;
-      if constexpr (kBuiltins) {  // a discarded fragment leaves every sample alone
-        if (!shadeWithBuiltins(t, px, py, 0.5f, varyings.data(), c, fragDepth)) return;
+      const bool shadedFirst = kBuiltins || target_.coverage.shadesFirst();
+      if (shadedFirst) {  // a discarded fragment leaves every sample alone; alpha to coverage drops some
+        if (!shadeFirst(t, px, py, 0.5f, varyings.data(), c, fragDepth)) return;
+        if (target_.coverage.alphaToCoverage) mask &= alphaToCoverageSamples<4>(c.w);
+        if (mask == 0) return;
       }
       const float fx = static_cast<float>(px), fy = static_cast<float>(py);
       const std::size_t pixel = static_cast<std::size_t>(py) * target_.width + static_cast<std::size_t>(px);
@@ -164,7 +188,10 @@ class FragmentStage {
         }
       }
       if (passed == 0) return;
-      if constexpr (!kBuiltins) c = shadeAt(t, px, py, 0.5f, varyings.data());
+      if constexpr (!kBuiltins) {
+        if (!shadedFirst) c = shadeAt(t, px, py, 0.5f, varyings.data());
+      }
+      if (target_.coverage.alphaToOne) c.w = 1.0f;
       for (int s = 0; s < 4; ++s) {
         if (!(passed & (1u << s))) continue;
         const std::size_t sample = pixel * 4 + static_cast<std::size_t>(s);
@@ -172,6 +199,40 @@ class FragmentStage {
         if (target_.depth.testEnable && target_.depth.writeEnable) target_.depthStorage[sample] = stored[s];
       }
     });
+  }
+
+  // Sample shading with the built-ins: the samples `mask` of pixel (px, py), each shaded on its
+  // own (fragment/coverage.hpp says where each input is taken), then tested and written.
+  void shadeSampleBySample(const TriangleInterpolants<N>& t, int px, int py, unsigned mask, float* varyings) const {
+    const float fx = static_cast<float>(px), fy = static_cast<float>(py);
+    const float cx = fx + 0.5f, cy = fy + 0.5f;
+    const std::size_t pixel = static_cast<std::size_t>(py) * target_.width + static_cast<std::size_t>(px);
+    interpolateVaryings<Fused>(t, kInterpolation, cx, cy, varyings);  // the centre, for every sample
+    const float oneOverW = evaluatePlane<Fused>(t.oneOverW, cx, cy);
+    for (int s = 0; s < 4; ++s) {
+      const unsigned bit = 1u << s;
+      if (!(mask & bit)) continue;
+      const float sx = fx + kSamplePositions4x[s][0], sy = fy + kSamplePositions4x[s][1];
+      const float z = interpolateDepth<Fused>(t, sx, sy);
+      FragmentBuiltins<float> builtins;
+      builtins.fragCoord = {sx, sy, z, oneOverW};
+      builtins.frontFacing = t.frontFacing;
+      builtins.discard = false;
+      Vec4 c = shadeFragment<Shader>(uniforms_, varyings, builtins);
+      if (builtins.discard) continue;
+      const std::size_t sample = pixel * 4 + static_cast<std::size_t>(s);
+      std::uint32_t stored = 0;
+      bool passes = true;
+      if (target_.depth.testEnable) {
+        stored = depthToStorage<Format>(clampDepth(kWritesDepth ? builtins.fragDepth : z, target_.depthRange));
+        passes = depthTestPasses<Format>(target_.depth.compareOp, stored, target_.depthStorage[sample]);
+      }
+      if (target_.stencil.enable && !stencilTestAndUpdate(t.frontFacing, sample, passes)) continue;
+      if (!passes) continue;
+      if (target_.coverage.alphaToOne) c.w = 1.0f;
+      blendColour(target_.colour + 4 * sample, c, target_.blend);
+      if (target_.depth.testEnable && target_.depth.writeEnable) target_.depthStorage[sample] = stored;
+    }
   }
 
   // The stencil test of one sample (index into the stencil storage) and its update with the depth
@@ -206,6 +267,19 @@ class FragmentStage {
       interpolateVaryings<Fused>(t, kInterpolation, static_cast<float>(px) + offset, static_cast<float>(py) + offset,
                                  varyings);  // + 0 changes no pixel coordinate (none is -0)
       return shadeFragment<Shader>(uniforms_, varyings);
+    }
+  }
+
+  // The fragment shaded before the tests (a shader with the fragment built-ins, or alpha to
+  // coverage): its colour in `colour`, its gl_FragDepth in `fragDepth`, and whether the fragment
+  // survives (was not discarded).
+  bool shadeFirst(const TriangleInterpolants<N>& t, int px, int py, float offset, float* varyings, Vec4& colour,
+                  float& fragDepth) const {
+    if constexpr (kBuiltins) {
+      return shadeWithBuiltins(t, px, py, offset, varyings, colour, fragDepth);
+    } else {
+      colour = shadeAt(t, px, py, offset, varyings);
+      return true;
     }
   }
 

@@ -1,0 +1,207 @@
+#!/usr/bin/env python3
+"""Writes the multisample-state scenes of the conformance suite (VkPipelineMultisampleStateCreateInfo:
+the sample mask, alpha to coverage, alpha to one): sample_mask_msaa, alpha_to_coverage_msaa,
+alpha_to_coverage and sample_mask_single_sample (one JSON file each).
+2D scenes: the clip_space camera with positions laid out in pixels (x_win = x * W/2 + W/2).
+Run from scenes/:  python3 tools/make_multisample_scenes.py"""
+import json
+import re
+
+BACKGROUND = [[0.81, 0.23, 0.11, 0.17], [0.13, 0.71, 0.29, 0.93], [0.21, 0.33, 0.87, 0.61],
+              [0.93, 0.86, 0.41, 0.37]]  # top-left, top-right, bottom-left, bottom-right
+
+
+def clip(px, py, w, h, z=0.5):
+    """Clip-space position of pixel coordinate (px, py) in a w x h framebuffer."""
+    return [round(px / (w / 2) - 1, 6), round(py / (h / 2) - 1, 6), z]
+
+
+def quad(name, x, y, qw, qh, colours, w, h, z=0.5, **state):
+    """An indexed quad from (x, y) to (x + qw, y + qh) in pixels; colours for its top-left,
+    top-right, bottom-left and bottom-right corners."""
+    d = {"name": name,
+         "positions": [clip(x, y, w, h, z), clip(x + qw, y, w, h, z), clip(x, y + qh, w, h, z),
+                       clip(x + qw, y + qh, w, h, z)],
+         "colours": colours, "indices": [0, 2, 1, 1, 2, 3], "cull": "none"}
+    d.update(state)
+    return d
+
+
+def triangle(name, points, colours, w, h, z=0.5, **state):
+    """points: [x, y] in pixels at depth z, or [x, y, z] each."""
+    d = {"name": name, "positions": [clip(p[0], p[1], w, h, p[2] if len(p) == 3 else z) for p in points],
+         "colours": colours, "cull": "none"}
+    d.update(state)
+    return d
+
+
+def dump(filename, scene):
+    text = json.dumps(scene, indent=1)
+    text = re.sub(r"\[\s+([-0-9.e, \n]+?)\s+\]", lambda m: "[" + " ".join(m.group(1).split()) + "]", text)
+    with open(filename, "w") as f:
+        f.write(text + "\n")
+
+
+def scene(description, w, h, draws, samples=1, depth_format=None):
+    fb = {"width": w, "height": h, "clear_colour": [0, 0, 0, 0]}
+    if samples != 1:
+        fb["samples"] = samples
+    if depth_format:
+        fb["depth_format"] = depth_format
+    return {"description": description, "framebuffer": fb, "camera": {"type": "clip_space"}, "draws": draws}
+
+
+def background(w, h):
+    return quad("background", 0, 0, w, h, BACKGROUND, w, h, z=0.9, depth_test=False)
+
+
+def gradient(alpha_left, alpha_right, rgb_left=(0.9, 0.3, 0.1), rgb_right=(0.1, 0.5, 0.9)):
+    """Corner colours of a quad whose alpha runs from left to right."""
+    left = list(rgb_left) + [alpha_left]
+    right = list(rgb_right) + [alpha_right]
+    return [left, right, left, right]
+
+
+def flat(rgba):
+    return [list(rgba)] * 4
+
+
+# ---- sample_mask_msaa: every kind of sample mask with 4x MSAA, before depth and stencil ----
+W, H = 160, 96
+draws = [background(W, H)]
+masks = [0x1, 0x2, 0x4, 0x8, 0x5, 0xA, 0x6, 0x9, 0xE, 0x0, 0xFFFFFFF3, 0xF]
+for i, mask in enumerate(masks):
+    x, y = 6 + (i % 6) * 25, 6 + (i // 6) * 44
+    # A triangle whose edges cross sample rows and columns, so partly covered pixels meet the mask.
+    draws.append(triangle(f"mask {mask:#x}", [[x + 0.3, y + 0.7], [x + 21.6, y + 3.2], [x + 4.1, y + 37.4]],
+                          [[0.95, 0.2, 0.1, 1], [0.2, 0.9, 0.2, 1], [0.1, 0.3, 0.95, 1]], W, H, z=0.4,
+                          multisample={"sample_mask": mask},
+                          stencil={"compare_op": "always", "pass_op": "increment_and_clamp",
+                                   "depth_fail_op": "invert"}))
+    # Across it, nearer on one side and farther on the other, with the complementary mask: its
+    # samples test against the depth only the first one's kept samples wrote.
+    draws.append(triangle(f"mask {(~mask) & 0xF:#x} across mask {mask:#x}",
+                          [[x - 1.2, y + 20.3, 0.2], [x + 23.4, y + 14.8, 0.6], [x + 22.1, y + 39.6, 0.6]],
+                          [[0.9, 0.9, 0.2, 1], [0.9, 0.2, 0.9, 1], [0.2, 0.9, 0.9, 1]], W, H,
+                          multisample={"sample_mask": (~mask) & 0xF},
+                          stencil={"compare_op": "equal", "reference": 0, "pass_op": "replace",
+                                   "fail_op": "increment_and_wrap", "depth_fail_op": "decrement_and_wrap"}))
+dump("sample_mask_msaa.json", scene(
+    "4x MSAA with the sample mask (pSampleMask[0]): twelve triangles, each with one mask (left to right, top to "
+    "bottom: 0x1, 0x2, 0x4, 0x8, 0x5, 0xa, 0x6, 0x9, 0xe, 0x0, 0xfffffff3 (only bits 0..3 count), 0xf), depth test "
+    "on and a stencil that counts what passes, and across each a second triangle with the complementary mask whose "
+    "depth runs from in front of the first to behind it, with a stencil test on the value the first left. The mask "
+    "narrows coverage before the depth and stencil tests: a sample it drops is neither tested, nor written, nor "
+    "counted. D24_UNORM_S8_UINT; every sample of colour, depth and stencil compared.", W, H, draws, samples=4,
+    depth_format="d24_unorm_s8_uint"))
+
+# ---- alpha_to_coverage_msaa: alpha to coverage and alpha to one with 4x MSAA ----
+W, H = 192, 128
+draws = [background(W, H)]
+# Row 1: flat alphas at and between the thresholds 0, 0.25, 0.5, 0.75 (a sample is kept where alpha > s / 4).
+for i, a in enumerate([0.0, 0.1, 0.25, 0.3, 0.5, 0.6, 0.75, 0.8, 1.0]):
+    draws.append(quad(f"alpha {a}", 4 + i * 20.5, 4.5, 18.25, 18.5, flat([0.9, 0.8, 0.1, a]), W, H, z=0.5,
+                      depth_test=False, multisample={"alpha_to_coverage": True}))
+# Row 2: alpha gradients 0 -> 1 across quads: plain, with alpha to one, with blending, with both.
+variants = [("plain", {"alpha_to_coverage": True}, None),
+            ("alpha to one", {"alpha_to_coverage": True, "alpha_to_one": True}, None),
+            ("blended", {"alpha_to_coverage": True}, {"source": "src_alpha", "destination": "one_minus_src_alpha"}),
+            ("blended, alpha to one", {"alpha_to_coverage": True, "alpha_to_one": True},
+             {"source": "src_alpha", "destination": "one_minus_src_alpha"})]
+for i, (label, ms, blend) in enumerate(variants):
+    state = {"depth_test": False, "multisample": ms}
+    if blend:
+        state["blend"] = blend
+    draws.append(quad(f"gradient, {label}", 4.3 + i * 46.5, 28.6, 43.1, 30.2, gradient(0.0, 1.0), W, H, **state))
+# Row 3: alpha to one alone (no alpha to coverage) with blending: the blend sees alpha 1.
+draws.append(quad("alpha to one alone, blended", 4.6, 64.3, 60.2, 26.7, gradient(0.1, 0.9), W, H, depth_test=False,
+                  multisample={"alpha_to_one": True},
+                  blend={"source": "src_alpha", "destination": "one_minus_src_alpha"}))
+# Depth and stencil: samples alpha to coverage drops are neither tested nor written (the second,
+# nearer quad is drawn where the first one's dropped samples left the clear depth).
+draws.append(quad("depth and stencil under alpha to coverage", 70.2, 64.6, 56.3, 26.1, gradient(0.05, 0.95), W, H,
+                  z=0.6, multisample={"alpha_to_coverage": True},
+                  stencil={"compare_op": "always", "pass_op": "increment_and_clamp"}))
+draws.append(quad("over it, depth less, stencil equal 0", 74.1, 68.3, 48.7, 18.2, flat([0.2, 0.9, 0.9, 0.7]), W, H,
+                  z=0.7, depth_compare="less",
+                  stencil={"compare_op": "equal", "reference": 0, "pass_op": "invert", "fail_op": "zero"}))
+# With the sample mask: alpha to coverage and the mask both narrow coverage.
+draws.append(quad("with sample mask 0x9", 132.2, 64.4, 54.9, 26.4, gradient(1.0, 0.0), W, H, depth_test=False,
+                  multisample={"alpha_to_coverage": True, "sample_mask": 0x9}))
+# A shader with the fragment built-ins (discard, gl_FragCoord): alpha = 2 * gl_FragCoord.w on front
+# faces, 1 - gl_FragCoord.z on back faces (builtins_discard), so coverage follows depth.
+draws.append({"name": "built-ins with alpha to coverage (front)", "shading": "builtins_discard",
+              "positions": [[-0.95, 0.45, 0.2], [-0.05, 0.5, 0.9], [-0.9, 0.97, 0.5]],
+              "colours": [[0.9, 0.2, 0.2, 1], [0.2, 0.9, 0.2, 1], [0.2, 0.2, 0.9, 1]], "cull": "none",
+              "depth_test": False, "multisample": {"alpha_to_coverage": True, "alpha_to_one": True}})
+draws.append({"name": "built-ins with alpha to coverage (back)", "shading": "builtins_discard",
+              "positions": [[0.05, 0.45, 0.1], [0.1, 0.97, 0.95], [0.95, 0.5, 0.5]],
+              "colours": [[0.9, 0.6, 0.2, 1], [0.2, 0.6, 0.9, 1], [0.6, 0.2, 0.9, 1]], "cull": "none",
+              "depth_test": False, "multisample": {"alpha_to_coverage": True}})
+dump("alpha_to_coverage_msaa.json", scene(
+    "4x MSAA with alpha to coverage and alpha to one. Top row: quads of one alpha each (0, 0.1, 0.25, 0.3, 0.5, "
+    "0.6, 0.75, 0.8, 1): lavapipe keeps sample s where alpha > s/4, no dither, so 0 keeps none and 0.25 keeps only "
+    "sample 0. Second row: alpha running 0 to 1 left to right, plain, with alpha to one, blended (src_alpha, "
+    "one_minus_src_alpha), blended with alpha to one (the blend then sees alpha 1). Third row: alpha to one alone "
+    "with blending; alpha to coverage with depth and stencil writes under a nearer quad that tests both (a dropped "
+    "sample is neither tested nor written); alpha to coverage with sample mask 0x9. Bottom: the built-ins shader "
+    "(discard, gl_FragCoord) with alpha to coverage, front and back faces. D24_UNORM_S8_UINT; every sample "
+    "compared.", W, H, draws, samples=4, depth_format="d24_unorm_s8_uint"))
+
+# ---- alpha_to_coverage: one sample, where lavapipe keeps a fragment iff alpha > 0.5 ----
+W, H = 160, 96
+draws = [background(W, H)]
+for i, a in enumerate([0.0, 0.49, 0.5, 0.51, 1.0]):
+    draws.append(quad(f"alpha {a}", 4 + i * 20.5, 4.5, 18.25, 18.5, flat([0.9, 0.8, 0.1, a]), W, H,
+                      depth_test=False, multisample={"alpha_to_coverage": True}))
+draws.append(quad("gradient", 108.3, 4.6, 48.2, 18.1, gradient(0.0, 1.0), W, H, depth_test=False,
+                  multisample={"alpha_to_coverage": True}))
+draws.append(quad("gradient, alpha to one, blended", 4.3, 28.4, 72.6, 22.2, gradient(0.0, 1.0), W, H,
+                  depth_test=False, multisample={"alpha_to_coverage": True, "alpha_to_one": True},
+                  blend={"source": "src_alpha", "destination": "one_minus_src_alpha"}))
+draws.append(quad("alpha to one alone, blended", 82.1, 28.2, 74.4, 22.6, gradient(0.2, 0.8), W, H,
+                  depth_test=False, multisample={"alpha_to_one": True},
+                  blend={"source": "src_alpha", "destination": "dst_alpha", "alpha": {"source": "one",
+                                                                                       "destination": "one"}}))
+draws.append(quad("depth and stencil under alpha to coverage", 4.4, 56.3, 60.1, 34.4, gradient(1.0, 0.0), W, H,
+                  z=0.6, multisample={"alpha_to_coverage": True},
+                  stencil={"compare_op": "always", "pass_op": "increment_and_clamp"}))
+draws.append(quad("over it, depth less, stencil equal 0", 8.2, 60.1, 52.3, 26.2, flat([0.2, 0.9, 0.9, 1]), W, H,
+                  z=0.7, stencil={"compare_op": "equal", "reference": 0, "pass_op": "invert", "fail_op": "zero"}))
+# Lines and points: alpha to coverage and alpha to one apply to every primitive.
+draws.append({"name": "lines with alpha to coverage", "topology": "line_list",
+              "positions": [clip(70 + 4 * k, 56, W, H) if j == 0 else clip(86 + 4 * k, 92, W, H)
+                            for k in range(8) for j in range(2)],
+              "colours": [[0.9, 0.9, 0.9, (k + 0.5) / 8] if j == 0 else [0.9, 0.2, 0.9, 1 - (k + 0.5) / 8]
+                          for k in range(8) for j in range(2)],
+              "depth_test": False, "line_width": 2.5, "multisample": {"alpha_to_coverage": True}})
+draws.append({"name": "points with alpha to coverage and one", "topology": "point_list",
+              "positions": [clip(112 + 6 * (k % 7), 60 + 8 * (k // 7), W, H) for k in range(28)],
+              "colours": [[0.3, 0.9, 0.4, k / 27] for k in range(28)], "point_size": 4.0,
+              "depth_test": False, "multisample": {"alpha_to_coverage": True, "alpha_to_one": True},
+              "blend": {"source": "src_alpha", "destination": "one_minus_src_alpha"}})
+dump("alpha_to_coverage.json", scene(
+    "One sample with alpha to coverage and alpha to one: lavapipe keeps a fragment iff its alpha > 0.5 (quads of "
+    "alpha 0, 0.49, 0.5, 0.51 and 1, then a gradient 0 -> 1); alpha to coverage with alpha to one and blending "
+    "(what survives is opaque); alpha to one alone with blending (the blend sees alpha 1); alpha to coverage "
+    "with depth and stencil writes under a quad testing both (a killed fragment is neither tested nor written); "
+    "wide lines whose alpha runs along them and points of rising alpha: the state applies to every primitive. "
+    "D24_UNORM_S8_UINT.", W, H, draws, depth_format="d24_unorm_s8_uint"))
+
+# ---- sample_mask_single_sample: the deviation (lavapipe ignores bit 0 with one sample) ----
+W, H = 96, 64
+draws = [background(W, H)]
+draws.append(quad("sample mask 0xfffffffe", 8.3, 8.6, 40.2, 46.1, gradient(1.0, 1.0), W, H, z=0.4,
+                  multisample={"sample_mask": 0xFFFFFFFE},
+                  stencil={"compare_op": "always", "pass_op": "replace", "reference": 7}))
+draws.append(quad("sample mask 0x1", 52.1, 8.2, 36.4, 46.3, gradient(1.0, 1.0, (0.2, 0.9, 0.3), (0.9, 0.9, 0.2)), W, H,
+                  z=0.4, multisample={"sample_mask": 0x1}))
+draws.append(quad("sample mask 0x0", 30.2, 20.4, 40.1, 24.3, flat([1, 1, 1, 1]), W, H, z=0.2,
+                  multisample={"sample_mask": 0}))
+dump("sample_mask_single_sample.json", scene(
+    "One sample with a sample mask: the spec ANDs coverage with pSampleMask[0], so with one sample bit 0 decides; "
+    "lavapipe only discards a draw whose whole mask is 0. Left: mask 0xfffffffe (bit 0 clear: the spec draws "
+    "nothing, lavapipe draws the quad and writes its depth and stencil); right: mask 0x1 (drawn by both); across "
+    "them a white quad with mask 0 (drawn by neither). The known deviation sample_mask_one_sample "
+    "(crosscheck --deviations spec shows the difference). D24_UNORM_S8_UINT.", W, H, draws,
+    depth_format="d24_unorm_s8_uint"))

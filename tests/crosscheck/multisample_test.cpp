@@ -1,0 +1,184 @@
+// The multisample-state scenes (the sample mask, alpha to coverage, alpha to one), cross-checked:
+// both renderers to the bit (the fast path's dispatch and the scalar exact path) under the
+// validation layer, every sample of colour, depth and stencil; then what each scene is about,
+// checked against values worked out here from the rules rather than from softraster's code:
+// a sample the mask drops keeps the background and its stencil 0; alpha to coverage keeps sample s
+// where alpha > s / 4 with 4x MSAA and a fragment where alpha > 0.5 with one sample; alpha to one
+// writes alpha 255; and the single-sample mask deviation, in driver and spec mode.
+#include "agreement.hpp"
+
+#include <gtest/gtest.h>
+
+#include <array>
+#include <cstdint>
+#include <string>
+
+namespace {
+
+using agreement::renderAgreeing;
+
+std::size_t sampleIndex(const crosscheck::Frame& f, std::uint32_t x, std::uint32_t y, std::uint32_t s) {
+  return (static_cast<std::size_t>(y) * f.width + x) * f.samples + s;
+}
+
+std::array<std::uint8_t, 4> sampleColour(const crosscheck::Frame& f, std::uint32_t x, std::uint32_t y, std::uint32_t s) {
+  const std::size_t i = 4 * sampleIndex(f, x, y, s);
+  return {f.sampleRgba.at(i), f.sampleRgba.at(i + 1), f.sampleRgba.at(i + 2), f.sampleRgba.at(i + 3)};
+}
+
+std::array<std::uint8_t, 4> pixelColour(const crosscheck::Frame& f, std::uint32_t x, std::uint32_t y) {
+  const std::size_t i = 4 * (static_cast<std::size_t>(y) * f.width + x);
+  return {f.rgba.at(i), f.rgba.at(i + 1), f.rgba.at(i + 2), f.rgba.at(i + 3)};
+}
+
+bool sameRgb(const std::array<std::uint8_t, 4>& a, const std::array<std::uint8_t, 4>& b) {
+  return a[0] == b[0] && a[1] == b[1] && a[2] == b[2];
+}
+
+// The flat quads' colour (0.9, 0.8, 0.1) as UNORM8.
+constexpr std::array<std::uint8_t, 4> kFlatQuad = {230, 204, 26, 0};
+
+}  // namespace
+
+// sample_mask_msaa: triangle i has mask kMasks[i]; pixel (x + 5, y + 6) lies inside it on every
+// sample and outside the triangle drawn across it. Each sample the mask keeps was counted by the
+// stencil (0 -> 1) and took the triangle's colour; each it drops kept stencil 0 and the
+// background, which is the same on every sample of the pixel.
+TEST(Multisample, SampleMaskDropsSamplesBeforeTheTests) {
+  const crosscheck::Frame f = renderAgreeing("sample_mask_msaa", {});
+  ASSERT_EQ(f.samples, 4u);
+  ASSERT_FALSE(f.sampleStencil.empty());
+  constexpr std::array<std::uint32_t, 12> kMasks = {0x1, 0x2, 0x4, 0x8, 0x5, 0xA, 0x6, 0x9, 0xE, 0x0, 0xFFFFFFF3, 0xF};
+  for (std::uint32_t i = 0; i < kMasks.size(); ++i) {
+    const std::uint32_t x = 6 + (i % 6) * 25 + 5, y = 6 + (i / 6) * 44 + 6;
+    const std::uint32_t mask = kMasks[i] & 0xF;
+    std::array<std::uint8_t, 4> kept{}, dropped{};
+    bool anyKept = false, anyDropped = false;
+    for (std::uint32_t s = 0; s < 4; ++s) {
+      const bool keep = (mask >> s) & 1u;
+      EXPECT_EQ(int{f.sampleStencil.at(sampleIndex(f, x, y, s))}, keep ? 1 : 0) << "mask " << kMasks[i] << " sample " << s;
+      const auto c = sampleColour(f, x, y, s);
+      if (keep) {
+        if (anyKept) {
+          EXPECT_TRUE(sameRgb(c, kept)) << "mask " << kMasks[i] << " sample " << s;
+        }
+        kept = c, anyKept = true;
+      } else {
+        if (anyDropped) {
+          EXPECT_TRUE(sameRgb(c, dropped)) << "mask " << kMasks[i] << " sample " << s;
+        }
+        dropped = c, anyDropped = true;
+      }
+    }
+    if (anyKept && anyDropped) {
+      EXPECT_FALSE(sameRgb(kept, dropped)) << "mask " << kMasks[i];
+    }
+  }
+}
+
+// alpha_to_coverage_msaa's top row: quad i of one alpha, no blending; sample s of a pixel inside
+// it has the quad's colour iff alpha > s / 4 (lavapipe: no dither, a strict compare).
+TEST(Multisample, AlphaToCoverageKeepsSampleSWhereAlphaExceedsSQuarters) {
+  const crosscheck::Frame f = renderAgreeing("alpha_to_coverage_msaa", {});
+  ASSERT_EQ(f.samples, 4u);
+  constexpr std::array<float, 9> kAlphas = {0.0f, 0.1f, 0.25f, 0.3f, 0.5f, 0.6f, 0.75f, 0.8f, 1.0f};
+  for (std::uint32_t i = 0; i < kAlphas.size(); ++i) {
+    const auto x = static_cast<std::uint32_t>(4 + i * 20.5 + 9), y = 13u;
+    for (std::uint32_t s = 0; s < 4; ++s) {
+      const bool expected = kAlphas[i] > 0.25f * static_cast<float>(s);
+      EXPECT_EQ(sameRgb(sampleColour(f, x, y, s), kFlatQuad), expected) << "alpha " << kAlphas[i] << " sample " << s;
+    }
+  }
+  // Second row, quads 1 and 3 have alpha to one: every sample they wrote holds alpha 255; the
+  // plain gradient (quad 0) writes its own alpha, below 255 left of its right edge.
+  for (std::uint32_t x = 12; x < 44; x += 3) {
+    const auto plain = sampleColour(f, x, 44, 0);
+    EXPECT_LT(int{plain[3]}, 255) << "plain gradient at x " << x;
+  }
+  std::size_t opaque = 0;
+  for (std::uint32_t x = 52; x < 92; ++x) {
+    for (std::uint32_t s = 0; s < 4; ++s) {
+      const auto c = sampleColour(f, x, 44, s);
+      // A sample the quad wrote has alpha 255; the background's alphas there are below 255.
+      opaque += c[3] == 255;
+    }
+  }
+  EXPECT_GT(opaque, 40u);
+}
+
+// alpha_to_coverage (one sample): the quads of alpha 0, 0.49, 0.5, 0.51 and 1 are drawn iff
+// alpha > 0.5; a killed fragment leaves the stencil the second quad tests.
+TEST(Multisample, AlphaToCoverageWithOneSampleKeepsAlphaAboveOneHalf) {
+  const crosscheck::Frame f = renderAgreeing("alpha_to_coverage", {});
+  ASSERT_EQ(f.samples, 1u);
+  constexpr std::array<float, 5> kAlphas = {0.0f, 0.49f, 0.5f, 0.51f, 1.0f};
+  for (std::uint32_t i = 0; i < kAlphas.size(); ++i) {
+    const auto x = static_cast<std::uint32_t>(4 + i * 20.5 + 9);
+    EXPECT_EQ(sameRgb(pixelColour(f, x, 13), kFlatQuad), kAlphas[i] > 0.5f) << "alpha " << kAlphas[i];
+  }
+  // The depth-and-stencil quad (alpha 1 on the left, 0 on the right, x 4.4 .. 64.5): its left
+  // part counted the stencil to 1 and the nearer-is-less quad over it then failed there (fail_op
+  // zero), its right part was killed and left stencil 0, which the second quad inverted to 255.
+  EXPECT_EQ(int{f.stencil.at(static_cast<std::size_t>(70) * f.width + 12)}, 0);
+  EXPECT_EQ(int{f.stencil.at(static_cast<std::size_t>(70) * f.width + 56)}, 255);
+  EXPECT_TRUE(sameRgb(pixelColour(f, 56, 70), {51, 230, 230, 255}));  // the second quad, drawn where the first was killed
+  EXPECT_FALSE(sameRgb(pixelColour(f, 12, 70), {51, 230, 230, 255}));
+}
+
+// sample_mask_single_sample: lavapipe draws the quad of mask 0xfffffffe (only a whole mask of 0
+// discards), the spec does not (bit 0 is the one sample's); mask 0x1 is drawn and mask 0 is not
+// in both. Driver mode agrees with lavapipe to the bit; spec mode differs exactly on the first
+// quad, which keeps the background and stencil 0.
+TEST(Multisample, OneSampleMaskDeviationDriverAndSpec) {
+  const crosscheck::Frame driver = renderAgreeing("sample_mask_single_sample", {});
+  ASSERT_FALSE(driver.stencil.empty());
+  const auto at = [&](const crosscheck::Frame& f, std::uint32_t x, std::uint32_t y) {
+    return int{f.stencil.at(static_cast<std::size_t>(y) * f.width + x)};
+  };
+  EXPECT_EQ(at(driver, 20, 30), 7);
+  auto scene = crosscheck::loadScene(agreement::kScenes / "sample_mask_single_sample.json", {});
+  ASSERT_TRUE(scene) << scene.error();
+  for (softraster::Method method : {softraster::Method::Exact, softraster::Method::ExactScalar}) {
+    softraster::ContextOptions options;
+    options.method = method;
+    options.deviations = softraster::Deviations::Spec;
+    auto spec = crosscheck::renderSoftraster(*scene, options);
+    ASSERT_TRUE(spec) << spec.error();
+    EXPECT_EQ(at(*spec, 20, 30), 0);
+    EXPECT_TRUE(sameRgb(pixelColour(*spec, 60, 30), pixelColour(driver, 60, 30)));  // mask 0x1: drawn by both
+    std::size_t differing = 0, outsideFirstQuad = 0;
+    for (std::uint32_t y = 0; y < driver.height; ++y) {
+      for (std::uint32_t x = 0; x < driver.width; ++x) {
+        if (!sameRgb(pixelColour(*spec, x, y), pixelColour(driver, x, y))) {
+          ++differing;
+          outsideFirstQuad += !(x >= 8 && x <= 49 && y >= 8 && y <= 55);
+        }
+      }
+    }
+    EXPECT_GT(differing, 1500u);  // about 40 x 46 pixels
+    EXPECT_EQ(outsideFirstQuad, 0u);
+  }
+}
+
+// The scene format: "multisample" reads the three fields and refuses what is not one of them.
+TEST(Multisample, SceneFieldsAndErrors) {
+  auto scene = crosscheck::loadScene(agreement::kScenes / "sample_mask_msaa.json",
+                                     {"draws.1.multisample={\"sample_mask\": 4294967295, \"alpha_to_coverage\": true, "
+                                      "\"alpha_to_one\": true}"});
+  ASSERT_TRUE(scene) << scene.error();
+  const softraster::MultisampleState& m = scene->draws.at(1).state.multisample;
+  EXPECT_EQ(m.sampleMask, 0xFFFFFFFFu);
+  EXPECT_TRUE(m.alphaToCoverageEnable);
+  EXPECT_TRUE(m.alphaToOneEnable);
+  EXPECT_EQ(scene->draws.at(0).state.multisample.sampleMask, 0xFFFFFFFFu);  // the default
+  agreement::expectSceneError({"draws.1.multisample.sample_mask=4294967296"}, "sample_mask_msaa.json",
+                              "/draws/1/multisample/sample_mask: 4294967296 is more than 4294967295");
+  agreement::expectSceneError({"draws.1.multisample.sample_mask=-1"}, "sample_mask_msaa.json",
+                              "/draws/1/multisample/sample_mask: expected a non-negative integer");
+  agreement::expectSceneError({"draws.1.multisample.coverage=1"}, "sample_mask_msaa.json",
+                              "/draws/1/multisample");
+  agreement::expectSceneError({"draws.1.multisample.alpha_to_one=\"yes\""}, "sample_mask_msaa.json",
+                              "/draws/1/multisample/alpha_to_one");
+  agreement::expectSceneError({"draws.1.multisample.alpha_to_coverage=true", "draws.1.line_rasterization=bresenham"},
+                              "sample_mask_msaa.json", "lineRasterizationMode-02766");
+}
