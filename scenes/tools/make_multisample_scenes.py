@@ -205,3 +205,51 @@ dump("sample_mask_single_sample.json", scene(
     "them a white quad with mask 0 (drawn by neither). The known deviation sample_mask_one_sample "
     "(crosscheck --deviations spec shows the difference). D24_UNORM_S8_UINT.", W, H, draws,
     depth_format="d24_unorm_s8_uint"))
+
+# ---- points_msaa: points and polygon mode point with 4x MSAA ----
+W, H = 128, 96
+draws = [background(W, H)]
+# Four points of size 1 centred on pixel corners and centres: with MSAA a point's square is
+# snapped without the half-pixel offset, so one centred on a corner covers one sample in each of
+# the four pixels around it.
+draws.append({"name": "size 1 on a corner (20, 30)", "topology": "point_list", "positions": [clip(20, 30, W, H, 0.3)],
+              "colour": [0.95, 0.9, 0.1, 1], "point_size": 1.0, "depth_test": False,
+              "stencil": {"compare_op": "always", "pass_op": "replace", "reference": 9}})
+draws.append({"name": "size 1 on a centre (30.5, 30.5)", "topology": "point_list",
+              "positions": [clip(30.5, 30.5, W, H, 0.3)], "colour": [0.1, 0.9, 0.95, 1], "point_size": 1.0,
+              "depth_test": False})
+# Sizes and fractional centres, depth tested against a slanted triangle, blended.
+pts, cols, k = [], [], 0
+for size_row, size in enumerate([1.5, 2.7, 4.0, 7.3]):
+    for i in range(6):
+        pts.append(clip(8.3 + 19.1 * i + 0.37 * size_row, 44.2 + 11.6 * size_row + 0.21 * i, W, H, 0.2 + 0.1 * i))
+        cols.append([0.2 + 0.12 * i, 0.9 - 0.15 * size_row, 0.5, 0.4 + 0.1 * size_row])
+        k += 1
+    draws.append({"name": f"slanted triangle under row {size_row}", "positions": [
+        clip(2, 40 + 11.6 * size_row, W, H, 0.1), clip(126, 40 + 11.6 * size_row, W, H, 0.8),
+        clip(64, 50 + 11.6 * size_row, W, H, 0.45)], "colour": [0.5, 0.5, 0.5, 1], "cull": "none"})
+    draws.append({"name": f"points of size {size}", "topology": "point_list", "positions": pts[-6:], "colours": cols[-6:],
+                  "point_size": size, "blend": {"source": "src_alpha", "destination": "one_minus_src_alpha"}})
+# A point across the scissor's left and top edges: cut exactly at them (no samples of the column
+# left of or the row above the scissor, which a triangle there gets from lavapipe).
+draws.append({"name": "size 6 across the scissor corner (80, 10)", "topology": "point_list",
+              "positions": [clip(80.2, 10.3, W, H, 0.5)], "colour": [0.9, 0.2, 0.6, 1], "point_size": 6.0,
+              "depth_test": False, "scissor": {"x": 80, "y": 10, "width": 40, "height": 20}})
+# Polygon mode point: a triangle's corners as points, depth-biased, front and back faces.
+draws.append({"name": "polygon mode point, biased", "positions": [clip(100.3, 40.6, W, H, 0.4),
+              clip(120.2, 70.1, W, H, 0.5), clip(90.7, 88.4, W, H, 0.6)], "colour": [0.95, 0.5, 0.1, 1],
+              "cull": "none", "polygon_mode": "point", "point_size": 3.0,
+              "depth_bias": {"constant": 64, "slope": 1.5, "clamp": 0}})
+draws.append({"name": "polygon mode point, back face", "positions": [clip(60.3, 12.6, W, H, 0.4),
+              clip(50.2, 30.1, W, H, 0.5), clip(70.7, 36.4, W, H, 0.6)], "colour": [0.3, 0.5, 0.95, 1],
+              "cull": "none", "polygon_mode": "point", "point_size": 2.5,
+              "stencil": {"compare_op": "always", "pass_op": "increment_and_clamp"}})
+dump("points_msaa.json", scene(
+    "4x MSAA points (point_list and polygon mode point): lavapipe snaps a point's square without the half-pixel "
+    "offset when multisampling and covers each sample inside it, so a size-1 point centred on the pixel corner "
+    "(20, 30) writes one sample in each of the four pixels around it and one centred on (30.5, 30.5) all four "
+    "samples of its pixel; rows of points of sizes 1.5, 2.7, 4 and 7.3 at fractional centres, blended, depth "
+    "tested per sample against slanted triangles; a point across the scissor's top-left corner, cut exactly "
+    "there (no partial column or row, unlike triangles); a triangle's corners in polygon mode point with depth "
+    "bias, and a back-facing one counting the stencil. D24_UNORM_S8_UINT; every sample compared.", W, H, draws,
+    samples=4, depth_format="d24_unorm_s8_uint"))

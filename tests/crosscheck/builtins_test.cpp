@@ -145,3 +145,33 @@ TEST(FragmentBuiltins, SampleShadingWritesFragDepthPerSample) {
     EXPECT_EQ(once.sampleDepthStorage.at(first + s), once.sampleDepthStorage.at(first)) << s;
   }
 }
+
+// gl_SampleID and gl_SamplePosition (builtins_sample): reading gl_SampleID shades every sample on
+// its own without any sample shading state. With 4x MSAA each sample of a covered pixel holds its
+// own position (the standard offsets, as UNORM8) and index / 4, and sample 3 is discarded in the
+// top half (its stencil not counted); with one sample gl_SampleID is 0 and gl_SamplePosition
+// (0.5, 0.5).
+TEST(FragmentBuiltins, SampleIdAndPositionShadeEachSample) {
+  const crosscheck::Frame msaa = renderAgreeing("builtins_sample_msaa", {});
+  ASSERT_EQ(msaa.samples, 4u);
+  constexpr float kOffsets[4][2] = {{0.375f, 0.125f}, {0.875f, 0.375f}, {0.125f, 0.625f}, {0.625f, 0.875f}};
+  const auto unorm = [](float v) { return static_cast<int>(std::nearbyint(v * 255)); };
+  for (const std::uint32_t y : {60u, 100u}) {  // inside the counter-clockwise triangle (in front of the background), top and bottom half
+    const std::uint32_t x = 30;
+    for (std::uint32_t s = 0; s < 4; ++s) {
+      const std::size_t sample = (static_cast<std::size_t>(y) * msaa.width + x) * 4 + s;
+      const bool discarded = s == 3 && y < 96;
+      EXPECT_EQ(int{msaa.sampleStencil.at(sample)}, discarded ? 0 : 1) << y << " sample " << s;
+      if (discarded) continue;
+      EXPECT_EQ(int{msaa.sampleRgba.at(4 * sample)}, unorm(kOffsets[s][0])) << y << " sample " << s;
+      EXPECT_EQ(int{msaa.sampleRgba.at(4 * sample + 1)}, unorm(kOffsets[s][1])) << y << " sample " << s;
+      EXPECT_EQ(int{msaa.sampleRgba.at(4 * sample + 2)}, unorm(0.25f * static_cast<float>(s))) << y << " sample " << s;
+    }
+  }
+  const crosscheck::Frame single = renderAgreeing("builtins_sample", {});
+  const std::size_t pixel = static_cast<std::size_t>(60) * single.width + 30;
+  EXPECT_EQ(int{single.rgba.at(4 * pixel)}, unorm(0.5f));
+  EXPECT_EQ(int{single.rgba.at(4 * pixel + 1)}, unorm(0.5f));
+  EXPECT_EQ(int{single.rgba.at(4 * pixel + 2)}, 0);
+  EXPECT_EQ(int{single.stencil.at(pixel)}, 1);
+}

@@ -182,3 +182,30 @@ TEST(Multisample, SceneFieldsAndErrors) {
   agreement::expectSceneError({"draws.1.multisample.alpha_to_coverage=true", "draws.1.line_rasterization=bresenham"},
                               "sample_mask_msaa.json", "lineRasterizationMode-02766");
 }
+
+// points_msaa: with 4x MSAA lavapipe snaps a point's square without the half-pixel offset and
+// covers each sample inside it. A size-1 point centred on the pixel corner (20, 30) covers
+// [19.5, 20.5) x [29.5, 30.5): one sample in each of the four pixels around the corner, the one
+// nearest it (pixel (19, 29): sample 3 at (0.625, 0.875); (20, 29): sample 2; (19, 30): sample 1;
+// (20, 30): sample 0), stencil 9 there and 0 elsewhere; one centred on (30.5, 30.5) covers its
+// pixel's four samples. A point across the scissor's top-left corner is cut exactly at it.
+TEST(Multisample, PointsCoverSamplesOfTheirSquare) {
+  const crosscheck::Frame f = renderAgreeing("points_msaa", {});
+  ASSERT_EQ(f.samples, 4u);
+  const auto stencilAt = [&](std::uint32_t x, std::uint32_t y, std::uint32_t s) {
+    return int{f.sampleStencil.at(sampleIndex(f, x, y, s))};
+  };
+  const std::uint32_t corner[4][3] = {{19, 29, 3}, {20, 29, 2}, {19, 30, 1}, {20, 30, 0}};
+  for (const auto& [x, y, covered] : corner) {
+    for (std::uint32_t s = 0; s < 4; ++s) {
+      EXPECT_EQ(stencilAt(x, y, s), s == covered ? 9 : 0) << x << ", " << y << " sample " << s;
+      EXPECT_EQ(sameRgb(sampleColour(f, x, y, s), {242, 230, 26, 255}), s == covered) << x << ", " << y << " sample " << s;
+    }
+  }
+  for (std::uint32_t s = 0; s < 4; ++s) {
+    EXPECT_TRUE(sameRgb(sampleColour(f, 30, 30, s), {26, 230, 242, 255})) << "sample " << s;
+    EXPECT_TRUE(sameRgb(sampleColour(f, 81, 11, s), {230, 51, 153, 255})) << "inside the scissor, sample " << s;
+    EXPECT_FALSE(sameRgb(sampleColour(f, 79, 11, s), {230, 51, 153, 255})) << "left of the scissor, sample " << s;
+    EXPECT_FALSE(sameRgb(sampleColour(f, 81, 9, s), {230, 51, 153, 255})) << "above the scissor, sample " << s;
+  }
+}

@@ -39,6 +39,7 @@ inline constexpr ShadingModelName kShadingModelNames[] = {
     {"depth_view", 0},
     {"builtins_discard", 0},
     {"builtins_frag_depth", 0},
+    {"builtins_sample", 0},
     {"varyings_64", 0},
 };
 

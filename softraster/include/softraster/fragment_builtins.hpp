@@ -16,11 +16,16 @@
 //                `static constexpr bool kWritesFragDepth = true` (then every fragment must write
 //                it): the depth test and write use it, clamped to [0, 1] (and to the viewport's
 //                range with depth clamp) and converted as the format does; no depth bias is
-//                added (lavapipe: a late depth test with the shader's z).
+//                added (lavapipe: a late depth test with the shader's z);
+//   sampleId, samplePosition  gl_SampleID and gl_SamplePosition: the invocation's sample and its
+//                offset in the pixel (kSamplePositions4x; 0 and (0.5, 0.5) with one sample). A
+//                shader that reads them declares `static constexpr bool kShadesPerSample = true`
+//                (shader.hpp): with 4x MSAA it then runs once per covered sample, as GLSL's
+//                gl_SampleID makes it do. One value for every lane (an invocation is one sample).
 // MaskOf<F> and the comparisons that make one (lessThan, ...) are written for both float types,
 // so one twin serves both paths. A discarded fragment writes nothing: no colour, depth or stencil
 // (lavapipe tests depth and stencil after the shader's kill, or early with a deferred write).
-// Deliberately absent: gl_SampleID / gl_SamplePosition, gl_SampleMask.
+// Deliberately absent: gl_SampleMask, gl_SampleMaskIn.
 #pragma once
 
 #include <softraster/math.hpp>
@@ -80,6 +85,8 @@ struct FragmentBuiltins {
   bool frontFacing = true;       // gl_FrontFacing
   MaskOf<F> discard{};           // set where the shader executes `discard`
   F fragDepth{};                 // gl_FragDepth: read only from a shader with kWritesFragDepth = true
+  int sampleId = 0;              // gl_SampleID
+  Vec2 samplePosition{0.5f, 0.5f};  // gl_SamplePosition
 };
 
 // `if (cond) discard;`

@@ -6,7 +6,8 @@
 // framebuffer's depth format, for how fmuladd rounds and for the fragment stage: the SIMD fast
 // path (detail/fast/) where options.hpp's Method::Exact allows it, else the scalar one.
 // Coverage: polygon modes fill, line and point (lavapipe's draw-pipeline path: in point mode x
-// and y are clipped at 2w, measured); 4x MSAA for filled triangles (Framebuffer::resolve()
+// and y are clipped at 2w, measured); 4x MSAA for filled triangles and points (point lists and
+// polygon mode point) (Framebuffer::resolve()
 // resolves as lavapipe does); depth bias for filled triangles and for polygon modes line and point
 // (Mesa's offset stage: geometry/polygon_offset.hpp); the course's 1/z depth buffer;
 // blending with every core factor and op, blend constants and the colour write mask; the stencil
@@ -30,7 +31,7 @@
 // detail/course/) take the same loop with their own triangle setup, coverage and interpolation.
 // A shader that samples textures (texture.hpp, kQuads) is shaded in 2x2 quads on both exact
 // paths, so its derivatives are lavapipe's.
-// Deliberately absent: MSAA lines, points and polygon modes, dual-source blending (each a later issue).
+// Deliberately absent: MSAA lines and polygon mode line, dual-source blending (each a later issue).
 #pragma once
 
 #if defined(__clang__)
@@ -152,9 +153,13 @@ class Context {
     if (options_.depthMode == DepthMode::InverseZ && framebuffer.depthFormat() != DepthFormat::D32Sfloat) {
       return Status::error("the 1/z depth buffer needs a D32_SFLOAT framebuffer");
     }
-    if (framebuffer.samples() == 4 && (!detail::isTriangleTopology(state.topology) ||
-                                       rs.polygonMode != PolygonMode::Fill || options_.depthMode != DepthMode::Vulkan)) {
-      return Status::error("softraster draws only filled triangles with 4x MSAA so far");
+    if (framebuffer.samples() == 4) {
+      const bool lines = detail::isLineTopology(state.topology) ||
+                         (detail::isTriangleTopology(state.topology) && rs.polygonMode == PolygonMode::Line);
+      if (lines || options_.depthMode != DepthMode::Vulkan) {
+        return Status::error("softraster draws only filled triangles and points with 4x MSAA so far (no lines, "
+                             "no polygon mode line, no 1/z depth buffer)");
+      }
     }
     if (!(rs.lineWidth >= DeviceLimits::kMinLineWidth && rs.lineWidth <= DeviceLimits::kMaxLineWidth)) {
       return Status::error("line width " + std::to_string(rs.lineWidth) + " is outside lineWidthRange [1, 255]");
@@ -222,7 +227,8 @@ class Context {
     if (Status status = validate(state, framebuffer); !status) return status;
     if constexpr (UsesFragmentBuiltins<Shader>) {
       const detail::SampleCoverage coverage = detail::sampleCoverage(state.multisample, framebuffer.samples(), options_.deviations);
-      if (coverage.perSample && coverage.alphaToCoverage) {
+      const bool perSample = coverage.perSample || (ShadesPerSample<Shader> && framebuffer.samples() == 4);
+      if (perSample && coverage.alphaToCoverage) {
         return Status::error("alpha to coverage with sample shading and the fragment built-ins is not supported by "
                              "softraster yet (lavapipe's per-sample invocations narrow one another's coverage)");
       }

@@ -108,6 +108,13 @@ template <class S>
 concept WritesFragDepth = UsesFragmentBuiltins<S> && requires {
   { S::kWritesFragDepth } -> std::convertible_to<bool>;
 } && S::kWritesFragDepth;
+// A shader with the built-ins whose fragment function reads gl_SampleID or gl_SamplePosition
+// declares `static constexpr bool kShadesPerSample = true`: with 4x MSAA it runs once per
+// covered sample (GLSL: reading gl_SampleID turns sample shading on at the full rate).
+template <class S>
+concept ShadesPerSample = UsesFragmentBuiltins<S> && requires {
+  { S::kShadesPerSample } -> std::convertible_to<bool>;
+} && S::kShadesPerSample;
 // A fragment function in one of the two special forms (quads, built-ins): a plain bool, not a
 // concept, so a shader that has neither gets one line about it in a failed check, not two chains.
 template <class S>

@@ -387,10 +387,14 @@ class ExactDraw {
   }
 
   void drawPointHere(Worker& worker, const Vertex& v) {
-    const QuadEdges quad = setupPoint(v.window, v.pointSize);
+    const QuadEdges quad = setupPoint(v.window, v.pointSize, multisample_ ? &region_ : nullptr);
     TriangleInterpolants<N> interpolants = setupPointInterpolants(v, kInterpolation);
     interpolants.frontFacing = worker.facingFront;
-    worker.sink.shadePixels(quad.edges, quad.bounds, interpolants);
+    if (multisample_) {
+      worker.sink.shadeSamples(quad.edges, quad.bounds, interpolants);
+    } else {
+      worker.sink.shadePixels(quad.edges, quad.bounds, interpolants);
+    }
   }
 
   // Constant for the draw.

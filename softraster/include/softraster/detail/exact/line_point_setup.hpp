@@ -6,7 +6,10 @@
 //   - Rectangular lines: the snapped endpoints offset by +/-(iround(256 * -dy * s),
 //     iround(256 * dx * s)), s = (width / 2) / sqrt(dx^2 + dy^2).
 //   - Bresenham lines: GL's diamond-exit rule with a major-axis quad of iround(width) pixels.
-//   - Points: a square of max(1, iround(256 * size)/256) pixels; attributes constant.
+//   - Points: a square of max(1, iround(256 * size)/256) pixels; attributes constant. With 4x
+//     MSAA (lp_setup_point.c, setup->multisample) the centre is snapped without the half-pixel
+//     offset, as triangles are, and the square is cut to the draw region exactly (its planes
+//     are clamped to the region's pixel edges: no partial column or row, unlike triangles).
 // Deliberately absent: smooth and stippled lines, point sprites.
 #pragma once
 
@@ -234,18 +237,29 @@ inline constexpr float kMaxPointSize = 255.0f;  // LP_MAX_POINT_WIDTH
 // A point's square: covered iff x0 <= 256*px < x0 + width (likewise y), width >= 1 px.
 // The corner and bounds are 64-bit: a point far outside the guard band snaps to INT32_MIN, and
 // its corner would overflow an int (the bounds then lie outside any draw region).
-inline QuadEdges setupPoint(Vec4 window, float size) {
+// multisampleRegion: with 4x MSAA, the draw region the square is cut to (null: single sample,
+// snapped with the half-pixel offset and left whole).
+inline QuadEdges setupPoint(Vec4 window, float size, const PixelRect* multisampleRegion = nullptr) {
   if (size > kMaxPointSize) size = kMaxPointSize;
+  const float offset = multisampleRegion != nullptr ? 0.0f : kPixelCentreOffset;
   const std::int32_t width = std::max<std::int32_t>(256, snapLineCoordinate(size));
-  const std::int64_t x0 = std::int64_t{snapLineCoordinate(window.x - kPixelCentreOffset)} - width / 2;
-  const std::int64_t y0 = std::int64_t{snapLineCoordinate(window.y - kPixelCentreOffset)} - width / 2;
+  std::int64_t x0 = std::int64_t{snapLineCoordinate(window.x - offset)} - width / 2;
+  std::int64_t y0 = std::int64_t{snapLineCoordinate(window.y - offset)} - width / 2;
+  std::int64_t x1 = x0 + width, y1 = y0 + width;
+  if (multisampleRegion != nullptr) {
+    const PixelRect& r = *multisampleRegion;
+    x0 = std::max<std::int64_t>(x0, std::int64_t{r.x0} << kSubpixelBits);
+    y0 = std::max<std::int64_t>(y0, std::int64_t{r.y0} << kSubpixelBits);
+    x1 = std::min<std::int64_t>(x1, (std::int64_t{r.x1} + 1) << kSubpixelBits);
+    y1 = std::min<std::int64_t>(y1, (std::int64_t{r.y1} + 1) << kSubpixelBits);
+  }
   QuadEdges q;
-  q.edges[0] = {-x0 + 1, -256, 0};             // left, inclusive
-  q.edges[1] = {x0 + width, 256, 0};           // right, exclusive
-  q.edges[2] = {-y0 + 1, 0, 256};              // top, inclusive
-  q.edges[3] = {y0 + width, 0, -256};          // bottom, exclusive
+  q.edges[0] = {-x0 + 1, -256, 0};  // left, inclusive
+  q.edges[1] = {x1, 256, 0};        // right, exclusive
+  q.edges[2] = {-y0 + 1, 0, 256};   // top, inclusive
+  q.edges[3] = {y1, 0, -256};       // bottom, exclusive
   const auto pixel = [](std::int64_t subpixels) { return static_cast<int>(subpixels >> kSubpixelBits); };
-  q.bounds = {pixel(x0), pixel(y0), pixel(x0 + width + 255) - 1, pixel(y0 + width + 255) - 1};
+  q.bounds = {pixel(x0), pixel(y0), pixel(x1 + 255) - 1, pixel(y1 + 255) - 1};
   return q;
 }
 

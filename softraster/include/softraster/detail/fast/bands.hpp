@@ -40,7 +40,7 @@ namespace softraster::detail {
 
 template <class Stage, class Uniforms, int N>
 class BandQueue {
-  enum class Kind : std::uint8_t { Triangle, Quad, SampledTriangle };
+  enum class Kind : std::uint8_t { Triangle, Quad, SampledTriangle, SampledQuad };
   struct Record {
     // Built in place from the set-up primitive, each field written once (no zeroing first); a
     // triangle leaves edges[3] unset, and nothing reads it.
@@ -108,11 +108,12 @@ class BandQueue {
       }
     }
 
-    void shadeSamples(const EdgeFunction (&edges)[3], const PixelRect& bounds, const TriangleInterpolants<N>& t) {
+    template <int E>
+    void shadeSamples(const EdgeFunction (&edges)[E], const PixelRect& bounds, const TriangleInterpolants<N>& t) {
       if (queue_.direct_) {
         queue_.direct_->shadeSamples(edges, bounds, t);
       } else {
-        queue_.record(list_, Kind::SampledTriangle, edges, bounds, t);
+        queue_.record(list_, E == 3 ? Kind::SampledTriangle : Kind::SampledQuad, edges, bounds, t);
       }
     }
 
@@ -196,6 +197,7 @@ class BandQueue {
           case Kind::Triangle: stage->shadePixels(triangle, r.bounds, r.interpolants); break;
           case Kind::Quad: stage->shadePixels(r.edges, r.bounds, r.interpolants); break;
           case Kind::SampledTriangle: stage->shadeSamples(triangle, r.bounds, r.interpolants); break;
+          case Kind::SampledQuad: stage->shadeSamples(r.edges, r.bounds, r.interpolants); break;
         }
       }
     }

@@ -26,7 +26,7 @@
 // of such a pixel) are dropped from coverage, as the scalar stage does; so is any shader with
 // alpha to coverage on, whose alpha drops lanes or samples (fragment/coverage.hpp). The sample
 // mask narrows MSAA coverage first; alpha to one sets the alpha to 1 before packing. Lines and
-// points go to the scalar stage it holds, and so do the triangles of a shader with the built-ins
+// points (with 4x MSAA too) go to the scalar stage it holds, and so do the triangles of a shader with the built-ins
 // under sample shading (shaded sample by sample).
 // Threads are the band queue's (fast/bands.hpp), which gives each thread a stage of its own.
 // Deliberately absent: a per-tile depth range, AVX-512.
@@ -83,14 +83,19 @@ class FastFragmentStage {
     }
   }
 
-  void shadeSamples(const EdgeFunction (&edges)[3], const PixelRect& bounds, const TriangleInterpolants<N>& t) const {
-    if constexpr (kBuiltins) {
-      if (target_.coverage.perSample) {  // sample shading: the scalar stage shades sample by sample
-        scalar_.shadeSamples(edges, bounds, t);
-        return;
+  template <int E>
+  void shadeSamples(const EdgeFunction (&edges)[E], const PixelRect& bounds, const TriangleInterpolants<N>& t) const {
+    if constexpr (E == 4) {  // a point's square: the scalar stage
+      scalar_.shadeSamples(edges, bounds, t);
+    } else {
+      if constexpr (kBuiltins) {
+        if (ShadesPerSample<Shader> || target_.coverage.perSample) {  // the scalar stage shades sample by sample
+          scalar_.shadeSamples(edges, bounds, t);
+          return;
+        }
       }
+      shadeSampledTriangle(edges, bounds, t);
     }
-    shadeSampledTriangle(edges, bounds, t);
   }
 
  private:

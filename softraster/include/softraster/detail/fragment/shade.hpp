@@ -4,7 +4,7 @@
 //   - single sample: depth at the pixel centre; a fragment failing the depth or the stencil test
 //     is not shaded; the stencil test and update (fragment/stencil.hpp) with the primitive's
 //     facing (TriangleInterpolants::frontFacing);
-//   - 4x MSAA (filled triangles): coverage and depth per sample, the fragment shaded once at the
+//   - 4x MSAA (filled triangles and points): coverage and depth per sample, the fragment shaded once at the
 //     pixel centre and written to the samples that are covered and pass the depth and stencil
 //     tests (stencil tested and updated per sample); the
 //     region's left column and top row as lavapipe's scissor planes cut them (MsaaRegionEdges),
@@ -21,7 +21,8 @@
 //   - sample shading (4x MSAA) with a shader that reads the built-ins: shaded once per covered
 //     sample, gl_FragCoord.xy and .z at the sample, each sample tested and written on its own
 //     (shadeSampleBySample); without the built-ins every sample would get the same colour, so
-//     such a shader is shaded once per pixel as before.
+//     such a shader is shaded once per pixel as before; a shader reading gl_SampleID or
+//     gl_SamplePosition (ShadesPerSample) is shaded sample by sample without the state too.
 // Deliberately absent: coverage itself (exact/rasterizer.hpp walks it).
 #pragma once
 
@@ -102,9 +103,10 @@ class FragmentStage {
     callCompiledFor<kInstructionSet, &FragmentStage::template shadePixelsHere<E>>(*this, edges, bounds, t);
   }
 
-  // 4x MSAA: every pixel with a sample inside all three edges of a triangle.
-  void shadeSamples(const EdgeFunction (&edges)[3], const PixelRect& bounds, const TriangleInterpolants<N>& t) const {
-    callCompiledFor<kInstructionSet, &FragmentStage::shadeSamplesHere>(*this, edges, bounds, t);
+  // 4x MSAA: every pixel with a sample inside all E edges (3: a triangle; 4: a point's square).
+  template <int E>
+  void shadeSamples(const EdgeFunction (&edges)[E], const PixelRect& bounds, const TriangleInterpolants<N>& t) const {
+    callCompiledFor<kInstructionSet, &FragmentStage::template shadeSamplesHere<E>>(*this, edges, bounds, t);
   }
 
  private:
@@ -144,14 +146,15 @@ class FragmentStage {
     });
   }
 
-  void shadeSamplesHere(const EdgeFunction (&edges)[3], const PixelRect& bounds, const TriangleInterpolants<N>& t) const {
+  template <int E>
+  void shadeSamplesHere(const EdgeFunction (&edges)[E], const PixelRect& bounds, const TriangleInterpolants<N>& t) const {
     if (intersect(bounds, target_.msaa.drawRegion).empty()) return;  // lavapipe culls it
     std::array<float, (N == 0 ? 1 : N)> varyings{};
     rasterizeEdgesSampled(edges, bounds, target_.region, [&](int px, int py, unsigned covered) {
       unsigned mask = covered & target_.msaa.allowedSamples(px, py) & target_.coverage.sampleMask;
       if (mask == 0) return;
       if constexpr (kBuiltins) {
-        if (target_.coverage.perSample) {
+        if (kPerSampleShader || target_.coverage.perSample) {
           shadeSampleBySample(t, px, py, mask, varyings.data());
           return;
         }
@@ -218,6 +221,8 @@ class FragmentStage {
       builtins.fragCoord = {sx, sy, z, oneOverW};
       builtins.frontFacing = t.frontFacing;
       builtins.discard = false;
+      builtins.sampleId = s;
+      builtins.samplePosition = {kSamplePositions4x[s][0], kSamplePositions4x[s][1]};
       Vec4 c = shadeFragment<Shader>(uniforms_, varyings, builtins);
       if (builtins.discard) continue;
       const std::size_t sample = pixel * 4 + static_cast<std::size_t>(s);
@@ -297,6 +302,7 @@ class FragmentStage {
 
   static constexpr bool kBuiltins = UsesFragmentBuiltins<Shader>;
   static constexpr bool kWritesDepth = WritesFragDepth<Shader>;
+  static constexpr bool kPerSampleShader = ShadesPerSample<Shader>;  // reads gl_SampleID: shaded per sample
   static constexpr InterpolationSet<N> kInterpolation = interpolationOf<Shader>();
 
   const typename Shader::Uniforms& uniforms_;
