@@ -1,7 +1,8 @@
 // Helpers the scene-parameter tests share (texture_test, shadow_test, lighting_test,
 // stencil_test): a scene of scenes/ rendered by both renderers under the validation layer and
-// required to agree to the bit (stencil included), how many pixels two frames differ in, and a
-// scene error checked to be one line naming the file and the place.
+// required to agree to the bit (stencil included), the same scene in softraster's spec mode (the
+// known deviations' tests), how many pixels two frames differ in, and a scene error checked to be
+// one line naming the file and the place.
 #pragma once
 
 #include "compare/compare.hpp"
@@ -48,6 +49,26 @@ inline crosscheck::Frame renderAgreeing(const std::string& name, const std::vect
     if (first.rgba.empty()) first = std::move(*soft);
   }
   return first;
+}
+
+// Scene `name` drawn by softraster following the spec (Deviations::Spec), on the fast and the
+// scalar exact path in that order: the frames a known deviation's test compares with lavapipe's.
+// Empty (with a test failure) if the scene does not load or a path fails.
+inline std::vector<crosscheck::Frame> renderInSpecMode(const std::string& name) {
+  auto scene = crosscheck::loadScene(kScenes / (name + ".json"), {});
+  EXPECT_TRUE(scene) << scene.error();
+  if (!scene) return {};
+  std::vector<crosscheck::Frame> frames;
+  for (softraster::Method method : {softraster::Method::Exact, softraster::Method::ExactScalar}) {
+    softraster::ContextOptions options;
+    options.method = method;
+    options.deviations = softraster::Deviations::Spec;
+    auto spec = crosscheck::renderSoftraster(*scene, options);
+    EXPECT_TRUE(spec) << spec.error();
+    if (!spec) return {};
+    frames.push_back(std::move(*spec));
+  }
+  return frames;
 }
 
 // Pixels whose RGB differs between two frames of the same size.
