@@ -4,56 +4,21 @@ blend_products, transparency, msaa_blend, logic_ops and logic_ops_msaa (one JSON
 The 2D scenes use the clip_space camera with positions laid out in pixels (x_win = x * W/2 + W/2),
 vertex colours with alpha, and colours chosen off the 1/255 grid so that every product rounds.
 Run from scenes/:  python3 tools/make_blend_scenes.py"""
-import json
+import os
 import random
-import re
+import sys
+
+sys.path.insert(0, os.path.dirname(__file__))
+from clip_layout import BACKGROUND, background, clip, dump, quad, scene  # noqa: E402
 
 FACTORS = ["zero", "one", "src_color", "one_minus_src_color", "dst_color", "one_minus_dst_color",
            "src_alpha", "one_minus_src_alpha", "dst_alpha", "one_minus_dst_alpha", "constant_color",
            "one_minus_constant_color", "constant_alpha", "one_minus_constant_alpha", "src_alpha_saturate"]
 OPS = ["add", "subtract", "reverse_subtract", "min", "max"]
-# A background with a different colour and alpha in each corner: every destination factor varies.
-BACKGROUND = [[0.81, 0.23, 0.11, 0.17], [0.13, 0.71, 0.29, 0.93], [0.21, 0.33, 0.87, 0.61],
-              [0.93, 0.86, 0.41, 0.37]]  # top-left, top-right, bottom-left, bottom-right
-
-
-def clip(px, py, w, h, z=0.5):
-    """Clip-space position of pixel coordinate (px, py) in a w x h framebuffer."""
-    return [round(px / (w / 2) - 1, 6), round(py / (h / 2) - 1, 6), z]
-
-
-def quad(name, x, y, qw, qh, colours, w, h, z=0.5, **state):
-    """An indexed quad (two triangles) from (x, y) to (x + qw, y + qh) in pixels; colours for its
-    top-left, top-right, bottom-left and bottom-right corners."""
-    d = {"name": name,
-         "positions": [clip(x, y, w, h, z), clip(x + qw, y, w, h, z), clip(x, y + qh, w, h, z),
-                       clip(x + qw, y + qh, w, h, z)],
-         "colours": colours, "indices": [0, 2, 1, 1, 2, 3], "cull": "none"}
-    d.update(state)
-    return d
 
 
 def rgba(rng, alpha_low=0.05, alpha_high=0.95):
     return [round(rng.uniform(0.04, 0.96), 3) for _ in range(3)] + [round(rng.uniform(alpha_low, alpha_high), 3)]
-
-
-def dump(filename, scene):
-    text = json.dumps(scene, indent=1)
-    # Arrays of numbers on one line each.
-    text = re.sub(r"\[\s+([-0-9.e, \n]+?)\s+\]", lambda m: "[" + " ".join(m.group(1).split()) + "]", text)
-    with open(filename, "w") as f:
-        f.write(text + "\n")
-
-
-def background(w, h):
-    return quad("background", 0, 0, w, h, BACKGROUND, w, h, depth_test=False)
-
-
-def scene(description, w, h, draws, samples=1):
-    fb = {"width": w, "height": h, "clear_colour": [0, 0, 0, 0]}
-    if samples != 1:
-        fb["samples"] = samples
-    return {"description": description, "framebuffer": fb, "camera": {"type": "clip_space"}, "draws": draws}
 
 
 # ---- blend_factors: every source factor against every destination factor, op ADD ----

@@ -1,30 +1,15 @@
 #!/usr/bin/env python3
 """Writes the multisample-state scenes of the conformance suite (VkPipelineMultisampleStateCreateInfo:
-the sample mask, alpha to coverage, alpha to one): sample_mask_msaa, alpha_to_coverage_msaa,
-alpha_to_coverage and sample_mask_single_sample (one JSON file each).
+the sample mask, alpha to coverage, alpha to one) and 4x MSAA points: sample_mask_msaa,
+alpha_to_coverage_msaa, alpha_to_coverage, sample_mask_single_sample and points_msaa (one JSON
+file each).
 2D scenes: the clip_space camera with positions laid out in pixels (x_win = x * W/2 + W/2).
 Run from scenes/:  python3 tools/make_multisample_scenes.py"""
-import json
-import re
+import os
+import sys
 
-BACKGROUND = [[0.81, 0.23, 0.11, 0.17], [0.13, 0.71, 0.29, 0.93], [0.21, 0.33, 0.87, 0.61],
-              [0.93, 0.86, 0.41, 0.37]]  # top-left, top-right, bottom-left, bottom-right
-
-
-def clip(px, py, w, h, z=0.5):
-    """Clip-space position of pixel coordinate (px, py) in a w x h framebuffer."""
-    return [round(px / (w / 2) - 1, 6), round(py / (h / 2) - 1, 6), z]
-
-
-def quad(name, x, y, qw, qh, colours, w, h, z=0.5, **state):
-    """An indexed quad from (x, y) to (x + qw, y + qh) in pixels; colours for its top-left,
-    top-right, bottom-left and bottom-right corners."""
-    d = {"name": name,
-         "positions": [clip(x, y, w, h, z), clip(x + qw, y, w, h, z), clip(x, y + qh, w, h, z),
-                       clip(x + qw, y + qh, w, h, z)],
-         "colours": colours, "indices": [0, 2, 1, 1, 2, 3], "cull": "none"}
-    d.update(state)
-    return d
+sys.path.insert(0, os.path.dirname(__file__))
+from clip_layout import background, clip, dump, quad, scene  # noqa: E402
 
 
 def triangle(name, points, colours, w, h, z=0.5, **state):
@@ -33,26 +18,6 @@ def triangle(name, points, colours, w, h, z=0.5, **state):
          "colours": colours, "cull": "none"}
     d.update(state)
     return d
-
-
-def dump(filename, scene):
-    text = json.dumps(scene, indent=1)
-    text = re.sub(r"\[\s+([-0-9.e, \n]+?)\s+\]", lambda m: "[" + " ".join(m.group(1).split()) + "]", text)
-    with open(filename, "w") as f:
-        f.write(text + "\n")
-
-
-def scene(description, w, h, draws, samples=1, depth_format=None):
-    fb = {"width": w, "height": h, "clear_colour": [0, 0, 0, 0]}
-    if samples != 1:
-        fb["samples"] = samples
-    if depth_format:
-        fb["depth_format"] = depth_format
-    return {"description": description, "framebuffer": fb, "camera": {"type": "clip_space"}, "draws": draws}
-
-
-def background(w, h):
-    return quad("background", 0, 0, w, h, BACKGROUND, w, h, z=0.9, depth_test=False)
 
 
 def gradient(alpha_left, alpha_right, rgb_left=(0.9, 0.3, 0.1), rgb_right=(0.1, 0.5, 0.9)):
@@ -68,7 +33,7 @@ def flat(rgba):
 
 # ---- sample_mask_msaa: every kind of sample mask with 4x MSAA, before depth and stencil ----
 W, H = 160, 96
-draws = [background(W, H)]
+draws = [background(W, H, z=0.9)]
 masks = [0x1, 0x2, 0x4, 0x8, 0x5, 0xA, 0x6, 0x9, 0xE, 0x0, 0xFFFFFFF3, 0xF]
 for i, mask in enumerate(masks):
     x, y = 6 + (i % 6) * 25, 6 + (i // 6) * 44
@@ -97,7 +62,7 @@ dump("sample_mask_msaa.json", scene(
 
 # ---- alpha_to_coverage_msaa: alpha to coverage and alpha to one with 4x MSAA ----
 W, H = 192, 128
-draws = [background(W, H)]
+draws = [background(W, H, z=0.9)]
 # Row 1: flat alphas at and between the thresholds 0, 0.25, 0.5, 0.75 (a sample is kept where alpha > s / 4).
 for i, a in enumerate([0.0, 0.1, 0.25, 0.3, 0.5, 0.6, 0.75, 0.8, 1.0]):
     draws.append(quad(f"alpha {a}", 4 + i * 20.5, 4.5, 18.25, 18.5, flat([0.9, 0.8, 0.1, a]), W, H, z=0.5,
@@ -150,7 +115,7 @@ dump("alpha_to_coverage_msaa.json", scene(
 
 # ---- alpha_to_coverage: one sample, where lavapipe keeps a fragment iff alpha > 0.5 ----
 W, H = 160, 96
-draws = [background(W, H)]
+draws = [background(W, H, z=0.9)]
 for i, a in enumerate([0.0, 0.49, 0.5, 0.51, 1.0]):
     draws.append(quad(f"alpha {a}", 4 + i * 20.5, 4.5, 18.25, 18.5, flat([0.9, 0.8, 0.1, a]), W, H,
                       depth_test=False, multisample={"alpha_to_coverage": True}))
@@ -190,7 +155,7 @@ dump("alpha_to_coverage.json", scene(
 
 # ---- sample_mask_single_sample: the deviation (lavapipe ignores bit 0 with one sample) ----
 W, H = 96, 64
-draws = [background(W, H)]
+draws = [background(W, H, z=0.9)]
 draws.append(quad("sample mask 0xfffffffe", 8.3, 8.6, 40.2, 46.1, gradient(1.0, 1.0), W, H, z=0.4,
                   multisample={"sample_mask": 0xFFFFFFFE},
                   stencil={"compare_op": "always", "pass_op": "replace", "reference": 7}))
@@ -208,7 +173,7 @@ dump("sample_mask_single_sample.json", scene(
 
 # ---- points_msaa: points and polygon mode point with 4x MSAA ----
 W, H = 128, 96
-draws = [background(W, H)]
+draws = [background(W, H, z=0.9)]
 # Four points of size 1 centred on pixel corners and centres: with MSAA a point's square is
 # snapped without the half-pixel offset, so one centred on a corner covers one sample in each of
 # the four pixels around it.
