@@ -174,6 +174,10 @@ TEST(Multisample, SceneFieldsAndErrors) {
                               "/draws/1/multisample");
   agreement::expectSceneError({"draws.1.multisample.alpha_to_one=\"yes\""}, "sample_mask_msaa.json",
                               "/draws/1/multisample/alpha_to_one");
+  agreement::expectSceneError({"draws.1.multisample.min_sample_shading=1.5"}, "sample_mask_msaa.json",
+                              "/draws/1/multisample/min_sample_shading: must be in [0, 1] (VUID-VkPipelineMultisampleStateCreateInfo-minSampleShading-00786");
+  agreement::expectSceneError({"draws.1.multisample.min_sample_shading=\"half\""}, "sample_mask_msaa.json",
+                              "/draws/1/multisample/min_sample_shading");
   agreement::expectSceneError({"draws.1.multisample.alpha_to_coverage=true", "draws.1.line_rasterization=bresenham"},
                               "sample_mask_msaa.json", "lineRasterizationMode-02766");
 }
