@@ -9,6 +9,7 @@
 #include <cstdint>
 #include <limits>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace {
@@ -205,4 +206,49 @@ TEST(DrawState, SampleMaskAndSampleShadingRules) {
   expectRefused(state, "minSampleShading-00786");
   state.multisample.minSampleShading = std::numeric_limits<float>::quiet_NaN();
   expectRefused(state, "minSampleShading must be in [0, 1]");
+}
+
+// 4x MSAA lines are drawn (rectangular, Bresenham, polygon mode line); what is refused is a
+// sample mask on Bresenham lines, which lavapipe draws with multisampling off (so it applies
+// none), and the course's 1/z buffer with 4 samples.
+TEST(DrawState, MsaaLineRules) {
+  const auto drawMsaa = [](softraster::PipelineState state, softraster::DepthMode depthMode = softraster::DepthMode::Vulkan) {
+    softraster::Framebuffer framebuffer =
+        softraster::Framebuffer::create(16, 16, softraster::DepthFormat::D32Sfloat, 4).value();
+    framebuffer.clear({0, 0, 0, 1}, 1.0f);
+    const std::vector<White::Vertex> vertices{{{-1.0f, 0.0f, 0.5f}}, {{1.0f, 0.1f, 0.5f}}, {{-1.0f, 1.0f, 0.5f}}};
+    softraster::ContextOptions options;
+    options.depthMode = depthMode;
+    const softraster::Context context(options);
+    std::size_t white = 0;
+    const softraster::Status status =
+        context.draw<White>(state, White::Uniforms{}, std::span<const White::Vertex>(vertices), framebuffer);
+    for (std::size_t i = 0; i < framebuffer.colour().size(); i += 4) white += framebuffer.colour()[i] == 255;
+    return std::pair{status, white};
+  };
+  for (auto rasterization : {softraster::LineRasterization::Rectangular, softraster::LineRasterization::Bresenham}) {
+    softraster::PipelineState state = lines(2.0f);
+    state.rasterization.lineRasterization = rasterization;
+    const auto [status, white] = drawMsaa(state);
+    EXPECT_TRUE(status.ok()) << status.message();
+    EXPECT_GE(white, 4u * 16u) << "a 2-pixel line across 16 columns covers at least 64 samples";
+    softraster::PipelineState polygonMode;
+    polygonMode.rasterization.cullMode = softraster::CullMode::None;
+    polygonMode.rasterization.polygonMode = softraster::PolygonMode::Line;
+    polygonMode.rasterization.lineRasterization = rasterization;
+    EXPECT_TRUE(drawMsaa(polygonMode).first.ok());
+  }
+  softraster::PipelineState masked = lines(1.0f);
+  masked.multisample.sampleMask = 0x7;
+  EXPECT_TRUE(drawMsaa(masked).first.ok());  // rectangular lines are multisampled: the mask applies
+  masked.rasterization.lineRasterization = softraster::LineRasterization::Bresenham;
+  const softraster::Status refused = drawMsaa(masked).first;
+  ASSERT_FALSE(refused.ok());
+  EXPECT_NE(refused.message().find("a sample mask on Bresenham lines with 4x MSAA"), std::string::npos) << refused.message();
+  masked.multisample.sampleMask = 0xFFFFFFF0u | 0xFu;  // every sample kept: drawn
+  EXPECT_TRUE(drawMsaa(masked).first.ok());
+  const softraster::Status inverseZ = drawMsaa(lines(1.0f), softraster::DepthMode::InverseZ).first;
+  ASSERT_FALSE(inverseZ.ok());
+  EXPECT_NE(inverseZ.message().find("the 1/z depth buffer takes one sample per pixel"), std::string::npos)
+      << inverseZ.message();
 }

@@ -83,8 +83,12 @@ constexpr std::optional<Method> methodFromName(std::string_view name) {
 //           rectangle, where the spec's scissor test discards every sample of those fragments;
 //           lavapipe gives the lines and points of a back-facing polygon drawn in polygon
 //           mode line or point the front stencil state, where the spec gives them the back one;
-//           and with one sample lavapipe ignores the sample mask's bit 0 (it discards a draw
-//           only for a mask of 0), where the spec keeps a fragment iff bit 0 is set.
+//           with one sample lavapipe ignores the sample mask's bit 0 (it discards a draw
+//           only for a mask of 0), where the spec keeps a fragment iff bit 0 is set; and with
+//           4x MSAA lavapipe evaluates a line's attributes half a pixel off, drops covered
+//           samples its binning does not walk, and draws Bresenham lines with multisampling
+//           off (depth and stencil at sample 0 only), where the spec evaluates at the centre,
+//           covers every sample inside the line and tests each sample.
 enum class Deviations : std::uint8_t { Driver, Spec };
 
 // A Deviations value's name on the command line and in results ("driver", "spec").

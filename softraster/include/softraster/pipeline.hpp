@@ -6,9 +6,9 @@
 // framebuffer's depth format, for how fmuladd rounds and for the fragment stage: the SIMD fast
 // path (detail/fast/) where options.hpp's Method::Exact allows it, else the scalar one.
 // Coverage: polygon modes fill, line and point (lavapipe's draw-pipeline path: in point mode x
-// and y are clipped at 2w, measured); 4x MSAA for filled triangles and points (point lists and
-// polygon mode point) (Framebuffer::resolve()
-// resolves as lavapipe does); depth bias for filled triangles and for polygon modes line and point
+// and y are clipped at 2w, measured); 4x MSAA for every primitive and polygon mode
+// (Framebuffer::resolve() resolves as lavapipe does; Bresenham lines with multisampling off, as
+// lavapipe draws them); depth bias for filled triangles and for polygon modes line and point
 // (Mesa's offset stage: geometry/polygon_offset.hpp); the course's 1/z depth buffer;
 // blending with every core factor and op, blend constants and the colour write mask; the stencil
 // test with front and back state on the D24_UNORM_S8_UINT and D32_SFLOAT_S8_UINT formats; stippled
@@ -31,7 +31,7 @@
 // detail/course/) take the same loop with their own triangle setup, coverage and interpolation.
 // A shader that samples textures (texture.hpp, kQuads) is shaded in 2x2 quads on both exact
 // paths, so its derivatives are lavapipe's.
-// Deliberately absent: MSAA lines and polygon mode line, dual-source blending (each a later issue).
+// Deliberately absent: dual-source blending, the 1/z depth buffer with 4x MSAA.
 #pragma once
 
 #if defined(__clang__)
@@ -154,11 +154,13 @@ class Context {
       return Status::error("the 1/z depth buffer needs a D32_SFLOAT framebuffer");
     }
     if (framebuffer.samples() == 4) {
-      const bool lines = detail::isLineTopology(state.topology) ||
-                         (detail::isTriangleTopology(state.topology) && rs.polygonMode == PolygonMode::Line);
-      if (lines || options_.depthMode != DepthMode::Vulkan) {
-        return Status::error("softraster draws only filled triangles and points with 4x MSAA so far (no lines, "
-                             "no polygon mode line, no 1/z depth buffer)");
+      if (options_.depthMode != DepthMode::Vulkan) {
+        return Status::error("the 1/z depth buffer takes one sample per pixel (no 4x MSAA)");
+      }
+      const bool bresenhamLines = detail::isLineTopology(state.topology) && rs.lineRasterization == LineRasterization::Bresenham;
+      if (bresenhamLines && (state.multisample.sampleMask & 0xfu) != 0xfu) {
+        return Status::error("a sample mask on Bresenham lines with 4x MSAA is not supported by softraster yet (lavapipe "
+                             "draws them with multisampling off)");
       }
     }
     if (!(rs.lineWidth >= DeviceLimits::kMinLineWidth && rs.lineWidth <= DeviceLimits::kMaxLineWidth)) {

@@ -376,14 +376,42 @@ class ExactDraw {
     }
   }
 
+  // A line: single-sample, or with 4x MSAA as lavapipe draws it (exact/line_point_setup.hpp): its
+  // quad snapped without the half-pixel offset and walked as lavapipe bins it, or, for Bresenham
+  // lines of a line topology, which lavapipe draws with multisampling off, broadcast
+  // (fragment/shade.hpp). Deviations::Spec: attributes at the fragment centre, every sample.
   void drawLineHere(Worker& worker, const Vertex& a, const Vertex& b) {
+    const bool sampled = multisample_ && !broadcastLines_;
+    const float snapOffset = sampled ? 0.0f : kPixelCentreOffset;
     const auto line = rs_.lineRasterization == LineRasterization::Bresenham
-                          ? setupBresenhamLine(a.window, b.window, rs_.lineWidth)
-                          : setupRectangularLine(a.window, b.window, rs_.lineWidth);
+                          ? setupBresenhamLine(a.window, b.window, rs_.lineWidth, snapOffset)
+                          : setupRectangularLine(a.window, b.window, rs_.lineWidth, snapOffset);
     if (!line) return;
-    TriangleInterpolants<N> interpolants = setupLineInterpolants(a, b, *line, kInterpolation, provokingLast_);
+    const bool specLines = sampled && specDeviations_;
+    TriangleInterpolants<N> interpolants =
+        setupLineInterpolants(a, b, *line, kInterpolation, provokingLast_, specLines ? 0.0f : kPixelCentreOffset);
     interpolants.frontFacing = worker.facingFront;
-    worker.sink.shadePixels(line->quad.edges, line->quad.bounds, interpolants);
+    const QuadEdges& quad = line->quad;
+    if (!sampled) {
+      if (broadcastLines_) {
+        worker.sink.shadeBroadcast(quad.edges, quad.bounds, interpolants);
+      } else {
+        worker.sink.shadePixels(quad.edges, quad.bounds, interpolants);
+      }
+      return;
+    }
+    if (specLines) {
+      worker.sink.shadeSamples(quad.edges, quad.sampleBounds, interpolants);
+      return;
+    }
+    PixelRect box = quad.bounds;
+    if (intersect(box, region_).empty()) return;  // lavapipe culls it
+    box.x0 = std::max(box.x0, 0);
+    box.y0 = std::max(box.y0, 0);
+    // scissor_planes_needed: a left or top plane only where the box starts outside the region
+    const unsigned regionPlanes = (box.x0 < region_.x0 ? MsaaRegionEdges::kLeftPlane : 0u) |
+                                  (box.y0 < region_.y0 ? MsaaRegionEdges::kTopPlane : 0u);
+    worker.sink.shadeSamples(quad.edges, msaaLineWalk(box, region_), interpolants, regionPlanes);
   }
 
   void drawPointHere(Worker& worker, const Vertex& v) {
@@ -407,6 +435,11 @@ class ExactDraw {
   bool multisample_;
   bool provokingLast_ = rs_.provokingVertex == ProvokingVertex::Last;
   bool specFacing_;  // Deviations::Spec: an unfilled polygon's lines and points take its stencil face
+  bool specDeviations_ = specFacing_;  // Deviations::Spec: also MSAA lines as the spec draws them
+  // 4x MSAA Bresenham lines of a line topology: lavapipe draws them with multisampling off
+  // (lvp_pipeline.c disable_multisample; polygon mode line keeps it on).
+  bool broadcastLines_ = multisample_ && rs_.lineRasterization == LineRasterization::Bresenham &&
+                         isLineTopology(state_.topology);
   Queue fragments_;  // the stage, on one thread or in bands
   WindingFilter winding_{true, true};
   // Scratch: the Context's, reused across draws.

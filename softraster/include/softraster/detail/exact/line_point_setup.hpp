@@ -10,6 +10,14 @@
 //     MSAA (lp_setup_point.c, setup->multisample) the centre is snapped without the half-pixel
 //     offset, as triangles are, and the square is cut to the draw region exactly (its planes
 //     are clamped to the region's pixel edges: no partial column or row, unlike triangles).
+//   - Lines with 4x MSAA (lp_setup_line.c with setup->multisample): the quad is snapped without
+//     the half-pixel offset, but the attribute planes keep it (lavapipe's line coefficients use
+//     pixel_offset 0.5 while its MSAA fragment code adds 0.5 again: attributes and depth sit half
+//     a pixel right of and below where a single-sample line has them); the bounding box stays
+//     (min + 255) >> 8, which is not conservative for samples left of or above the first pixel
+//     centre, so which of those samples are drawn depends on lavapipe's binning into 64x64
+//     tiles (msaaLineWalk). Deviations::Spec evaluates the attributes at the fragment centre and
+//     walks every pixel a sample of the quad can be in.
 // Deliberately absent: smooth and stippled lines, point sprites.
 #pragma once
 
@@ -21,6 +29,7 @@
 
 #include <algorithm>
 #include <array>
+#include <bit>
 #include <cmath>
 #include <cstdint>
 #include <initializer_list>
@@ -40,7 +49,8 @@ inline std::int32_t snapLineCoordinate(float v) { return iroundHalfAway(kSubpixe
 // A convex quad in 1/256 px, counter-clockwise, as four edge functions.
 struct QuadEdges {
   EdgeFunction edges[4];
-  PixelRect bounds;
+  PixelRect bounds;  // lavapipe's: the pixel centres (1/256 px, no offset) the quad may cover
+  PixelRect sampleBounds;  // every pixel a 4x sample inside the quad may be in (conservative)
 };
 
 inline QuadEdges quadEdges(const std::array<std::int32_t, 4>& x, const std::array<std::int32_t, 4>& y) {
@@ -57,6 +67,7 @@ inline QuadEdges quadEdges(const std::array<std::int32_t, 4>& x, const std::arra
   const auto [minY, maxY] = std::minmax({y[0], y[1], y[2], y[3]});
   q.bounds = {(minX + 255) >> kSubpixelBits, (minY + 255) >> kSubpixelBits, ((maxX + 255) >> kSubpixelBits) - 1,
               ((maxY + 255) >> kSubpixelBits) - 1};
+  q.sampleBounds = {minX >> kSubpixelBits, minY >> kSubpixelBits, (maxX - 1) >> kSubpixelBits, (maxY - 1) >> kSubpixelBits};
   return q;
 }
 
@@ -78,22 +89,25 @@ struct LineSetup {
   float dx, dy, oneOverArea;
 };
 
-inline std::optional<LineSetup> setupRectangularLine(Vec4 v1, Vec4 v2, float width) {
+// pixelOffset: subtracted before snapping, kPixelCentreOffset with one sample, 0 with 4x MSAA.
+inline std::optional<LineSetup> setupRectangularLine(Vec4 v1, Vec4 v2, float width,
+                                                     float pixelOffset = kPixelCentreOffset) {
   const float dx = v1.x - v2.x, dy = v1.y - v2.y;
   const float area = dx * dx + dy * dy;
   if (area == 0) return std::nullopt;
   const float scale = (width * 0.5f) / std::sqrt(area);
   const std::int32_t tx = snapLineCoordinate(-dy * scale);
   const std::int32_t ty = snapLineCoordinate(dx * scale);
-  const std::int32_t x1 = snapLineCoordinate(v1.x - kPixelCentreOffset), y1 = snapLineCoordinate(v1.y - kPixelCentreOffset);
-  const std::int32_t x2 = snapLineCoordinate(v2.x - kPixelCentreOffset), y2 = snapLineCoordinate(v2.y - kPixelCentreOffset);
+  const std::int32_t x1 = snapLineCoordinate(v1.x - pixelOffset), y1 = snapLineCoordinate(v1.y - pixelOffset);
+  const std::int32_t x2 = snapLineCoordinate(v2.x - pixelOffset), y2 = snapLineCoordinate(v2.y - pixelOffset);
   if (!lineCoordinatesInRange({tx, ty, x1, y1, x2, y2})) return std::nullopt;
   return LineSetup{quadEdges({x1 - tx, x2 - tx, x2 + tx, x1 + tx}, {y1 - ty, y2 - ty, y2 + ty, y1 + ty}), dx, dy,
                    1.0f / area};
 }
 
 // GL's diamond-exit line (VK_EXT_line_rasterization BRESENHAM), following lp_setup_line.c.
-inline std::optional<LineSetup> setupBresenhamLine(Vec4 v1, Vec4 v2, float lineWidth) {
+// pixelOffset as for setupRectangularLine (polygon mode line with 4x MSAA snaps without it).
+inline std::optional<LineSetup> setupBresenhamLine(Vec4 v1, Vec4 v2, float lineWidth, float pixelOffset = kPixelCentreOffset) {
   const auto positive = [](float x) { return x >= 0; };  // Mesa's sign()
   const auto fracf = [](float f) { return f - std::floor(f); };
   float dx = v1.x - v2.x, dy = v1.y - v2.y;
@@ -144,10 +158,10 @@ inline std::optional<LineSetup> setupBresenhamLine(Vec4 v1, Vec4 v2, float lineW
       if (willDrawStart != drawStart) xOffset = -x1diff + 0.5f, yOffset = xOffset * dydx;
       if (willDrawEnd != drawEnd) xOffsetEnd = -x2diff + 0.5f, yOffsetEnd = xOffsetEnd * dydx;
     }
-    const std::int32_t ax = snapLineCoordinate(v1.x + xOffset - kPixelCentreOffset);
-    const std::int32_t bx = snapLineCoordinate(v2.x + xOffsetEnd - kPixelCentreOffset);
-    const std::int32_t ay = snapLineCoordinate(v1.y + yOffset - kPixelCentreOffset);
-    const std::int32_t by = snapLineCoordinate(v2.y + yOffsetEnd - kPixelCentreOffset);
+    const std::int32_t ax = snapLineCoordinate(v1.x + xOffset - pixelOffset);
+    const std::int32_t bx = snapLineCoordinate(v2.x + xOffsetEnd - pixelOffset);
+    const std::int32_t ay = snapLineCoordinate(v1.y + yOffset - pixelOffset);
+    const std::int32_t by = snapLineCoordinate(v2.y + yOffsetEnd - pixelOffset);
     if (!lineCoordinatesInRange({ax, bx, ay, by, fixedWidth})) return std::nullopt;
     x = {ax, bx, bx, ax};
     y = {ay - fixedWidth / 2, by - fixedWidth / 2, by + fixedWidth / 2, ay + fixedWidth / 2};
@@ -189,10 +203,10 @@ inline std::optional<LineSetup> setupBresenhamLine(Vec4 v1, Vec4 v2, float lineW
       if (willDrawStart != drawStart) yOffset = -y1diff - 0.5f, xOffset = yOffset * dxdy;
       if (willDrawEnd != drawEnd) yOffsetEnd = -y2diff - 0.5f, xOffsetEnd = yOffsetEnd * dxdy;
     }
-    const std::int32_t ax = snapLineCoordinate(v1.x + xOffset - kPixelCentreOffset);
-    const std::int32_t bx = snapLineCoordinate(v2.x + xOffsetEnd - kPixelCentreOffset);
-    const std::int32_t ay = snapLineCoordinate(v1.y + yOffset - kPixelCentreOffset);
-    const std::int32_t by = snapLineCoordinate(v2.y + yOffsetEnd - kPixelCentreOffset);
+    const std::int32_t ax = snapLineCoordinate(v1.x + xOffset - pixelOffset);
+    const std::int32_t bx = snapLineCoordinate(v2.x + xOffsetEnd - pixelOffset);
+    const std::int32_t ay = snapLineCoordinate(v1.y + yOffset - pixelOffset);
+    const std::int32_t by = snapLineCoordinate(v2.y + yOffsetEnd - pixelOffset);
     if (!lineCoordinatesInRange({ax, bx, ay, by, fixedWidth})) return std::nullopt;
     x = {ax - fixedWidth / 2, bx - fixedWidth / 2, bx + fixedWidth / 2, ax + fixedWidth / 2};
     y = {ay, by, by, ay};
@@ -203,12 +217,14 @@ inline std::optional<LineSetup> setupBresenhamLine(Vec4 v1, Vec4 v2, float lineW
 
 // Attribute planes of a line from its first vertex v1 (lp_setup_line.c linear_coef):
 // dadx = (da * dx) / area, a0 = a1 - (dadx * (x1 - 0.5) + dady * (y1 - 0.5)). Flat varyings are
-// v1's, or v2's with provokingLast.
+// v1's, or v2's with provokingLast. planeOrigin: the 0.5 subtracted from x1 and y1 (lavapipe's
+// pixel_offset, with 4x MSAA too; 0 puts the planes' origin at the window's, as triangles' MSAA
+// planes have it).
 template <int N>
 inline TriangleInterpolants<N> setupLineInterpolants(const ShadedVertex<N>& v1, const ShadedVertex<N>& v2,
                                                      const LineSetup& line, const InterpolationSet<N>& interpolation,
-                                                     bool provokingLast = false) {
-  const float x1 = v1.window.x - kPixelCentreOffset, y1 = v1.window.y - kPixelCentreOffset;
+                                                     bool provokingLast = false, float planeOrigin = kPixelCentreOffset) {
+  const float x1 = v1.window.x - planeOrigin, y1 = v1.window.y - planeOrigin;
   const auto linear = [&](float a1, float a2) {
     const float da21 = a1 - a2;
     PlaneEquation p;
@@ -230,6 +246,23 @@ inline TriangleInterpolants<N> setupLineInterpolants(const ShadedVertex<N>& v1, 
     }
   }
   return t;
+}
+
+// The pixels lavapipe's rasterizer walks for a 4x MSAA line (lp_setup_line.c, then
+// lp_setup_bin_triangle), from the line's bounding box `box` (QuadEdges::bounds) and the draw
+// region: a box inside one 64x64 tile is binned to that tile, a larger one to every tile the box
+// cut to the region touches, and each binned tile is walked whole (the multisampled rasterizer
+// has no 16x16 or 4x4 shortcut: lp_rast_triangle_ms_4_16 walks the tile). Inside the walk only
+// the planes decide, so a sample left of or above the box is drawn iff its pixel is in a binned
+// tile, that is unless the box starts on a tile's first column or row.
+inline PixelRect msaaLineWalk(PixelRect box, const PixelRect& region) {
+  constexpr int kTile = 64;
+  box.x0 = std::max(box.x0, 0);  // bboxpos
+  box.y0 = std::max(box.y0, 0);
+  const unsigned crossed = static_cast<unsigned>((box.x0 ^ box.x1) | (box.y0 ^ box.y1));
+  const PixelRect binned = std::bit_floor(crossed) < kTile ? box : intersect(box, region);
+  return {binned.x0 / kTile * kTile, binned.y0 / kTile * kTile, binned.x1 / kTile * kTile + kTile - 1,
+          binned.y1 / kTile * kTile + kTile - 1};
 }
 
 inline constexpr float kMaxPointSize = 255.0f;  // LP_MAX_POINT_WIDTH
@@ -260,6 +293,7 @@ inline QuadEdges setupPoint(Vec4 window, float size, const PixelRect* multisampl
   q.edges[3] = {y1, 0, -256};       // bottom, exclusive
   const auto pixel = [](std::int64_t subpixels) { return static_cast<int>(subpixels >> kSubpixelBits); };
   q.bounds = {pixel(x0), pixel(y0), pixel(x1 + 255) - 1, pixel(y1 + 255) - 1};
+  q.sampleBounds = q.bounds;
   return q;
 }
 

@@ -40,16 +40,17 @@ namespace softraster::detail {
 
 template <class Stage, class Uniforms, int N>
 class BandQueue {
-  enum class Kind : std::uint8_t { Triangle, Quad, SampledTriangle, SampledQuad };
+  enum class Kind : std::uint8_t { Triangle, Quad, SampledTriangle, SampledQuad, BroadcastQuad };
   struct Record {
     // Built in place from the set-up primitive, each field written once (no zeroing first); a
     // triangle leaves edges[3] unset, and nothing reads it.
     template <int E>
-    Record(Kind k, const EdgeFunction (&e)[E], const PixelRect& b, const TriangleInterpolants<N>& t)
-        : kind(k), bounds(b), interpolants(t) {
+    Record(Kind k, const EdgeFunction (&e)[E], const PixelRect& b, const TriangleInterpolants<N>& t, unsigned planes)
+        : kind(k), regionPlanes(static_cast<std::uint8_t>(planes)), bounds(b), interpolants(t) {
       std::copy(e, e + E, edges);
     }
     Kind kind;
+    std::uint8_t regionPlanes;  // sampled kinds: MsaaRegionEdges::allowedSamples' planes
     EdgeFunction edges[4];
     PixelRect bounds;
     TriangleInterpolants<N> interpolants;
@@ -104,16 +105,25 @@ class BandQueue {
       if (queue_.direct_) {
         queue_.direct_->shadePixels(edges, bounds, t);
       } else {
-        queue_.record(list_, E == 3 ? Kind::Triangle : Kind::Quad, edges, bounds, t);
+        queue_.record(list_, E == 3 ? Kind::Triangle : Kind::Quad, edges, bounds, t, 0);
       }
     }
 
     template <int E>
-    void shadeSamples(const EdgeFunction (&edges)[E], const PixelRect& bounds, const TriangleInterpolants<N>& t) {
+    void shadeSamples(const EdgeFunction (&edges)[E], const PixelRect& bounds, const TriangleInterpolants<N>& t,
+                      unsigned regionPlanes = MsaaRegionEdges::kBothPlanes) {
       if (queue_.direct_) {
-        queue_.direct_->shadeSamples(edges, bounds, t);
+        queue_.direct_->shadeSamples(edges, bounds, t, regionPlanes);
       } else {
-        queue_.record(list_, E == 3 ? Kind::SampledTriangle : Kind::SampledQuad, edges, bounds, t);
+        queue_.record(list_, E == 3 ? Kind::SampledTriangle : Kind::SampledQuad, edges, bounds, t, regionPlanes);
+      }
+    }
+
+    void shadeBroadcast(const EdgeFunction (&edges)[4], const PixelRect& bounds, const TriangleInterpolants<N>& t) {
+      if (queue_.direct_) {
+        queue_.direct_->shadeBroadcast(edges, bounds, t);
+      } else {
+        queue_.record(list_, Kind::BroadcastQuad, edges, bounds, t, 0);
       }
     }
 
@@ -140,13 +150,13 @@ class BandQueue {
  private:
   template <int E>
   void record(unsigned list, Kind kind, const EdgeFunction (&edges)[E], const PixelRect& bounds,
-              const TriangleInterpolants<N>& t) {
+              const TriangleInterpolants<N>& t, unsigned regionPlanes) {
     const PixelRect box = intersect(bounds, region_);
     if (box.empty()) return;  // no band would draw it
     List& l = lists_[list];
     std::vector<Record>& records = l.records;
     const auto index = static_cast<std::uint32_t>(records.size());
-    records.emplace_back(kind, edges, bounds, t);
+    records.emplace_back(kind, edges, bounds, t, regionPlanes);
     const int first = (box.y0 - region_.y0) / kBandRows, last = (box.y1 - region_.y0) / kBandRows;
     for (int b = first; b <= last; ++b) l.bins[static_cast<std::size_t>(b)].push_back(index);
   }
@@ -197,7 +207,8 @@ class BandQueue {
           case Kind::Triangle: stage->shadePixels(triangle, r.bounds, r.interpolants); break;
           case Kind::Quad: stage->shadePixels(r.edges, r.bounds, r.interpolants); break;
           case Kind::SampledTriangle: stage->shadeSamples(triangle, r.bounds, r.interpolants); break;
-          case Kind::SampledQuad: stage->shadeSamples(r.edges, r.bounds, r.interpolants); break;
+          case Kind::SampledQuad: stage->shadeSamples(r.edges, r.bounds, r.interpolants, r.regionPlanes); break;
+          case Kind::BroadcastQuad: stage->shadeBroadcast(r.edges, r.bounds, r.interpolants); break;
         }
       }
     }

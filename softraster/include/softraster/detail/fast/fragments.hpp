@@ -83,10 +83,16 @@ class FastFragmentStage {
     }
   }
 
+  // 4x MSAA Bresenham lines: the scalar stage.
+  void shadeBroadcast(const EdgeFunction (&edges)[4], const PixelRect& bounds, const TriangleInterpolants<N>& t) const {
+    scalar_.shadeBroadcast(edges, bounds, t);
+  }
+
   template <int E>
-  void shadeSamples(const EdgeFunction (&edges)[E], const PixelRect& bounds, const TriangleInterpolants<N>& t) const {
-    if constexpr (E == 4) {  // a point's square: the scalar stage
-      scalar_.shadeSamples(edges, bounds, t);
+  void shadeSamples(const EdgeFunction (&edges)[E], const PixelRect& bounds, const TriangleInterpolants<N>& t,
+                    unsigned regionPlanes = MsaaRegionEdges::kBothPlanes) const {
+    if constexpr (E == 4) {  // a line's or a point's quad: the scalar stage
+      scalar_.shadeSamples(edges, bounds, t, regionPlanes);
     } else {
       if constexpr (kBuiltins) {
         if (ShadesPerSample<Shader> || target_.coverage.perSample) {  // the scalar stage shades sample by sample

@@ -4,11 +4,16 @@
 //   - single sample: depth at the pixel centre; a fragment failing the depth or the stencil test
 //     is not shaded; the stencil test and update (fragment/stencil.hpp) with the primitive's
 //     facing (TriangleInterpolants::frontFacing);
-//   - 4x MSAA (filled triangles and points): coverage and depth per sample, the fragment shaded once at the
+//   - 4x MSAA (triangles, lines and points): coverage and depth per sample, the fragment shaded once at the
 //     pixel centre and written to the samples that are covered and pass the depth and stencil
 //     tests (stencil tested and updated per sample); the
 //     region's left column and top row as lavapipe's scissor planes cut them (MsaaRegionEdges),
-//     or as the spec's per-fragment scissor test does (Deviations::Spec);
+//     or as the spec's per-fragment scissor test does (Deviations::Spec); a line passes which of
+//     those planes it carries (exact/line_point_setup.hpp, msaaLineWalk);
+//   - 4x MSAA Bresenham lines (line topologies; shadeBroadcast): lavapipe turns multisampling off
+//     for them, so coverage, depth and the shader are the single-sample ones, depth and stencil
+//     are tested and written at sample 0 only, and the colour goes to all four samples; with
+//     Deviations::Spec every sample is covered and tested with the centre's depth;
 //   - depth is tested and written only with the depth test on (Vulkan); the course's 1/z buffer
 //     (DepthMode::InverseZ) compares the other way round, larger being nearer.
 //   - a shader with the fragment built-ins (shader.hpp) runs before the depth and stencil tests,
@@ -55,6 +60,7 @@ struct FragmentTarget {
   PixelRect region;   // what this stage may touch: the draw's raster region, or one band of it
   MsaaRegionEdges msaa;  // 4x MSAA: the whole draw's region edges (the same for every band)
   SampleCoverage coverage;  // sample mask, alpha to coverage, alpha to one
+  Deviations deviations;
   DepthRange depthRange;
   bool inverseZ;
   std::uint32_t width;
@@ -75,6 +81,7 @@ inline FragmentTarget fragmentTarget(const PipelineState& state, Framebuffer& fr
                                 state.scissor, deviations)
               : MsaaRegionEdges{},
           sampleCoverage(state.multisample, framebuffer.samples(), deviations),
+          deviations,
           fragmentDepthRange(viewport, state.rasterization.depthClampEnable),
           inverseZ,
           framebuffer.width(),
@@ -103,10 +110,19 @@ class FragmentStage {
     callCompiledFor<kInstructionSet, &FragmentStage::template shadePixelsHere<E>>(*this, edges, bounds, t);
   }
 
-  // 4x MSAA: every pixel with a sample inside all E edges (3: a triangle; 4: a point's square).
+  // 4x MSAA: every pixel with a sample inside all E edges (3: a triangle; 4: a line's or a point's
+  // quad). regionPlanes: which of the draw region's left and top planes the primitive carries
+  // (MsaaRegionEdges::allowedSamples).
   template <int E>
-  void shadeSamples(const EdgeFunction (&edges)[E], const PixelRect& bounds, const TriangleInterpolants<N>& t) const {
-    callCompiledFor<kInstructionSet, &FragmentStage::template shadeSamplesHere<E>>(*this, edges, bounds, t);
+  void shadeSamples(const EdgeFunction (&edges)[E], const PixelRect& bounds, const TriangleInterpolants<N>& t,
+                    unsigned regionPlanes = MsaaRegionEdges::kBothPlanes) const {
+    callCompiledFor<kInstructionSet, &FragmentStage::template shadeSamplesHere<E>>(*this, edges, bounds, t, regionPlanes);
+  }
+
+  // 4x MSAA Bresenham lines: every pixel centre inside the quad's 4 edges, as one sample covers
+  // it, written to the four samples (the top of this file).
+  void shadeBroadcast(const EdgeFunction (&edges)[4], const PixelRect& bounds, const TriangleInterpolants<N>& t) const {
+    callCompiledFor<kInstructionSet, &FragmentStage::shadeBroadcastHere>(*this, edges, bounds, t);
   }
 
  private:
@@ -147,11 +163,12 @@ class FragmentStage {
   }
 
   template <int E>
-  void shadeSamplesHere(const EdgeFunction (&edges)[E], const PixelRect& bounds, const TriangleInterpolants<N>& t) const {
+  void shadeSamplesHere(const EdgeFunction (&edges)[E], const PixelRect& bounds, const TriangleInterpolants<N>& t,
+                        unsigned regionPlanes) const {
     if (intersect(bounds, target_.msaa.drawRegion).empty()) return;  // lavapipe culls it
     std::array<float, (N == 0 ? 1 : N)> varyings{};
     rasterizeEdgesSampled(edges, bounds, target_.region, [&](int px, int py, unsigned covered) {
-      unsigned mask = covered & target_.msaa.allowedSamples(px, py) & target_.coverage.sampleMask;
+      unsigned mask = covered & target_.msaa.allowedSamples(px, py, regionPlanes) & target_.coverage.sampleMask;
       if (mask == 0) return;
       if constexpr (kBuiltins) {
         if (kPerSampleShader || target_.coverage.perSample) {
@@ -200,6 +217,51 @@ class FragmentStage {
         const std::size_t sample = pixel * 4 + static_cast<std::size_t>(s);
         blendColour(target_.colour + 4 * sample, c, target_.blend);
         if (target_.depth.testEnable && target_.depth.writeEnable) target_.depthStorage[sample] = stored[s];
+      }
+    });
+  }
+
+  void shadeBroadcastHere(const EdgeFunction (&edges)[4], const PixelRect& bounds, const TriangleInterpolants<N>& t) const {
+    std::array<float, (N == 0 ? 1 : N)> varyings{};
+    const bool spec = target_.deviations == Deviations::Spec;
+    const unsigned tested = spec ? 0xfu : 0x1u;  // lavapipe: sample 0's depth and stencil only
+    rasterizeEdges(edges, bounds, target_.region, [&](int px, int py) {
+      const float fx = static_cast<float>(px), fy = static_cast<float>(py);
+      const std::size_t pixel = static_cast<std::size_t>(py) * target_.width + static_cast<std::size_t>(px);
+      Vec4 colour{};
+      [[maybe_unused]] float fragDepth = 0.0f;
+      if constexpr (kBuiltins) {
+        if (!shadeWithBuiltins(t, px, py, 0.0f, varyings.data(), colour, fragDepth)) return;
+      }
+      std::uint32_t stored = 0;
+      unsigned passed = tested;
+      if (target_.depth.testEnable) {
+        const float z = kWritesDepth ? fragDepth : interpolateDepth<Fused>(t, fx, fy);
+        stored = depthToStorage<Format>(clampDepth(z, target_.depthRange));
+        passed = 0;
+        for (int s = 0; s < 4; ++s) {
+          if ((tested & (1u << s)) &&
+              depthTestPasses<Format>(target_.depth.compareOp, stored, target_.depthStorage[pixel * 4 + static_cast<std::size_t>(s)])) {
+            passed |= 1u << s;
+          }
+        }
+      }
+      if (target_.stencil.enable) {
+        for (int s = 0; s < 4; ++s) {
+          const unsigned bit = 1u << s;
+          if ((tested & bit) && !stencilTestAndUpdate(t.frontFacing, pixel * 4 + static_cast<std::size_t>(s), (passed & bit) != 0)) {
+            passed &= ~bit;
+          }
+        }
+      }
+      if (passed == 0) return;
+      if constexpr (!kBuiltins) colour = shadeAt(t, px, py, 0.0f, varyings.data());
+      const unsigned written = spec ? passed : 0xfu;  // lavapipe: sample 0 passing writes every colour sample
+      for (int s = 0; s < 4; ++s) {
+        const unsigned bit = 1u << s;
+        const std::size_t sample = pixel * 4 + static_cast<std::size_t>(s);
+        if (written & bit) blendColour(target_.colour + 4 * sample, colour, target_.blend);
+        if ((passed & bit) && target_.depth.testEnable && target_.depth.writeEnable) target_.depthStorage[sample] = stored;
       }
     });
   }

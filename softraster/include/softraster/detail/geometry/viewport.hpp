@@ -77,11 +77,16 @@ struct MsaaRegionEdges {
   PixelRect rasterRegion{0, 0, -1, -1};  // the region with the partial column and row
   int partialColumn = INT_MIN, partialRow = INT_MIN;
 
+  // Which of the region's left and top planes a primitive carries: triangles and points always
+  // (their bounding boxes are conservative, so one reaching the column or row has the plane);
+  // a line only when its bounding box starts left of or above the region (msaaLineWalk).
+  static constexpr unsigned kLeftPlane = 1, kTopPlane = 2, kBothPlanes = kLeftPlane | kTopPlane;
+
   // The samples (bit s: sample s) of pixel (px, py) the planes let through.
-  unsigned allowedSamples(int px, int py) const {
+  unsigned allowedSamples(int px, int py, unsigned planes = kBothPlanes) const {
     unsigned allowed = 0xfu;
-    if (px == partialColumn) allowed &= kRightHalfSamples;
-    if (py == partialRow) allowed &= kBottomHalfSamples;
+    if (px == partialColumn && (planes & kLeftPlane)) allowed &= kRightHalfSamples;
+    if (py == partialRow && (planes & kTopPlane)) allowed &= kBottomHalfSamples;
     return allowed;
   }
 };
