@@ -30,6 +30,18 @@ const std::vector<KnownDeviation>& knownDeviations() {
        "(llvmpipe_update_derived: rasterizer discard for sample_mask == 0; the fragment code applies the mask only "
        "when multisampled), so a mask with bit 0 clear and another bit set draws everything",
        "sample_mask_single_sample"},
+      {"msaa_lines",
+       "Vulkan, Rasterization, \"Basic Line Segment Rasterization\": coverage bits of sample points inside the line's "
+       "rectangle are 1, and its data are evaluated at pr, \"the center of a fragment or the location of a sample\"; "
+       "\"Bresenham Line Segment Rasterization\": sample locations may all be treated as the pixel centre, and each "
+       "sample is then tested and written like any other",
+       "with 4x MSAA its line coefficients keep the half-pixel offset its multisampled fragment code adds again, so "
+       "colours and depth are evaluated half a pixel right of and below the centre or sample; a line's bounding box "
+       "starts at the first pixel corner it covers, so covered samples left of or above it are dropped where that "
+       "pixel lies in another 64x64 tile than the box's (not binned); and Bresenham lines are drawn with "
+       "multisampling off "
+       "(depth and stencil tested and written at sample 0 only, the colour in all four samples)",
+       "lines_msaa"},
   };
   return kDeviations;
 }

@@ -1,10 +1,11 @@
 #!/usr/bin/env python3
 """Writes the multisample-state scenes of the conformance suite (VkPipelineMultisampleStateCreateInfo:
 the sample mask, alpha to coverage, alpha to one) and 4x MSAA points: sample_mask_msaa,
-alpha_to_coverage_msaa, alpha_to_coverage, sample_mask_single_sample and points_msaa (one JSON
+alpha_to_coverage_msaa, alpha_to_coverage, sample_mask_single_sample, points_msaa and lines_msaa (one JSON
 file each).
 2D scenes: the clip_space camera with positions laid out in pixels (x_win = x * W/2 + W/2).
 Run from scenes/:  python3 tools/make_multisample_scenes.py"""
+import math
 import os
 import sys
 
@@ -218,3 +219,94 @@ dump("points_msaa.json", scene(
     "there (no partial column or row, unlike triangles); a triangle's corners in polygon mode point with depth "
     "bias, and a back-facing one counting the stencil. D24_UNORM_S8_UINT; every sample compared.", W, H, draws,
     samples=4, depth_format="d24_unorm_s8_uint"))
+
+# ---- lines_msaa: lines and polygon mode line with 4x MSAA ----
+W, H = 160, 128
+draws = [background(W, H, z=0.9)]
+draws.append({"name": "slanted triangle", "positions": [clip(0, 70, W, H, 0.1), clip(160, 78, W, H, 0.9),
+              clip(80, 128, W, H, 0.5)], "colour": [0.45, 0.45, 0.5, 1], "cull": "none"})
+# A star of rectangular lines, widths 1 and 3, colour per vertex (lavapipe's line attribute planes
+# keep the half-pixel offset its MSAA fragment code adds again), depth tested against the slanted
+# triangle, the stencil counting every sample written.
+for k, width in enumerate([1.0, 3.0]):
+    cx, cy = 40 + 80 * k + 0.3, 92.6
+    pts, cols = [], []
+    for i in range(12):
+        a = i * math.pi / 6 + 0.13
+        pts += [clip(cx, cy, W, H, 0.2), clip(cx + 33 * math.cos(a), cy + 33 * math.sin(a), W, H, 0.7)]
+        cols += [[0.95, 0.15 + 0.06 * i, 0.1, 1], [0.1, 0.3, 0.95 - 0.05 * i, 1]]
+    draws.append({"name": f"star width {width}", "topology": "line_list", "positions": pts, "colours": cols,
+                  "line_width": width, "stencil": {"compare_op": "always", "pass_op": "increment_and_clamp"}})
+# Short lines whose left (or top) end lies 0.05..0.95 px before a pixel: lavapipe's bounding box
+# starts at the next pixel, and the samples of the pixel before it are drawn only where its
+# binning walks there: inside a 64x64 tile it does, across a tile's first column or row not (the
+# first four of each kind start inside tile (0, 0), the last four just before x 64 or y 64).
+for i in range(8):
+    x0 = 4.05 + 1.11 * i if i < 4 else 63.05 + 0.22 * (i - 4)
+    y = 3.4 + 5 * i if i < 4 else 30.4 + 3 * (i - 4)
+    draws.append({"name": f"short horizontal from x {x0:.2f}", "topology": "line_list",
+                  "positions": [clip(x0, y, W, H, 0.5), clip(x0 + 9.6, y + 0.8, W, H, 0.5)],
+                  "colours": [[0.9, 0.9, 0.2, 1], [0.2, 0.9, 0.9, 1]], "line_width": 2.0, "depth_test": False})
+    x = 24.3 + 4 * i if i < 4 else 44.3 + 4 * (i - 4)
+    y0 = 12.05 + 1.11 * i if i < 4 else 63.05 + 0.22 * (i - 4)
+    draws.append({"name": f"short vertical from y {y0:.2f}", "topology": "line_list",
+                  "positions": [clip(x, y0, W, H, 0.5), clip(x + 0.7, y0 + 10.2, W, H, 0.5)],
+                  "colours": [[0.9, 0.3, 0.9, 1], [0.3, 0.9, 0.3, 1]], "line_width": 1.5, "depth_test": False})
+# Long lines starting just before a 64-pixel tile boundary (x 63.2, y 63.3) and just before an
+# ordinary column: binned to the tiles their box cut to the region touches.
+draws.append({"name": "long from x 63.2", "topology": "line_list",
+              "positions": [clip(63.2, 20.4, W, H, 0.3), clip(150.7, 40.9, W, H, 0.3)],
+              "colour": [0.95, 0.6, 0.1, 1], "line_width": 2.5, "depth_test": False})
+draws.append({"name": "long from x 62.2", "topology": "line_list",
+              "positions": [clip(62.2, 50.4, W, H, 0.3), clip(150.7, 60.1, W, H, 0.3)],
+              "colour": [0.1, 0.95, 0.6, 1], "line_width": 2.5, "depth_test": False})
+draws.append({"name": "long from y 63.3", "topology": "line_list",
+              "positions": [clip(140.4, 63.3, W, H, 0.3), clip(150.2, 126.1, W, H, 0.3)],
+              "colour": [0.6, 0.1, 0.95, 1], "line_width": 3.0, "depth_test": False})
+# Against a scissor at x 70 (not on a tile edge): one line starts left of it (the scissor plane,
+# +127/256: samples 1 and 3 of column 69), one starts at x 69.3, inside the pixel before the
+# scissor, so its box starts at the scissor and it carries no plane (samples 0, 1 and 3 of column
+# 69), one starts at 70.3 (nothing there); and a strip crossing the scissor's top edge.
+for i, x0 in enumerate([66.6, 69.3, 70.3]):
+    draws.append({"name": f"scissored from x {x0}", "topology": "line_list",
+                  "positions": [clip(x0, 6.4 + 4 * i, W, H, 0.5), clip(x0 + 12.3, 7.1 + 4 * i, W, H, 0.5)],
+                  "colours": [[0.95, 0.95, 0.95, 1], [0.95, 0.2, 0.2, 1]], "line_width": 2.0, "depth_test": False,
+                  "scissor": {"x": 70, "y": 5, "width": 60, "height": 40}})
+draws.append({"name": "strip across the scissor's top", "topology": "line_strip",
+              "positions": [clip(90.2, 2.3, W, H, 0.5), clip(96.7, 4.7, W, H, 0.5), clip(101.1, 1.2, W, H, 0.5),
+                            clip(110.4, 12.8, W, H, 0.5)],
+              "colour": [0.2, 0.95, 0.95, 1], "line_width": 1.5, "depth_test": False,
+              "scissor": {"x": 70, "y": 5, "width": 60, "height": 40}})
+# Polygon mode line, rectangular and Bresenham (both multisampled: lavapipe turns multisampling off
+# only for line topologies), depth-biased, blended, a back face counting the stencil.
+draws.append({"name": "polygon mode line, rectangular, biased", "positions": [clip(110.3, 48.6, W, H, 0.4),
+              clip(156.2, 52.1, W, H, 0.5), clip(126.7, 68.4, W, H, 0.6)],
+              "colours": [[0.9, 0.2, 0.2, 0.7], [0.2, 0.9, 0.2, 0.7], [0.2, 0.2, 0.9, 0.7]],
+              "cull": "none", "polygon_mode": "line", "line_width": 1.5,
+              "depth_bias": {"constant": 64, "slope": 1.5, "clamp": 0},
+              "blend": {"source": "src_alpha", "destination": "one_minus_src_alpha"}})
+draws.append({"name": "polygon mode line, Bresenham, back face", "positions": [clip(90.3, 48.6, W, H, 0.4),
+              clip(80.2, 66.1, W, H, 0.5), clip(104.7, 67.4, W, H, 0.6)], "colour": [0.95, 0.8, 0.3, 1],
+              "cull": "none", "polygon_mode": "line", "line_rasterization": "bresenham",
+              "stencil": {"compare_op": "always", "pass_op": "increment_and_clamp"}})
+# Bresenham lines of a line topology: lavapipe draws them with multisampling off: the single-sample
+# pixels, depth and stencil tested and written at sample 0 only, the colour in all four samples.
+draws.append({"name": "Bresenham line strip, depth tested", "topology": "line_strip",
+              "positions": [clip(2.4, 74.3, W, H, 0.05), clip(60.6, 84.8, W, H, 0.95), clip(20.2, 126.5, W, H, 0.3),
+                            clip(150.3, 100.7, W, H, 0.6)],
+              "colours": [[0.9, 0.9, 0.9, 1], [0.9, 0.1, 0.5, 1], [0.1, 0.9, 0.5, 1], [0.5, 0.1, 0.9, 1]],
+              "line_rasterization": "bresenham", "line_width": 2.0,
+              "stencil": {"compare_op": "always", "pass_op": "replace", "depth_fail_op": "invert", "reference": 77},
+              "blend": {"source": "one", "destination": "one", "op": "max"}})
+dump("lines_msaa.json", scene(
+    "4x MSAA lines (line_list, line_strip, polygon mode line): lavapipe snaps a multisampled line's quad "
+    "without the half-pixel offset but keeps it in the attribute planes (colours and depth sit half a "
+    "pixel off), and its bounding box starts at the first pixel corner the quad covers, so the samples "
+    "left of or above it are drawn only where its binning walks (64x64 tiles: not across a tile edge): "
+    "stars of width 1 and 3, depth tested against a slanted triangle and counted in the stencil; short "
+    "lines starting 0.05..0.95 px before a pixel inside a tile and before a tile edge, long ones just "
+    "before a tile edge; lines against a scissor at x 70 with and without the scissor plane; polygon mode"
+    " line, rectangular (biased, blended) and Bresenham (back face, stencil); a Bresenham line strip, "
+    "which lavapipe draws with multisampling off (depth and stencil at sample 0, colour in every sample)."
+    " D24_UNORM_S8_UINT; every sample compared.", W, H, draws, samples=4,
+    depth_format="d24_unorm_s8_uint"))

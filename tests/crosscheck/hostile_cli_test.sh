@@ -93,9 +93,10 @@ case $case_name in
     expect_status 0
     ;;
   renderer_errors_name_the_file)
-    # A state the loader accepts but softraster cannot draw yet (lines with 4x MSAA, the
-    # Vulkan-state issue): the renderer's error comes with the scene file in front.
-    run render scenes/lines.json --renderer soft -o "$artifacts/x.png" --set framebuffer.samples=4
+    # A state the loader accepts but softraster cannot draw yet (a sample mask on Bresenham
+    # lines with 4x MSAA): the renderer's error comes with the scene file in front.
+    run render scenes/lines.json --renderer soft -o "$artifacts/x.png" --set framebuffer.samples=4 \
+      --set draws.0.line_rasterization=bresenham --set 'draws.0.multisample={"sample_mask": 7}'
     expect_status 2
     expect_error '^crosscheck: scenes/lines.json: .*4x MSAA'
     ;;

@@ -4,7 +4,8 @@
 // checked against values worked out here from the rules rather than from softraster's code:
 // a sample the mask drops keeps the background and its stencil 0; alpha to coverage keeps sample s
 // where alpha > s / 4 with 4x MSAA and a fragment where alpha > 0.5 with one sample; alpha to one
-// writes alpha 255; and the single-sample mask deviation, in driver and spec mode.
+// writes alpha 255; the single-sample mask deviation, in driver and spec mode; and 4x MSAA lines
+// as lavapipe bins them (and as the spec draws them).
 #include "agreement.hpp"
 
 #include <gtest/gtest.h>
@@ -12,6 +13,7 @@
 #include <array>
 #include <cstdint>
 #include <string>
+#include <vector>
 
 namespace {
 
@@ -206,5 +208,67 @@ TEST(Multisample, PointsCoverSamplesOfTheirSquare) {
     EXPECT_TRUE(sameRgb(sampleColour(f, 81, 11, s), {230, 51, 153, 255})) << "inside the scissor, sample " << s;
     EXPECT_FALSE(sameRgb(sampleColour(f, 79, 11, s), {230, 51, 153, 255})) << "left of the scissor, sample " << s;
     EXPECT_FALSE(sameRgb(sampleColour(f, 81, 9, s), {230, 51, 153, 255})) << "above the scissor, sample " << s;
+  }
+}
+
+// lines_msaa, driver mode (what lavapipe does) and spec mode. Against the scissor at x 70 (its
+// column 69 is the partial column, 70 not being a multiple of 64):
+//   - the line from x 66.6 (y 6.4) crosses the scissor's left edge, so it carries the scissor
+//     plane with lavapipe's +127/256: pixel (69, 6), fully inside the line, gets samples 1 and 3
+//     (x offsets 0.875, 0.625) and keeps the background in 0 and 2;
+//   - the line from x 69.3 (y 10.4, width 2; its left edge runs from x 69.24 to 69.36) starts in
+//     column 69, but its bounding box starts at the first pixel whose corner it covers, column 70,
+//     the scissor's: no plane, and its tile (x 64..127) is walked whole, so pixel (69, 10)
+//     gets every sample inside the line: 0, 1 and 3, not 2 (x offset 0.125);
+//   - the line from x 70.3 leaves column 69 alone.
+// The short line from x 63.05 (y 30.4, width 2) covers samples 1 and 3 of pixel (63, 30), but its
+// box starts at x 64, in the next tile, and lavapipe walks only the tiles it bins: (63, 30) keeps
+// the background there, and gets those samples in spec mode.
+// The spec scissors whole fragments: column 69 keeps the background in spec mode. The Bresenham
+// strip is drawn with multisampling off: its stencil (replace 77 where the depth test passes) is
+// written at sample 0 only; in spec mode at every sample that passes.
+TEST(Multisample, LinesAsLavapipeBinsThem) {
+  const crosscheck::Frame driver = renderAgreeing("lines_msaa", {});
+  ASSERT_EQ(driver.samples, 4u);
+  ASSERT_FALSE(driver.sampleStencil.empty());
+  // The samples of pixel (x, y) whose colour differs from sample `untouched`'s (the background).
+  const auto drawnSamples = [](const crosscheck::Frame& f, std::uint32_t x, std::uint32_t y, std::uint32_t untouched) {
+    unsigned drawn = 0;
+    for (std::uint32_t s = 0; s < 4; ++s) {
+      if (!sameRgb(sampleColour(f, x, y, s), sampleColour(f, x, y, untouched))) drawn |= 1u << s;
+    }
+    return drawn;
+  };
+  EXPECT_EQ(drawnSamples(driver, 69, 6, 0), 0b1010u);
+  EXPECT_EQ(drawnSamples(driver, 69, 10, 2), 0b1011u);
+  EXPECT_EQ(drawnSamples(driver, 69, 14, 0), 0u);
+  EXPECT_EQ(drawnSamples(driver, 71, 6, 0), 0u);  // inside the scissor and the line: every sample drawn alike
+  EXPECT_FALSE(sameRgb(sampleColour(driver, 71, 6, 0), sampleColour(driver, 69, 6, 0)));
+  EXPECT_EQ(drawnSamples(driver, 63, 30, 0), 0u);
+  // 77 at sample 0 only: nothing else writes 77 (the other stencils count up from 0).
+  const auto countStencil77 = [](const crosscheck::Frame& f, std::uint32_t s) {
+    std::size_t n = 0;
+    for (std::uint32_t y = 0; y < f.height; ++y) {
+      for (std::uint32_t x = 0; x < f.width; ++x) n += f.sampleStencil.at(sampleIndex(f, x, y, s)) == 77;
+    }
+    return n;
+  };
+  EXPECT_GT(countStencil77(driver, 0), 100u);
+  for (std::uint32_t s = 1; s < 4; ++s) EXPECT_EQ(countStencil77(driver, s), 0u) << "sample " << s;
+
+  const std::vector<crosscheck::Frame> specFrames = agreement::renderInSpecMode("lines_msaa");
+  ASSERT_EQ(specFrames.size(), 2u);
+  for (const crosscheck::Frame& spec : specFrames) {
+    for (const std::uint32_t y : {6u, 10u, 14u}) EXPECT_EQ(drawnSamples(spec, 69, y, 0), 0u) << "row " << y;
+    for (const std::uint32_t s : {1u, 3u}) {
+      EXPECT_FALSE(sameRgb(sampleColour(spec, 63, 30, s), sampleColour(driver, 63, 30, s))) << "sample " << s;
+    }
+    for (std::uint32_t s = 1; s < 4; ++s) EXPECT_GT(countStencil77(spec, s), 100u) << "sample " << s;
+    std::size_t differing = 0;
+    for (std::size_t i = 0; i < driver.sampleRgba.size(); i += 4) {
+      differing += driver.sampleRgba[i] != spec.sampleRgba[i] || driver.sampleRgba[i + 1] != spec.sampleRgba[i + 1] ||
+                   driver.sampleRgba[i + 2] != spec.sampleRgba[i + 2];
+    }
+    EXPECT_GT(differing, 500u);  // the half-pixel shift of every line's colours, the lost samples, the stencil
   }
 }
