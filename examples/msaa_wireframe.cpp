@@ -3,8 +3,8 @@
 //   msaa_wireframe OUT.png [WIDTH HEIGHT]
 // Shows: a multisampled Framebuffer and resolve(), depth bias keeping the faces behind their own
 // edges, a second shader and state for the overlay, GLM's matrices in Vulkan's clip space.
-// Softraster draws no lines into 4x framebuffers yet (filled triangles and points only), hence the
-// overlay after the resolve.
+// The overlay is drawn after the resolve on purpose: crisp one-sample edges over smoothed faces
+// (4x MSAA lines would be resolved too).
 // Deliberately one mesh and one light-free colour per face: the point is the passes, not shading.
 #define GLM_FORCE_DEPTH_ZERO_TO_ONE  // GLM's projections give z in [0, w], as Vulkan (and softraster) want
 #include "png.hpp"
