@@ -12,7 +12,8 @@
 //     those planes it carries (exact/line_point_setup.hpp, msaaLineWalk);
 //   - 4x MSAA Bresenham lines (line topologies; shadeBroadcast): lavapipe turns multisampling off
 //     for them, so coverage, depth and the shader are the single-sample ones, depth and stencil
-//     are tested and written at sample 0 only, and the colour goes to all four samples; with
+//     are tested and written at sample 0 only, and the colour goes to all four samples, the draw
+//     region cut exactly (single-sample scissor planes); with
 //     Deviations::Spec every sample is covered and tested with the centre's depth;
 //   - depth is tested and written only with the depth test on (Vulkan); the course's 1/z buffer
 //     (DepthMode::InverseZ) compares the other way round, larger being nearer.
@@ -225,7 +226,9 @@ class FragmentStage {
     std::array<float, (N == 0 ? 1 : N)> varyings{};
     const bool spec = target_.deviations == Deviations::Spec;
     const unsigned tested = spec ? 0xfu : 0x1u;  // lavapipe: sample 0's depth and stencil only
-    rasterizeEdges(edges, bounds, target_.region, [&](int px, int py) {
+    // Not multisampled, so no scissor plane reaches past the draw region (MsaaRegionEdges).
+    const PixelRect region = intersect(target_.region, target_.msaa.drawRegion);
+    rasterizeEdges(edges, bounds, region, [&](int px, int py) {
       const float fx = static_cast<float>(px), fy = static_cast<float>(py);
       const std::size_t pixel = static_cast<std::size_t>(py) * target_.width + static_cast<std::size_t>(px);
       Vec4 colour{};
