@@ -298,6 +298,18 @@ draws.append({"name": "Bresenham line strip, depth tested", "topology": "line_st
               "line_rasterization": "bresenham", "line_width": 2.0,
               "stencil": {"compare_op": "always", "pass_op": "replace", "depth_fail_op": "invert", "reference": 77},
               "blend": {"source": "one", "destination": "one", "op": "max"}})
+# Bresenham lines against a scissor (x 90, y 66: not on tile edges) and a viewport at (80.6, 64.75):
+# drawn with multisampling off, so the region is cut exactly, with no partial column or row.
+draws.append({"name": "Bresenham lines across a scissor", "topology": "line_list",
+              "positions": [clip(84.3, 70.2, W, H, 0.3), clip(120.6, 74.9, W, H, 0.3), clip(95.2, 62.1, W, H, 0.3),
+                            clip(99.8, 90.6, W, H, 0.3)],
+              "colours": [[0.95, 0.95, 0.3, 1], [0.3, 0.95, 0.95, 1], [0.95, 0.3, 0.95, 1], [0.3, 0.3, 0.95, 1]],
+              "line_rasterization": "bresenham", "line_width": 3.0, "depth_test": False,
+              "scissor": {"x": 90, "y": 66, "width": 40, "height": 30}})
+draws.append({"name": "Bresenham lines in an offset viewport", "topology": "line_strip",
+              "positions": [[-1.05, -0.6, 0.3], [-0.2, -1.1, 0.3], [0.4, -0.3, 0.3]],
+              "colour": [0.6, 0.95, 0.2, 1], "line_rasterization": "bresenham", "line_width": 2.0,
+              "depth_test": False, "viewport": {"x": 80.6, "y": 64.75, "width": 40, "height": 30}})
 dump("lines_msaa.json", scene(
     "4x MSAA lines (line_list, line_strip, polygon mode line): lavapipe snaps a multisampled line's quad "
     "without the half-pixel offset but keeps it in the attribute planes (colours and depth sit half a "
@@ -307,6 +319,7 @@ dump("lines_msaa.json", scene(
     "lines starting 0.05..0.95 px before a pixel inside a tile and before a tile edge, long ones just "
     "before a tile edge; lines against a scissor at x 70 with and without the scissor plane; polygon mode"
     " line, rectangular (biased, blended) and Bresenham (back face, stencil); a Bresenham line strip, "
-    "which lavapipe draws with multisampling off (depth and stencil at sample 0, colour in every sample)."
+    "which lavapipe draws with multisampling off (depth and stencil at sample 0, colour in every sample), "
+    "and Bresenham lines against a scissor and an offset viewport, which multisampling off cuts exactly."
     " D24_UNORM_S8_UINT; every sample compared.", W, H, draws, samples=4,
     depth_format="d24_unorm_s8_uint"))
