@@ -78,7 +78,7 @@ class ExactDraw {
         transform_(makeViewportTransform(viewport_)),
         region_(drawRegion(state.scissor, viewport_, framebuffer.width(), framebuffer.height())),
         multisample_(framebuffer.samples() == 4),
-        specFacing_(options.deviations == Deviations::Spec),
+        specDeviations_(options.deviations == Deviations::Spec),
         // With 4x MSAA the fragment stage may also touch the column and row lavapipe's scissor
         // planes reach (MsaaRegionEdges); the bands (fast/bands.hpp) cover them too.
         fragments_(pool, scratch, state, uniforms, framebuffer, viewport_,
@@ -326,7 +326,7 @@ class ExactDraw {
     }
     Vertex biased[3] = {a, b, c};
     if (rs_.depthBias.enable) offsetUnfilledTriangle(biased[0], biased[1], biased[2], rs_.depthBias, Format);
-    worker.facingFront = !specFacing_ || facesFrontInPipeline(a.window, b.window, c.window, rs_.frontFace);
+    worker.facingFront = !specDeviations_ || facesFrontInPipeline(a.window, b.window, c.window, rs_.frontFace);
     drawUnfilledTriangle(
         rs_.polygonMode, biased[0], biased[1], biased[2], edgeFlags, kInterpolation,
         [&](const Vertex& p, const Vertex& q) { drawLine(worker, p, q); },
@@ -434,8 +434,9 @@ class ExactDraw {
   PixelRect region_;
   bool multisample_;
   bool provokingLast_ = rs_.provokingVertex == ProvokingVertex::Last;
-  bool specFacing_;  // Deviations::Spec: an unfilled polygon's lines and points take its stencil face
-  bool specDeviations_ = specFacing_;  // Deviations::Spec: also MSAA lines as the spec draws them
+  // Deviations::Spec: an unfilled polygon's lines and points take its stencil face, and MSAA lines
+  // are drawn as the spec has them.
+  bool specDeviations_;
   // 4x MSAA Bresenham lines of a line topology: lavapipe draws them with multisampling off
   // (lvp_pipeline.c disable_multisample; polygon mode line keeps it on).
   bool broadcastLines_ = multisample_ && rs_.lineRasterization == LineRasterization::Bresenham &&
