@@ -2,7 +2,9 @@
 // (vertex_color, D32_SFLOAT), so it builds in a minute where crosscheck bench needs every model.
 // For profiling and tuning the exact method's fast path between full benches: frames of
 // the shapes crosscheck bench's scenes stress (a full-screen quad: pixels; spheres of 100k and 1M
-// triangles: the front end and the band queue; stacked quads: overdraw), at 1 and 2 threads.
+// triangles: the front end and the band queue; the 100k sphere in polygon mode line: lines;
+// stacked quads: overdraw; 20k small triangles in 10 draws: the walk of a triangle of a few
+// blocks), at 1 and 2 threads.
 //   softraster_benchmarks --benchmark_filter=Sphere --benchmark_repetitions=5
 // Deliberately not a replacement for `crosscheck bench`: no lavapipe beside it, no agreement
 // check; times are the machine's (shared and noisy: compare medians, side by side). "CPU" is the
@@ -16,6 +18,7 @@
 #include <cmath>
 #include <cstdint>
 #include <numbers>
+#include <span>
 #include <vector>
 
 namespace {
@@ -68,8 +71,34 @@ Mesh quads(std::uint32_t count, bool backToFront) {
   return m;
 }
 
-// One frame per iteration: clear, then the mesh as one indexed draw (depth LESS, no culling).
-void drawFrames(benchmark::State& bench, const Mesh& mesh) {
+// `count` scattered triangles of about 10 pixels at random depths, both windings, coloured at
+// random, in `draws` meshes of their own (as scenes/bench/small_triangles_1080p.json): a fixed
+// linear congruential sequence.
+std::vector<Mesh> smallTriangles(std::uint32_t count, std::uint32_t draws) {
+  std::uint64_t state = 12345;
+  const auto next = [&state] {  // in [0, 1)
+    state = state * 6364136223846793005u + 1442695040888963407u;
+    return static_cast<float>(state >> 40) / static_cast<float>(1u << 24);
+  };
+  std::vector<Mesh> meshes(draws);
+  for (std::uint32_t t = 0; t < count; ++t) {
+    Mesh& m = meshes[t % draws];
+    const float cx = -0.95f + 1.9f * next(), cy = -0.95f + 1.9f * next(), z = 0.05f + 0.9f * next();
+    const float angle = 6.2831853f * next(), flip = next() < 0.5f ? 1.0f : -1.0f;
+    const softraster::Vec4 colour{next(), next(), next(), 1.0f};
+    for (int k = 0; k < 3; ++k) {
+      const float a = angle + flip * 2.0943951f * static_cast<float>(k);  // radius ~2.8 px: ~10 px
+      m.vertices.push_back({{cx + 0.0029f * std::cos(a), cy + 0.0052f * std::sin(a), z}, colour});
+      m.indices.push_back(static_cast<std::uint32_t>(m.indices.size()));
+    }
+  }
+  return meshes;
+}
+
+// One frame per iteration: clear, then each mesh as one indexed draw (depth LESS, no culling),
+// its triangles filled or as lines.
+void drawFrames(benchmark::State& bench, std::span<const Mesh> meshes,
+                softraster::PolygonMode mode = softraster::PolygonMode::Fill) {
   softraster::ContextOptions options;
   options.threads = static_cast<unsigned>(bench.range(0));
   const softraster::Context context(options);
@@ -80,25 +109,38 @@ void drawFrames(benchmark::State& bench, const Mesh& mesh) {
   }
   softraster::PipelineState state;
   state.rasterization.cullMode = softraster::CullMode::None;
+  state.rasterization.polygonMode = mode;
   Shader::Uniforms uniforms;
   uniforms.modelViewProjection = softraster::Mat4::identity();
+  std::size_t triangles = 0;
+  for (const Mesh& mesh : meshes) triangles += mesh.indices.size() / 3;
   for (auto _ : bench) {
     framebuffer->clear({0, 0, 0, 1}, 1.0f);
-    const softraster::Status status =
-        context.drawIndexed<Shader, softraster::DepthFormat::D32Sfloat>(state, uniforms, mesh.vertices, mesh.indices, *framebuffer);
-    if (!status) {
-      bench.SkipWithError(status.message().c_str());
-      return;
+    for (const Mesh& mesh : meshes) {
+      const softraster::Status status = context.drawIndexed<Shader, softraster::DepthFormat::D32Sfloat>(
+          state, uniforms, mesh.vertices, mesh.indices, *framebuffer);
+      if (!status) {
+        bench.SkipWithError(status.message().c_str());
+        return;
+      }
     }
     benchmark::DoNotOptimize(framebuffer->colour().data());
     benchmark::ClobberMemory();
   }
-  bench.counters["triangles"] = static_cast<double>(mesh.indices.size() / 3);
+  bench.counters["triangles"] = static_cast<double>(triangles);
+}
+void drawFrames(benchmark::State& bench, const Mesh& mesh,
+                softraster::PolygonMode mode = softraster::PolygonMode::Fill) {
+  drawFrames(bench, std::span(&mesh, 1), mode);
 }
 
 void Sphere100k(benchmark::State& bench) {
   static const Mesh mesh = sphere(100'000);
   drawFrames(bench, mesh);
+}
+void WireframeSphere100k(benchmark::State& bench) {
+  static const Mesh mesh = sphere(100'000);
+  drawFrames(bench, mesh, softraster::PolygonMode::Line);
 }
 void Sphere1M(benchmark::State& bench) {
   static const Mesh mesh = sphere(1'000'000);
@@ -116,13 +158,19 @@ void QuadStackFrontToBack(benchmark::State& bench) {
   static const Mesh mesh = quads(10, false);
   drawFrames(bench, mesh);
 }
+void SmallTriangles(benchmark::State& bench) {
+  static const std::vector<Mesh> meshes = smallTriangles(20'000, 10);
+  drawFrames(bench, meshes);
+}
 
 }  // namespace
 
 BENCHMARK(Sphere100k)->ArgName("threads")->Arg(1)->Arg(2)->Unit(benchmark::kMillisecond)->MeasureProcessCPUTime()->UseRealTime();
+BENCHMARK(WireframeSphere100k)->ArgName("threads")->Arg(1)->Arg(2)->Unit(benchmark::kMillisecond)->MeasureProcessCPUTime()->UseRealTime();
 BENCHMARK(Sphere1M)->ArgName("threads")->Arg(1)->Arg(2)->Unit(benchmark::kMillisecond)->MeasureProcessCPUTime()->UseRealTime();
 BENCHMARK(FullScreenQuad)->ArgName("threads")->Arg(1)->Arg(2)->Unit(benchmark::kMillisecond)->MeasureProcessCPUTime()->UseRealTime();
 BENCHMARK(QuadStackBackToFront)->ArgName("threads")->Arg(1)->Arg(2)->Unit(benchmark::kMillisecond)->MeasureProcessCPUTime()->UseRealTime();
+BENCHMARK(SmallTriangles)->ArgName("threads")->Arg(1)->Arg(2)->Unit(benchmark::kMillisecond)->MeasureProcessCPUTime()->UseRealTime();
 BENCHMARK(QuadStackFrontToBack)->ArgName("threads")->Arg(1)->Arg(2)->Unit(benchmark::kMillisecond)->MeasureProcessCPUTime()->UseRealTime();
 
 BENCHMARK_MAIN();
