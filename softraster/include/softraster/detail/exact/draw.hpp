@@ -366,6 +366,7 @@ class ExactDraw {
       std::swap(fixed.y[1], fixed.y[i]);
     }
     const TriangleEdges edges = setupEdges(fixed);
+    fragments_.prefetch(edges.bounds);
     TriangleInterpolants<N> interpolants =
         setupInterpolants(v0, v1, v2, kInterpolation, rs_.depthBias, Format, pixelOffset, provokingLast_);
     interpolants.frontFacing = (area > 0) == (rs_.frontFace == FrontFace::CounterClockwise);  // the stencil face

@@ -15,6 +15,9 @@
 // A clear pending on the framebuffer (Framebuffer::clear) is written by the first round, each
 // band's rows (full width) by the band's thread just before it draws them; rows outside the
 // draw region by the calling thread.
+// Thread k draws the k-th of equal runs of bands first, then helps with the others' (flush()), so
+// the same rows tend to stay in the same core's cache draw after draw. A band asks for the
+// colour and depth lines of its next small primitive while it draws the one before.
 // With no pool (one thread) every Recorder forwards its calls straight to one stage (whose
 // framebuffer access writes a pending clear whole).
 // Deliberately absent: square tiles (bands are simpler to bin and balance as well on 2-8 threads),
@@ -31,6 +34,7 @@
 #include <softraster/state.hpp>
 
 #include <algorithm>
+#include <atomic>
 #include <cstddef>
 #include <cstdint>
 #include <optional>
@@ -62,6 +66,9 @@ class BandQueue {
   struct alignas(64) List {
     std::vector<Record> records;
     std::vector<std::vector<std::uint32_t>> bins;
+    // flush(): list k's holds the next band of thread k's run not yet taken (a std::atomic_ref:
+    // a List is moved when the vector grows).
+    alignas(std::atomic_ref<std::size_t>::required_alignment) std::size_t nextBand = 0;
   };
 
  public:
@@ -85,6 +92,7 @@ class BandQueue {
         lists_(scratch.vector<List>(ScratchSlot::BandLists)) {
     if (pool_ == nullptr) {
       direct_.emplace(state, uniforms, framebuffer, viewport, region, inverseZ, deviations);
+      pixels_ = pixelsToPrefetch();
       return;
     }
     lists_.resize(workers());
@@ -138,6 +146,13 @@ class BandQueue {
   unsigned workers() const { return pool_ != nullptr ? pool_->threads() * kListsPerThread : 1; }
   Recorder recorder(unsigned list) { return Recorder(*this, list); }
 
+  // With no pool: asks for the cache lines of a small primitive about to be drawn (the front end
+  // calls it before the primitive's setup, which then hides part of the wait). The bands do
+  // this themselves, one primitive ahead.
+  void prefetch(const PixelRect& bounds) const {
+    if (direct_) prefetchPixels(bounds, region_);
+  }
+
   // Draws what the recorders recorded in this round; the front end calls it between rounds and
   // once at the end of the draw.
   void endRound() {
@@ -167,12 +182,28 @@ class BandQueue {
       if (region_.y0 > 0) framebuffer_.clearRows(*clear, 0, static_cast<std::uint32_t>(region_.y0 - 1));
       framebuffer_.clearRows(*clear, static_cast<std::uint32_t>(region_.y1 + 1), framebuffer_.height() - 1);
     }
-    pool_->run(static_cast<std::size_t>(bands_), [this, &clear](std::size_t band) {
-      if (clear) {
-        const PixelRect rows = bandRows(band);
-        framebuffer_.clearRows(*clear, static_cast<std::uint32_t>(rows.y0), static_cast<std::uint32_t>(rows.y1));
+    pixels_ = pixelsToPrefetch();
+    // Thread k owns the k-th of `threads` equal runs of bands and draws them first, in order;
+    // then it takes what is left of the other runs, band by band, from each run's own counter.
+    // The same thread tends to draw the same rows draw after draw, so they stay in its cache
+    // (drawn by whichever thread came first, 20k small triangles in 10 draws took twice the CPU
+    // time at 2 threads as at 1); taking from the others keeps the threads busy when the runs
+    // cost unequal amounts. Which thread draws a band never changes the band's pixels.
+    const std::size_t threads = pool_->threads(), bands = static_cast<std::size_t>(bands_);
+    const auto runEnd = [threads, bands](std::size_t k) { return (k + 1) * bands / threads; };
+    for (std::size_t k = 0; k < threads; ++k) lists_[k].nextBand = k * bands / threads;
+    pool_->run(threads, [this, &clear, threads, &runEnd](std::size_t k) {
+      for (std::size_t j = 0; j < threads; ++j) {
+        const std::size_t run = (k + j) % threads;  // its own run first
+        std::atomic_ref<std::size_t> next(lists_[run].nextBand);
+        for (std::size_t band = next.fetch_add(1); band < runEnd(run); band = next.fetch_add(1)) {
+          if (clear) {
+            const PixelRect rows = bandRows(band);
+            framebuffer_.clearRows(*clear, static_cast<std::uint32_t>(rows.y0), static_cast<std::uint32_t>(rows.y1));
+          }
+          drawBand(band);
+        }
       }
-      drawBand(band);
     });
     for (List& list : lists_) {
       list.records.clear();
@@ -200,8 +231,10 @@ class BandQueue {
       if (bin.empty()) continue;
       if (!stage) stage.emplace(state_, uniforms_, framebuffer_, viewport_, bandRows(band), inverseZ_, deviations_);
       const std::vector<Record>& records = list.records;
-      for (const std::uint32_t i : bin) {
-        const Record& r = records[i];
+      const PixelRect rows = bandRows(band);
+      for (std::size_t k = 0; k < bin.size(); ++k) {
+        if (k + 1 < bin.size()) prefetchPixels(records[bin[k + 1]].bounds, rows);
+        const Record& r = records[bin[k]];
         const EdgeFunction triangle[3] = {r.edges[0], r.edges[1], r.edges[2]};
         switch (r.kind) {
           case Kind::Triangle: stage->shadePixels(triangle, r.bounds, r.interpolants); break;
@@ -214,6 +247,37 @@ class BandQueue {
     }
   }
 
+  // Asks for the cache lines of colour and depth a small primitive's box covers inside `rows`
+  // (single-sample only), so that they arrive while the primitive before it is drawn: a box of a
+  // few pixels anywhere in a large frame otherwise waits on memory for every row it touches.
+  void prefetchPixels(const PixelRect& bounds, const PixelRect& rows) const {
+    const PixelRect box = intersect(bounds, rows);
+    if (box.empty() || box.y1 - box.y0 >= kPrefetchRows || box.x1 - box.x0 >= 16 || pixels_.colour == nullptr) return;
+    const std::size_t width = framebuffer_.width();
+    const std::uint8_t* colour = pixels_.colour;
+    const std::uint32_t* depth = pixels_.depth;
+    for (int y = box.y0; y <= box.y1; ++y) {
+      const std::size_t first = static_cast<std::size_t>(y) * width + static_cast<std::size_t>(box.x0);
+      const std::size_t last = static_cast<std::size_t>(y) * width + static_cast<std::size_t>(box.x1);
+      __builtin_prefetch(depth + first, 1);
+      __builtin_prefetch(depth + last, 1);
+      __builtin_prefetch(colour + 4 * first, 1);
+      __builtin_prefetch(colour + 4 * last, 1);
+    }
+  }
+  static constexpr int kPrefetchRows = 16;
+  // The framebuffer's pixels for prefetchPixels, single-sample only (else null), taken where
+  // reading them cannot write a pending clear: after the direct stage's construction has written
+  // it, or in flush() once the bands have taken it over.
+  struct Pixels {
+    const std::uint8_t* colour = nullptr;
+    const std::uint32_t* depth = nullptr;
+  };
+  Pixels pixelsToPrefetch() const {
+    if (framebuffer_.samples() != 1) return {};
+    return {framebuffer_.colour().data(), framebuffer_.depthStorage().data()};
+  }
+
   ThreadPool* pool_;
   const PipelineState& state_;
   const Uniforms& uniforms_;
@@ -224,6 +288,7 @@ class BandQueue {
   Deviations deviations_;
   int bands_;
   std::optional<Stage> direct_;
+  Pixels pixels_;
   std::vector<List>& lists_;  // the Context's scratch, kept between draws: one per front-end worker
 };
 
