@@ -32,8 +32,8 @@ enum class DepthMode : std::uint8_t { Vulkan, InverseZ };
 // culling, polygon modes) and after (depth test, shading, blending) with the exact method; lines
 // and points are drawn by the exact method's code; they draw on the calling thread, and with 4x
 // MSAA each pixel's one result goes to all four samples.
-//   Exact:       lavapipe's rules; filled single-sample triangles take the SIMD fast path (4x2
-//                pixel batches, AVX2) where the CPU has AVX2 and FMA, fmuladd is fused and the
+//   Exact:       lavapipe's rules; triangles, and single-sample lines and points, take the SIMD
+//                fast path (4x2 pixel batches, AVX2) where the CPU has AVX2 and FMA, fmuladd is fused and the
 //                shader's fragment function is written over its float type (shader.hpp);
 //                everything else takes the scalar path.
 //   ExactScalar: lavapipe's rules, one pixel at a time.

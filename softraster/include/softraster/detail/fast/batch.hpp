@@ -83,16 +83,18 @@ struct BatchPlane {
   return fmuladd(p.dady, py, fmuladd(p.dadx, px, p.a0));
 }
 
-// The three edge functions of a triangle over one block: value at the block's first lane plus
-// a constant offset per lane (-dcdx * column + dcdy * row), in two halves of four 64-bit lanes
-// (rows 0 and 1).
+// The E edge functions of a primitive (3: a triangle, 4: a line or point quad) over one block:
+// value at the block's first lane plus a constant offset per lane (-dcdx * column + dcdy * row),
+// in two halves of four 64-bit lanes (rows 0 and 1).
+template <int E>
 struct BlockEdges {
-  __m256i offsetRow0[3], offsetRow1[3];
+  __m256i offsetRow0[E], offsetRow1[E];
 };
 
-[[SOFTRASTER_FAST_TARGET]] inline BlockEdges blockEdges(const EdgeFunction (&edges)[3]) {
-  BlockEdges b;
-  for (int i = 0; i < 3; ++i) {
+template <int E>
+[[SOFTRASTER_FAST_TARGET]] inline BlockEdges<E> blockEdges(const EdgeFunction (&edges)[E]) {
+  BlockEdges<E> b;
+  for (int i = 0; i < E; ++i) {
     const std::int64_t dx = edges[i].dcdx, dy = edges[i].dcdy;
     b.offsetRow0[i] = _mm256_set_epi64x(-3 * dx, -2 * dx, -dx, 0);
     b.offsetRow1[i] = _mm256_add_epi64(b.offsetRow0[i], _mm256_set1_epi64x(dy));
@@ -100,12 +102,13 @@ struct BlockEdges {
   return b;
 }
 
-// Bit l set where lane l is strictly inside all three edges (value > 0), `first` the edge values
+// Bit l set where lane l is strictly inside all E edges (value > 0), `first` the edge values
 // at lane 0.
-[[SOFTRASTER_FAST_TARGET]] inline unsigned insideBits(const BlockEdges& b, const std::int64_t (&first)[3]) {
+template <int E>
+[[SOFTRASTER_FAST_TARGET]] inline unsigned insideBits(const BlockEdges<E>& b, const std::int64_t (&first)[E]) {
   const __m256i zero = _mm256_setzero_si256();
   __m256i row0 = _mm256_set1_epi64x(-1), row1 = row0;
-  for (int i = 0; i < 3; ++i) {
+  for (int i = 0; i < E; ++i) {
     const __m256i base = _mm256_set1_epi64x(first[i]);
     row0 = _mm256_and_si256(row0, _mm256_cmpgt_epi64(_mm256_add_epi64(base, b.offsetRow0[i]), zero));
     row1 = _mm256_and_si256(row1, _mm256_cmpgt_epi64(_mm256_add_epi64(base, b.offsetRow1[i]), zero));

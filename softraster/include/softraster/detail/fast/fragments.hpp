@@ -1,10 +1,11 @@
 // The fast path's fragment stage: the same contract as the scalar FragmentStage
-// (fragment/shade.hpp), with filled single-sample triangles walked and shaded in 4x2 blocks of
-// SIMD lanes (fast/batch.hpp) and the shader's fragment function run over FloatBatch:
-//   - the triangle's bounding box (clipped to the draw region) is walked block by block; where no
-//     edge value can wrap around 64 bits, each row of blocks is first cut exactly (integer
-//     division) into the blocks wholly outside an edge (skipped) and those wholly inside all
-//     three (every lane covered, no per-lane test); other blocks take their coverage from the
+// (fragment/shade.hpp), with single-sample triangles, lines and points (their quads: four edges)
+// walked and shaded in 4x2 blocks of SIMD lanes (fast/batch.hpp) and the shader's fragment
+// function run over FloatBatch:
+//   - the primitive's bounding box (clipped to the draw region) is walked block by block; where
+//     no edge value can wrap around 64 bits, each row of blocks is first cut exactly (integer
+//     division) into the blocks wholly outside an edge (skipped) and those wholly inside every
+//     edge (every lane covered, no per-lane test); other blocks take their coverage from the
 //     64-bit edge functions at their eight pixel centres;
 //   - the depth state (test, compare op, write) is copied once per triangle and branched on per
 //     block, branches the predictor learns (one block loop per stage, not one per state, keeps a
@@ -26,8 +27,8 @@
 // of such a pixel) are dropped from coverage, as the scalar stage does; so is any shader with
 // alpha to coverage on, whose alpha drops lanes or samples (fragment/coverage.hpp). The sample
 // mask narrows MSAA coverage first; alpha to one sets the alpha to 1 before packing. Lines and
-// points (with 4x MSAA too) go to the scalar stage it holds, and so do the triangles of a shader with the built-ins
-// under sample shading (shaded sample by sample).
+// points with 4x MSAA go to the scalar stage it holds, and so do the triangles of a shader with
+// the built-ins under sample shading (shaded sample by sample).
 // Threads are the band queue's (fast/bands.hpp), which gives each thread a stage of its own.
 // Deliberately absent: a per-tile depth range, AVX-512.
 #pragma once
@@ -74,13 +75,10 @@ class FastFragmentStage {
   FastFragmentStage(const FastFragmentStage&) = delete;
   FastFragmentStage& operator=(const FastFragmentStage&) = delete;
 
+  // A triangle (E = 3) or a line's or a point's quad (E = 4): the same walk and shading.
   template <int E>
   void shadePixels(const EdgeFunction (&edges)[E], const PixelRect& bounds, const TriangleInterpolants<N>& t) const {
-    if constexpr (E == 3) {
-      shadeTriangle(edges, bounds, t);
-    } else {
-      scalar_.shadePixels(edges, bounds, t);
-    }
+    shadePrimitive(edges, bounds, t);
   }
 
   // 4x MSAA Bresenham lines: the scalar stage.
@@ -135,9 +133,10 @@ class FastFragmentStage {
 
   // Whether a block's corners may decide it: no edge value c + dcdy * y - dcdx * x over the box
   // and one block past it can wrap around 64 bits (sample offsets stay inside that block).
-  static bool cornersDecide(const EdgeFunction (&edges)[3], const PixelRect& box) {
+  template <int E>
+  static bool cornersDecide(const EdgeFunction (&edges)[E], const PixelRect& box) {
     bool decide = true;
-    for (int i = 0; i < 3; ++i) {
+    for (int i = 0; i < E; ++i) {
       const double reach = std::fabs(static_cast<double>(edges[i].c)) +
                            std::fabs(static_cast<double>(edges[i].dcdy)) * (box.y1 + kBatchHeight) +
                            std::fabs(static_cast<double>(edges[i].dcdx)) * (box.x1 + kBatchWidth);
@@ -146,8 +145,9 @@ class FastFragmentStage {
     return decide;
   }
 
-  [[SOFTRASTER_FAST_TARGET]] void shadeTriangle(const EdgeFunction (&edges)[3], const PixelRect& bounds,
-                                                const TriangleInterpolants<N>& t) const {
+  template <int E>
+  [[SOFTRASTER_FAST_TARGET]] void shadePrimitive(const EdgeFunction (&edges)[E], const PixelRect& bounds,
+                                                 const TriangleInterpolants<N>& t) const {
     const PixelRect box = intersect(bounds, target_.region);
     if (box.empty()) return;
     // Nothing passes (but with the stencil on, failing fragments still update it).
@@ -171,23 +171,23 @@ class FastFragmentStage {
 
   // The bounding box block by block, calling block(px, py, inBox, inside, value) for each block
   // not wholly outside an edge: inBox its lanes inside the box, inside whether every lane (and
-  // sample) is inside all three edges, value the edge values at lane 0. lowest and highest: the
+  // sample) is inside all E edges, value the edge values at lane 0. lowest and highest: the
   // least and greatest offset from lane 0 of any lane (or sample) of a block, per edge.
   // Where no edge value can wrap around 64 bits (cornersDecide), each row of more than
   // kCutBlocks blocks is cut exactly, by integer division, into the run of blocks not wholly
-  // outside any edge and, inside it, the run wholly inside all three; a narrower row decides
+  // outside any edge and, inside it, the run wholly inside all of them; a narrower row decides
   // each block at its corners; elsewhere every block is visited and its lanes tested.
-  template <class Block>
-  [[SOFTRASTER_FAST_TARGET]] static void walkBlocks(const EdgeFunction (&edges)[3], const PixelRect& box,
-                                                    const std::int64_t (&lowest)[3], const std::int64_t (&highest)[3],
+  template <int E, class Block>
+  [[SOFTRASTER_FAST_TARGET]] static void walkBlocks(const EdgeFunction (&edges)[E], const PixelRect& box,
+                                                    const std::int64_t (&lowest)[E], const std::int64_t (&highest)[E],
                                                     Block&& block) {
     // A shader that samples textures is shaded in whole 2x2 quads at even coordinates (as
     // lavapipe's are): the walk starts at the quad-aligned corner, and lanes outside the box are
     // helpers (shaded for the derivatives, never written).
     const PixelRect keep = box;
     const PixelRect walked = kQuads ? PixelRect{box.x0 & ~1, box.y0 & ~1, box.x1, box.y1} : box;
-    std::int64_t rowStart[3], stepX[3];
-    for (int i = 0; i < 3; ++i) {
+    std::int64_t rowStart[E], stepX[E];
+    for (int i = 0; i < E; ++i) {
       rowStart[i] = edges[i].c + edges[i].dcdy * walked.y0 - edges[i].dcdx * walked.x0;
       stepX[i] = kBatchWidth * edges[i].dcdx;
     }
@@ -200,41 +200,47 @@ class FastFragmentStage {
       std::int64_t first = 0, last = blocks - 1, innerFirst = 1, innerLast = 0;
       if (cut) {
         innerFirst = 0, innerLast = blocks - 1;
-        for (int i = 0; i < 3; ++i) {
+        for (int i = 0; i < E; ++i) {
           positiveRun(rowStart[i] + highest[i], stepX[i], first, last);
           positiveRun(rowStart[i] + lowest[i], stepX[i], innerFirst, innerLast);
         }
       }
-      std::int64_t value[3];
-      for (int i = 0; i < 3; ++i) value[i] = rowStart[i] - first * stepX[i];
-      for (std::int64_t k = first; k <= last; ++k, value[0] -= stepX[0], value[1] -= stepX[1], value[2] -= stepX[2]) {
+      std::int64_t value[E];
+      for (int i = 0; i < E; ++i) value[i] = rowStart[i] - first * stepX[i];
+      for (std::int64_t k = first; k <= last; ++k) {
         const int px = walked.x0 + static_cast<int>(k) * kBatchWidth;
         const int columns = std::min(kBatchWidth, keep.x1 - px + 1);
         const unsigned left = px < keep.x0 ? (1u << (keep.x0 - px)) - 1u : 0u;  // helper columns left of the box
         const unsigned inBox = rows & ((((1u << columns) - 1u) & ~left) * 0x11u);
         bool inside = k >= innerFirst && k <= innerLast;
+        bool outside = false;
         if (corners && !cut) {
-          if (value[0] + highest[0] <= 0 || value[1] + highest[1] <= 0 || value[2] + highest[2] <= 0) continue;
-          inside = value[0] + lowest[0] > 0 && value[1] + lowest[1] > 0 && value[2] + lowest[2] > 0;
+          inside = true;
+          for (int i = 0; i < E; ++i) {
+            outside |= value[i] + highest[i] <= 0;
+            inside &= value[i] + lowest[i] > 0;
+          }
         }
-        block(px, py, inBox, inside, value);
+        if (!outside) block(px, py, inBox, inside, value);
+        for (int i = 0; i < E; ++i) value[i] -= stepX[i];
       }
-      for (int i = 0; i < 3; ++i) rowStart[i] += kBatchHeight * edges[i].dcdy;
+      for (int i = 0; i < E; ++i) rowStart[i] += kBatchHeight * edges[i].dcdy;
     }
   }
 
-  [[SOFTRASTER_FAST_TARGET, SOFTRASTER_FLATTEN, gnu::noinline]] void walk(const EdgeFunction (&edges)[3], const PixelRect& box,
+  template <int E>
+  [[SOFTRASTER_FAST_TARGET, SOFTRASTER_FLATTEN, gnu::noinline]] void walk(const EdgeFunction (&edges)[E], const PixelRect& box,
                                                                    const BlockPlanes& planes) const {
-    const BlockEdges lanes = blockEdges(edges);
+    const BlockEdges<E> lanes = blockEdges(edges);
     const DepthState depthState = target_.depth;  // a local, which no store to the framebuffer can change
-    std::int64_t lowest[3], highest[3];  // of a block's lane offsets, -dcdx * column + dcdy * row
-    for (int i = 0; i < 3; ++i) {
+    std::int64_t lowest[E], highest[E];  // of a block's lane offsets, -dcdx * column + dcdy * row
+    for (int i = 0; i < E; ++i) {
       const std::int64_t dx = edges[i].dcdx, dy = edges[i].dcdy;
       lowest[i] = std::min<std::int64_t>(0, -(kBatchWidth - 1) * dx) + std::min<std::int64_t>(0, dy);
       highest[i] = std::max<std::int64_t>(0, -(kBatchWidth - 1) * dx) + std::max<std::int64_t>(0, dy);
     }
     walkBlocks(edges, box, lowest, highest,
-               [&](int px, int py, unsigned inBox, bool inside, const std::int64_t (&value)[3]) {
+               [&](int px, int py, unsigned inBox, bool inside, const std::int64_t (&value)[E]) {
                  const unsigned covered = inside ? inBox : insideBits(lanes, value) & inBox;
                  if (covered != 0) shadeBlock(px, py, covered, inBox == 0xffu, planes, depthState);
                });
