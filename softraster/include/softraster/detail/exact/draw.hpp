@@ -353,6 +353,7 @@ class ExactDraw {
     FixedTriangle fixed = snapTriangle(a.window, b.window, c.window, pixelOffset);
     const int area = fixedAreaSign(fixed);
     if (area == 0 || (area > 0 ? !winding_.drawCounterClockwise : !winding_.drawClockwise)) return;
+    if (!multisample_ && missesEveryPixelCentre(fixed)) return;  // no pixel to draw: skip the setup
     // From here on the triangle is counter-clockwise: a negative one continues as (a, c, b),
     // keeping the provoking vertex first, or as (b, a, c) with provoking vertex last.
     const bool swapFirst = area < 0 && provokingLast_;

@@ -4,7 +4,8 @@
 //   - the sign of the 64-bit fixed-point area decides facing, culling and, when negative,
 //     the vertex order (v0, v2, v1) used from here on (provoking vertex first), or (v1, v0, v2)
 //     with provoking vertex last (the provoking vertex stays third);
-//   - three 64-bit edge functions with the top-left rule (window y points down);
+//   - three 64-bit edge functions with the top-left rule (window y points down); a single-sample
+//     triangle whose bounding box holds no pixel centre is dropped before them;
 //   - float plane equations a(px, py) = a0 + dadx*px + dady*py for depth, 1/w and varyings,
 //     from the unsnapped window positions, in lavapipe's operation order, no FMA.
 //   - the depth bias of lp_do_offset_tri: max(|dz/dx|, |dz/dy|) * slope plus the constant factor
@@ -79,6 +80,18 @@ inline WindingFilter windingFilter(const RasterizationState& rs) {
     case CullMode::FrontAndBack: return {false, false};
   }
   return {false, false};
+}
+
+// Whether no pixel centre lies in the triangle's bounding box, single-sample (centres at
+// multiples of 256 once the half-pixel offset is snapped in): then it covers no pixel and needs
+// no setup. A centre left of or above the box is outside an edge (the edge values are integers
+// and the fill rule's +1 only takes in centres on an edge); setupEdges' bounds keep the pixels
+// whose centre is at the box's left or top or inside it, and stop before its right and bottom.
+inline bool missesEveryPixelCentre(const FixedTriangle& t) {
+  const std::int64_t minX = std::min({t.x[0], t.x[1], t.x[2]}), maxX = std::max({t.x[0], t.x[1], t.x[2]});
+  const std::int64_t minY = std::min({t.y[0], t.y[1], t.y[2]}), maxY = std::max({t.y[0], t.y[1], t.y[2]});
+  return ((minX + 255) >> kSubpixelBits) > ((maxX - 1) >> kSubpixelBits) ||
+         ((minY + 255) >> kSubpixelBits) > ((maxY - 1) >> kSubpixelBits);
 }
 
 // Edge function i (vertex i to i+1) in units of 1/256 px, evaluated at pixel (px, py) as
