@@ -169,6 +169,18 @@ class FastFragmentStage {
     }
   }
 
+  // edge(0), ..., edge(E - 1) in the lanes of a vector, `fourth` in lane 3 when E is 3.
+  template <int E, class Edge>
+  [[SOFTRASTER_FAST_TARGET]] static __m256i edgeLanes(Edge&& edge, std::int64_t fourth) {
+    return _mm256_set_epi64x(E == 4 ? edge(E - 1) : fourth, edge(2), edge(1), edge(0));
+  }
+
+  // Whether every lane of values + offsets is positive.
+  [[SOFTRASTER_FAST_TARGET]] static bool allPositive(__m256i values, __m256i offsets) {
+    const __m256i positive = _mm256_cmpgt_epi64(_mm256_add_epi64(values, offsets), _mm256_setzero_si256());
+    return _mm256_movemask_pd(_mm256_castsi256_pd(positive)) == 0xf;
+  }
+
   // The bounding box block by block, calling block(px, py, inBox, inside, value) for each block
   // not wholly outside an edge: inBox its lanes inside the box, inside whether every lane (and
   // sample) is inside all E edges, value the edge values at lane 0. lowest and highest: the
@@ -192,6 +204,14 @@ class FastFragmentStage {
       stepX[i] = kBatchWidth * edges[i].dcdx;
     }
     const bool corners = cornersDecide(edges, walked);
+    // Along a row the E edge values at the block's lane 0 are the lanes of one vector, which a
+    // triangle fills with a fourth edge every block is inside (value 0, step 0, offsets 2^62);
+    // it is stored whole for the block: an array updated edge by edge and read back as a vector
+    // stalled store forwarding once per row (a tenth of the walk of small triangles).
+    constexpr std::int64_t kInside = std::int64_t{1} << 62;
+    const __m256i stepLanes = edgeLanes<E>([&](int i) { return stepX[i]; }, 0);
+    const __m256i highestLanes = edgeLanes<E>([&](int i) { return highest[i]; }, kInside);
+    const __m256i lowestLanes = edgeLanes<E>([&](int i) { return lowest[i]; }, kInside);
     const std::int64_t blocks = (walked.x1 - walked.x0) / kBatchWidth + 1;
     // Six divisions per row pay off over a wide row; a narrow one tests each block's corners.
     const bool cut = corners && blocks > kCutBlocks;
@@ -205,8 +225,8 @@ class FastFragmentStage {
           positiveRun(rowStart[i] + lowest[i], stepX[i], innerFirst, innerLast);
         }
       }
-      std::int64_t value[E];
-      for (int i = 0; i < E; ++i) value[i] = rowStart[i] - first * stepX[i];
+      __m256i values = edgeLanes<E>([&](int i) { return rowStart[i] - first * stepX[i]; }, 0);
+      alignas(32) std::int64_t value[4];
       for (std::int64_t k = first; k <= last; ++k) {
         const int px = walked.x0 + static_cast<int>(k) * kBatchWidth;
         const int columns = std::min(kBatchWidth, keep.x1 - px + 1);
@@ -215,14 +235,12 @@ class FastFragmentStage {
         bool inside = k >= innerFirst && k <= innerLast;
         bool outside = false;
         if (corners && !cut) {
-          inside = true;
-          for (int i = 0; i < E; ++i) {
-            outside |= value[i] + highest[i] <= 0;
-            inside &= value[i] + lowest[i] > 0;
-          }
+          outside = !allPositive(values, highestLanes);
+          inside = allPositive(values, lowestLanes);
         }
-        if (!outside) block(px, py, inBox, inside, value);
-        for (int i = 0; i < E; ++i) value[i] -= stepX[i];
+        _mm256_store_si256(reinterpret_cast<__m256i*>(value), values);
+        if (!outside) block(px, py, inBox, inside, reinterpret_cast<const std::int64_t(&)[E]>(value));
+        values = _mm256_sub_epi64(values, stepLanes);
       }
       for (int i = 0; i < E; ++i) rowStart[i] += kBatchHeight * edges[i].dcdy;
     }
