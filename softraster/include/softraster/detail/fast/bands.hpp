@@ -252,7 +252,7 @@ class BandQueue {
   // few pixels anywhere in a large frame otherwise waits on memory for every row it touches.
   void prefetchPixels(const PixelRect& bounds, const PixelRect& rows) const {
     const PixelRect box = intersect(bounds, rows);
-    if (box.empty() || box.y1 - box.y0 >= kPrefetchRows || box.x1 - box.x0 >= 16 || pixels_.colour == nullptr) return;
+    if (box.empty() || box.y1 - box.y0 >= kPrefetchRows || box.x1 - box.x0 >= kPrefetchColumns || pixels_.colour == nullptr) return;
     const std::size_t width = framebuffer_.width();
     const std::uint8_t* colour = pixels_.colour;
     const std::uint32_t* depth = pixels_.depth;
@@ -265,7 +265,7 @@ class BandQueue {
       __builtin_prefetch(colour + 4 * last, 1);
     }
   }
-  static constexpr int kPrefetchRows = 16;
+  static constexpr int kPrefetchRows = 16, kPrefetchColumns = 16;  // "small": a box under both
   // The framebuffer's pixels for prefetchPixels, single-sample only (else null), taken where
   // reading them cannot write a pending clear: after the direct stage's construction has written
   // it, or in flush() once the bands have taken it over.
