@@ -8,6 +8,8 @@
 
 #include <chrono>
 #include <string>
+#include <utility>
+#include <vector>
 
 namespace crosscheck {
 namespace {
@@ -49,7 +51,7 @@ SoftrasterScene::SoftrasterScene(const Scene& scene, const softraster::ContextOp
       options_(options),
       context_(options) {
   softraster::Result<softraster::Framebuffer> framebuffer =
-      softraster::Framebuffer::create(scene.width, scene.height, scene.depthFormat, scene.samples);
+      softraster::Framebuffer::create(scene.width, scene.height, scene.depthFormat, scene.samples, scene.colourFormat);
   if (framebuffer) {
     framebuffer_ = std::move(*framebuffer);
   } else {
@@ -139,6 +141,11 @@ Frame frameFrom(const Scene& scene, softraster::Framebuffer& framebuffer, const 
     frame.depthStorage = framebuffer.depthStorage();
     frame.stencil = framebuffer.stencilStorage();
   }
+  if (softraster::swapsRedBlue(framebuffer.colourFormat())) {  // a Frame is R, G, B, A, as vkref reads it back
+    for (std::vector<std::uint8_t>* bytes : {&frame.rgba, &frame.sampleRgba}) {
+      for (std::size_t i = 0; i + 3 < bytes->size(); i += 4) std::swap((*bytes)[i], (*bytes)[i + 2]);
+    }
+  }
   return frame;
 }
 
@@ -174,6 +181,7 @@ softraster::Result<vkref::PreparedFrame> prepareVulkan(const Scene& scene, vkref
   request.clearColour = {scene.clearColour.x, scene.clearColour.y, scene.clearColour.z, scene.clearColour.w};
   request.clearDepth = scene.clearDepth;
   request.clearStencil = scene.clearStencil;
+  request.colourFormat = scene.colourFormat;
   request.depthFormat = scene.depthFormat;
   request.samples = scene.samples;
   std::size_t passDraws = 0;

@@ -1139,9 +1139,15 @@ Scene readScene(json& document, const std::filesystem::path& path, const std::ve
   if (document.contains("framebuffer")) {
     const json& fb = document["framebuffer"];
     checkKeys(fb, "/framebuffer",
-              {"width", "height", "clear_colour", "clear_depth", "clear_stencil", "depth_format", "samples"});
+              {"width", "height", "clear_colour", "clear_depth", "clear_stencil", "colour_format", "depth_format",
+               "samples"});
     scene.samples = static_cast<std::uint32_t>(readCount(fb, "samples", "/framebuffer", 1, 64));
     if (scene.samples != 1 && scene.samples != 4) throw SceneError("/framebuffer/samples", "must be 1 or 4");
+    scene.colourFormat = readEnum(fb, "colour_format", "/framebuffer", scene.colourFormat,
+                                  {{"r8g8b8a8_unorm", softraster::ColourFormat::R8G8B8A8Unorm},
+                                   {"b8g8r8a8_unorm", softraster::ColourFormat::B8G8R8A8Unorm},
+                                   {"r8g8b8a8_srgb", softraster::ColourFormat::R8G8B8A8Srgb},
+                                   {"b8g8r8a8_srgb", softraster::ColourFormat::B8G8R8A8Srgb}});
     scene.depthFormat = readEnum(fb, "depth_format", "/framebuffer", scene.depthFormat,
                                  {{"d16_unorm", softraster::DepthFormat::D16Unorm},
                                   {"x8_d24_unorm", softraster::DepthFormat::X8D24UnormPack32},

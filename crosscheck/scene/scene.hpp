@@ -94,6 +94,7 @@ struct Scene {
   softraster::Vec4 clearColour{0, 0, 0, 1};
   float clearDepth = 1.0f;
   std::uint8_t clearStencil = 0;  // with a depth/stencil format
+  softraster::ColourFormat colourFormat = softraster::ColourFormat::R8G8B8A8Unorm;
   softraster::DepthFormat depthFormat = softraster::DepthFormat::D32Sfloat;
   std::uint32_t samples = 1;  // 1 or 4 (MSAA: compared after the resolve; depth and stencil via sample 0)
   CameraMatrices camera;      // view and projection, double precision

@@ -1,7 +1,9 @@
 // Framebuffer creation (the checks create() documents), storage, clears (deferred: see
-// framebuffer.hpp), the MSAA resolve (SSE2 where the build has it, the same operations per
-// channel; stencil keeps sample 0 as depth does) and depth read-out (one sample, or all of them as floats).
+// framebuffer.hpp; the colour swizzled to the format's byte order), the MSAA resolve (SSE2 where
+// the build has it, the same operations per channel, so blind to the channels' order; stencil
+// keeps sample 0 as depth does) and depth read-out (one sample, or all of them as floats).
 #include <softraster/detail/fragment/colour.hpp>
+#include <softraster/detail/fragment/srgb.hpp>
 #include <softraster/framebuffer.hpp>
 
 #include <algorithm>
@@ -9,6 +11,7 @@
 #include <cmath>
 #include <cstring>
 #include <string>
+#include <utility>
 
 #if defined(__SSE2__)
 #include <emmintrin.h>
@@ -23,7 +26,7 @@ std::uint32_t depthClearValue(DepthFormat format, float depth) {
 }
 
 Result<Framebuffer> Framebuffer::create(std::uint32_t width, std::uint32_t height, DepthFormat depthFormat,
-                                        std::uint32_t samples) {
+                                        std::uint32_t samples, ColourFormat colourFormat) {
   if (width == 0 || height == 0 || width > kMaxFramebufferSize || height > kMaxFramebufferSize) {
     return Status::error("framebuffer size " + std::to_string(width) + "x" + std::to_string(height) +
                          ": width and height must be 1.." + std::to_string(kMaxFramebufferSize));
@@ -36,20 +39,26 @@ Result<Framebuffer> Framebuffer::create(std::uint32_t width, std::uint32_t heigh
       depthFormat != DepthFormat::D32SfloatS8Uint) {
     return Status::error("unknown depth format");
   }
-  return Framebuffer(width, height, depthFormat, samples);
+  if (colourFormat != ColourFormat::R8G8B8A8Unorm && colourFormat != ColourFormat::B8G8R8A8Unorm &&
+      colourFormat != ColourFormat::R8G8B8A8Srgb && colourFormat != ColourFormat::B8G8R8A8Srgb) {
+    return Status::error("unknown colour format");
+  }
+  return Framebuffer(width, height, depthFormat, samples, colourFormat);
 }
 
-Framebuffer::Framebuffer(std::uint32_t width, std::uint32_t height, DepthFormat depthFormat, std::uint32_t samples)
+Framebuffer::Framebuffer(std::uint32_t width, std::uint32_t height, DepthFormat depthFormat, std::uint32_t samples,
+                         ColourFormat colourFormat)
     : width_(width),
       height_(height),
       samples_(samples),
       depthFormat_(depthFormat),
+      colourFormat_(colourFormat),
       colour_(static_cast<std::size_t>(width) * height * samples * 4, 0),
       depth_(static_cast<std::size_t>(width) * height * samples, 0),
       stencil_(hasStencil(depthFormat) ? static_cast<std::size_t>(width) * height * samples : 0, 0) {}
 
 Framebuffer Framebuffer::resolve() const {
-  Framebuffer out(width_, height_, depthFormat_, 1);
+  Framebuffer out(width_, height_, depthFormat_, 1, colourFormat_);
   resolveInto(out);
   return out;
 }
@@ -60,17 +69,19 @@ void Framebuffer::resolveInto(Framebuffer& out) const {
     if (samples_ != 1) out = resolve();
     return;
   }
-  if (out.width_ != width_ || out.height_ != height_ || out.depthFormat_ != depthFormat_ || out.samples_ != 1) {
-    out = Framebuffer(width_, height_, depthFormat_, 1);
+  if (out.width_ != width_ || out.height_ != height_ || out.depthFormat_ != depthFormat_ || out.samples_ != 1 ||
+      out.colourFormat_ != colourFormat_) {
+    out = Framebuffer(width_, height_, depthFormat_, 1, colourFormat_);
   }
   out.pending_.reset();  // every sample of `out` is written here
   const std::size_t pixels = static_cast<std::size_t>(width_) * height_;
   for (std::size_t q = 0; q < out.stencil_.size(); ++q) out.stencil_[q] = stencil_[q * samples_];
   const float toFloat = static_cast<float>(1.0 / 255.0);  // how lavapipe's texel fetch converts UNORM8
   const float average = 1.0f / static_cast<float>(samples_);
+  const bool srgb = isSrgb(colourFormat_);
   std::size_t p = 0;
 #if defined(__SSE2__)
-  if (samples_ == 4) {  // the loop below with the four channels of a pixel in four lanes
+  if (samples_ == 4 && !srgb) {  // the loop below with the four channels of a pixel in four lanes
     const __m128i zero = _mm_setzero_si128();
     const __m128 scale = _mm_set1_ps(toFloat), quarter = _mm_set1_ps(average);
     const __m128 magic = _mm_set1_ps(8388608.0f), max = _mm_set1_ps(255.0f);
@@ -94,19 +105,31 @@ void Framebuffer::resolveInto(Framebuffer& out) const {
 #endif
   for (; p < pixels; ++p) {
     for (int c = 0; c < 4; ++c) {
+      const bool linear = srgb && c < 3;  // sRGB red, green, blue: averaged as linear values
       float sum = 0.0f;
-      for (std::uint32_t s = 0; s < samples_; ++s) sum = sum + static_cast<float>(colour_[(p * samples_ + s) * 4 + c]) * toFloat;
-      out.colour_[p * 4 + c] = samples_ == 1 ? colour_[p * 4 + c] : detail::unorm8FromFloat(sum * average);
+      for (std::uint32_t s = 0; s < samples_; ++s) {
+        const std::uint8_t byte = colour_[(p * samples_ + s) * 4 + c];
+        sum = sum + (linear ? detail::srgbToLinear(byte) : static_cast<float>(byte) * toFloat);
+      }
+      out.colour_[p * 4 + c] = samples_ == 1 ? colour_[p * 4 + c]
+                               : linear     ? detail::linearToSrgbByte(sum * average)
+                                            : detail::unorm8FromFloat(sum * average);
     }
     out.depth_[p] = depth_[p * samples_];
   }
 }
 
 void Framebuffer::clear(Vec4 colour, float depth, std::uint8_t stencil) {
-  std::uint8_t rgba[4];
-  detail::storeColour(rgba, colour);
+  if (swapsRedBlue(colourFormat_)) std::swap(colour.x, colour.z);
+  std::uint8_t bytes[4];
+  detail::storeColour(bytes, colour);
+  if (isSrgb(colourFormat_)) {  // util_pack_color: red, green and blue through Giesen's table
+    bytes[0] = detail::linearToSrgbClearByte(colour.x);
+    bytes[1] = detail::linearToSrgbClearByte(colour.y);
+    bytes[2] = detail::linearToSrgbClearByte(colour.z);
+  }
   PendingClear clear;
-  std::memcpy(&clear.colour, rgba, sizeof clear.colour);
+  std::memcpy(&clear.colour, bytes, sizeof clear.colour);
   clear.depth = depthClearValue(depthFormat_, depth);
   clear.stencil = stencil;
   pending_ = clear;

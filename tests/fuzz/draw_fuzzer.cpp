@@ -118,9 +118,10 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   // threads (waking threads costs more than most of these small draws).
   const bool onThreads = in.below(8) == 7;
   const bool affine = in.flag();
+  const auto colourFormat = static_cast<ColourFormat>(in.below(4));  // RGBA8, BGRA8, and both as sRGB
 
   const auto drawWith = [&](const Context& context) {
-    Framebuffer framebuffer = Framebuffer::create(width, height, format, samples).value();
+    Framebuffer framebuffer = Framebuffer::create(width, height, format, samples, colourFormat).value();
     framebuffer.clear(clearColour, clearDepth);
     Outcome out;
     out.status = indexed ? context.drawIndexed<Shader>(state, uniforms, vertices, indices, framebuffer)

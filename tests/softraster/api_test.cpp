@@ -7,10 +7,14 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <array>
+#include <iterator>
 #include <bit>
+#include <cmath>
 #include <cstdint>
 #include <thread>
+#include <utility>
 #include <vector>
 
 namespace {
@@ -121,6 +125,89 @@ TEST(Context, FourThreadsWithTheirOwnContextsDrawTheSameBits) {
     EXPECT_EQ(r.colour(), reference.colour());
     EXPECT_EQ(r.depthStorage(), reference.depthStorage());
   }
+}
+
+// A B8G8R8A8 target holds the R8G8B8A8 target's bytes with red and blue swapped, whatever the
+// method, with blending (constants far apart in red and blue), a write mask naming red alone and
+// a logic op, with one sample and four.
+TEST(Context, BgraTargetIsTheRgbaTargetWithRedAndBlueSwapped) {
+  softraster::PipelineState over;
+  over.topology = softraster::Topology::TriangleStrip;
+  over.rasterization.cullMode = softraster::CullMode::None;
+  over.depth.testEnable = false;
+  over.blend.enable = true;
+  over.blend.srcColorBlendFactor = softraster::BlendFactor::ConstantColor;
+  over.blend.dstColorBlendFactor = softraster::BlendFactor::OneMinusSrcColor;
+  const float constants[4] = {0.9f, 0.4f, 0.1f, 0.6f};
+  std::copy(std::begin(constants), std::end(constants), over.blend.blendConstants);
+  softraster::PipelineState maskRed = over;
+  maskRed.blend.enable = false;
+  maskRed.blend.colorWriteMask = softraster::kColourR;
+  softraster::PipelineState logic = over;
+  logic.blend.logicOpEnable = true;
+  logic.blend.logicOp = softraster::LogicOp::Xor;
+  const std::vector<Gradient::Vertex> vertices = fan();
+  for (const softraster::Method method : {softraster::Method::Exact, softraster::Method::ExactScalar}) {
+    for (const std::uint32_t samples : {1u, 4u}) {
+      for (const softraster::PipelineState& state : {over, maskRed, logic}) {
+        softraster::ContextOptions options;
+        options.method = method;
+        options.threads = 1;
+        const softraster::Context context(options);
+        std::array<Framebuffer, 2> targets;
+        for (int k = 0; k < 2; ++k) {
+          auto target = Framebuffer::create(61, 47, DepthFormat::D32Sfloat, samples,
+                                            k == 0 ? softraster::ColourFormat::R8G8B8A8Unorm
+                                                   : softraster::ColourFormat::B8G8R8A8Unorm);
+          ASSERT_TRUE(target);
+          target->clear({0.8f, 0.3f, 0.15f, 0.5f}, 1.0f);
+          ASSERT_TRUE(context.draw<Gradient>(state, Gradient::Uniforms{}, vertices, *target).ok());
+          targets[static_cast<std::size_t>(k)] = std::move(*target);
+        }
+        std::vector<std::uint8_t> swapped = targets[0].colour();
+        for (std::size_t i = 0; i < swapped.size(); i += 4) std::swap(swapped[i], swapped[i + 2]);
+        EXPECT_EQ(targets[1].colour(), swapped) << "samples " << samples;
+        EXPECT_NE(targets[0].colour(), swapped) << "red and blue differ somewhere";
+        EXPECT_EQ(targets[1].colourAt(30, 20), targets[0].colourAt(30, 20));
+      }
+    }
+  }
+}
+
+TEST(FramebufferCreate, BgraStoresBlueFirstAndResolvesToBgra) {
+  auto framebuffer = Framebuffer::create(3, 2, DepthFormat::D32Sfloat, 4, softraster::ColourFormat::B8G8R8A8Unorm);
+  ASSERT_TRUE(framebuffer);
+  EXPECT_EQ(framebuffer->colourFormat(), softraster::ColourFormat::B8G8R8A8Unorm);
+  framebuffer->clear({1.0f, 0.5f, 0.0f, 0.25f}, 1.0f);
+  const std::vector<std::uint8_t>& bytes = framebuffer->colour();
+  EXPECT_EQ((std::array<int, 4>{bytes[0], bytes[1], bytes[2], bytes[3]}), (std::array<int, 4>{0, 128, 255, 64}));
+  EXPECT_EQ(framebuffer->colourAt(2, 1, 3), (std::array<std::uint8_t, 4>{255, 128, 0, 64}));
+  framebuffer->colour()[4 * framebuffer->sampleIndex(1, 0, 2)] = 100;  // blue of one sample: 0 -> 100
+  const Framebuffer resolved = framebuffer->resolve();
+  EXPECT_EQ(resolved.colourFormat(), softraster::ColourFormat::B8G8R8A8Unorm);
+  EXPECT_EQ(resolved.colourAt(1, 0), (std::array<std::uint8_t, 4>{255, 128, 25, 64}));  // blue 100 / 4
+  EXPECT_EQ(resolved.colourAt(0, 0), (std::array<std::uint8_t, 4>{255, 128, 0, 64}));
+  EXPECT_EQ(Framebuffer::create(4, 4, DepthFormat::D32Sfloat, 1, static_cast<softraster::ColourFormat>(9)).error(),
+            "unknown colour format");
+}
+
+// An sRGB target's clear encodes red, green and blue as lavapipe's clear does (its own table:
+// 0.5 -> 188, where a fragment store gives 187), alpha as UNORM; the resolve averages linear values.
+TEST(FramebufferCreate, SrgbClearAndResolve) {
+  auto framebuffer = Framebuffer::create(2, 1, DepthFormat::D32Sfloat, 4, softraster::ColourFormat::B8G8R8A8Srgb);
+  ASSERT_TRUE(framebuffer);
+  framebuffer->clear({0.5f, 0.2f, 1.0f, 0.5f}, 1.0f);
+  EXPECT_EQ(framebuffer->colourAt(1, 0, 2), (std::array<std::uint8_t, 4>{188, 124, 255, 128}));
+  EXPECT_EQ(framebuffer->colour()[2], 188) << "BGRA: red in byte 2";
+  // Samples of pixel 0: red 0, 0, 188, 188. Averaged as linear values that is about 137 (the
+  // transfer function in double; lavapipe's approximations may round the other way), where an
+  // average of the bytes would give 94.
+  for (std::uint32_t s = 0; s < 2; ++s) framebuffer->colour()[4 * framebuffer->sampleIndex(0, 0, s) + 2] = 0;
+  const Framebuffer resolved = framebuffer->resolve();
+  const double linear = std::pow((188.0 / 255.0 + 0.055) / 1.055, 2.4) / 2.0;
+  const double encoded = 255.0 * (1.055 * std::pow(linear, 1.0 / 2.4) - 0.055);
+  EXPECT_NEAR(resolved.colourAt(0, 0)[0], encoded, 1.0);
+  EXPECT_EQ(resolved.colourAt(1, 0), (std::array<std::uint8_t, 4>{188, 124, 255, 128})) << "four equal samples";
 }
 
 TEST(Context, RefusesAFramebufferWithoutPixels) {

@@ -166,10 +166,10 @@ TEST(Sampling, FloatPathWrapsMirrorsAndBorders) {
   EXPECT_EQ(m.i0, 0);  // -1 held at 0: the mirror of texel 0 is texel 0
   EXPECT_EQ(m.i1, 0);
   // sRGB: linear below 16 (v / 3213), the cubic above; both ends as lavapipe's approximation gives them.
-  EXPECT_EQ(t::srgbToLinear(0), 0.0f);
-  EXPECT_EQ(t::srgbToLinear(10), 10.0f * (1.0f / (12.6f * 255.0f)));
-  EXPECT_NEAR(t::srgbToLinear(255), 1.0f, 0.001f);
-  EXPECT_NEAR(t::srgbToLinear(128), 0.2158f, 0.002f);  // the sRGB curve gives 0.2159
+  EXPECT_EQ(softraster::detail::srgbToLinear(0), 0.0f);
+  EXPECT_EQ(softraster::detail::srgbToLinear(10), 10.0f * (1.0f / (12.6f * 255.0f)));
+  EXPECT_NEAR(softraster::detail::srgbToLinear(255), 1.0f, 0.001f);
+  EXPECT_NEAR(softraster::detail::srgbToLinear(128), 0.2158f, 0.002f);  // the sRGB curve gives 0.2159
 }
 
 TEST(Sampling, MagnifiedQuadFiltersEachLane) {

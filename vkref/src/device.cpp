@@ -163,8 +163,12 @@ Status Device::createDevice() {
     vkGetPhysicalDeviceFormatProperties(physicalDevice_, format, &properties);
     return (properties.optimalTilingFeatures & needed) == needed;
   };
-  if (!supports(kColourFormat, VK_FORMAT_FEATURE_COLOR_ATTACHMENT_BIT | VK_FORMAT_FEATURE_TRANSFER_SRC_BIT))
-    return Status::error("Vulkan device '" + name + "' cannot render to R8G8B8A8_UNORM and copy it");
+  constexpr VkFormatFeatureFlags colourNeeds = VK_FORMAT_FEATURE_COLOR_ATTACHMENT_BIT |
+                                               VK_FORMAT_FEATURE_COLOR_ATTACHMENT_BLEND_BIT |
+                                               VK_FORMAT_FEATURE_SAMPLED_IMAGE_BIT | VK_FORMAT_FEATURE_TRANSFER_SRC_BIT;
+  for (std::size_t f = 0; f < std::size(kColourFormats); ++f) colourFormatUsable[f] = supports(kColourFormats[f], colourNeeds);
+  if (!colourFormatUsable[0])
+    return Status::error("Vulkan device '" + name + "' cannot render to R8G8B8A8_UNORM, blend, sample and copy it");
   for (std::size_t f = 0; f < std::size(kDepthFormats); ++f)
     depthFormatUsable[f] =
         supports(kDepthFormats[f], VK_FORMAT_FEATURE_DEPTH_STENCIL_ATTACHMENT_BIT | VK_FORMAT_FEATURE_TRANSFER_SRC_BIT);

@@ -22,8 +22,15 @@
 
 namespace vkref::detail {
 
-// Colour is always R8G8B8A8_UNORM; the depth format is the request's.
-inline constexpr VkFormat kColourFormat = VK_FORMAT_R8G8B8A8_UNORM;
+// The colour and depth formats are the request's. Indexed by softraster::ColourFormat.
+inline constexpr VkFormat kColourFormats[] = {VK_FORMAT_R8G8B8A8_UNORM, VK_FORMAT_B8G8R8A8_UNORM,
+                                              VK_FORMAT_R8G8B8A8_SRGB, VK_FORMAT_B8G8R8A8_SRGB};
+// The UNORM format with an sRGB format's bytes (the format itself for any other).
+inline constexpr VkFormat unormTwin(VkFormat format) {
+  return format == VK_FORMAT_R8G8B8A8_SRGB   ? VK_FORMAT_R8G8B8A8_UNORM
+         : format == VK_FORMAT_B8G8R8A8_SRGB ? VK_FORMAT_B8G8R8A8_UNORM
+                                             : format;
+}
 // Indexed by softraster::DepthFormat.
 inline constexpr VkFormat kDepthFormats[] = {VK_FORMAT_D16_UNORM, VK_FORMAT_X8_D24_UNORM_PACK32, VK_FORMAT_D32_SFLOAT,
                                              VK_FORMAT_D24_UNORM_S8_UINT, VK_FORMAT_D32_SFLOAT_S8_UINT};
@@ -55,6 +62,7 @@ class Device {
   bool stippledBresenhamLines = false;    // ... with stippledBresenhamLines enabled
   bool provokingVertexLast = false;     // VK_EXT_provoking_vertex with provokingVertexLast enabled
   std::array<bool, std::size(kDepthFormats)> depthFormatUsable{};  // can be rendered to and copied
+  std::array<bool, std::size(kColourFormats)> colourFormatUsable{};  // can be rendered to, blended, copied
   std::string name;
 
   // Messages the validation layer reported so far (thread-safe: the layer may call from any thread).

@@ -83,6 +83,10 @@ Status checkFrame(const FrameRequest& request, const Device& device) {
   if (depthIndex >= std::size(kDepthFormats) || !device.depthFormatUsable[depthIndex])
     return Status::error("depth format " + std::to_string(depthIndex) +
                          " cannot be rendered to and copied on this device");
+  const auto colourIndex = static_cast<std::size_t>(request.colourFormat);
+  if (colourIndex >= std::size(kColourFormats) || !device.colourFormatUsable[colourIndex])
+    return Status::error("colour format " + std::to_string(colourIndex) +
+                         " cannot be rendered to, blended, sampled and copied on this device");
   if (request.samples != 1 && request.samples != 4) return Status::error("sample count must be 1 or 4");
   if (request.samples == 4 && (!(limits.framebufferColorSampleCounts & VK_SAMPLE_COUNT_4_BIT) ||
                                !(limits.framebufferDepthSampleCounts & VK_SAMPLE_COUNT_4_BIT)))
@@ -301,6 +305,7 @@ softraster::Result<VkPipeline> PipelineCache::get(const DrawCall& d, const Targe
   key.depthFormat = target.depthFormat;
   key.samples = target.samples;
   key.colour = target.colour;
+  key.colourFormat = target.colourFormat;
   key.topology = byte(s.topology);
   key.polygonMode = byte(r.polygonMode);
   key.cullMode = byte(r.cullMode);
@@ -490,7 +495,7 @@ softraster::Result<VkPipeline> PipelineCache::compile(const Program& p, const so
     blend.logicOp = static_cast<VkLogicOp>(b.logicOp);
     const VkPipelineRenderingCreateInfo rendering{.sType = VK_STRUCTURE_TYPE_PIPELINE_RENDERING_CREATE_INFO,
                                                   .colorAttachmentCount = target.colour ? 1u : 0u,
-                                                  .pColorAttachmentFormats = &kColourFormat,
+                                                  .pColorAttachmentFormats = &target.colourFormat,
                                                   .depthAttachmentFormat = target.depthFormat,
                                                   .stencilAttachmentFormat =
                                                       (depthAspects(target.depthFormat) & VK_IMAGE_ASPECT_STENCIL_BIT)

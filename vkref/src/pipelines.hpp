@@ -41,9 +41,10 @@ softraster::Status checkDraw(const DrawCall& draw, std::uint32_t width, std::uin
 
 // What a pipeline is compiled for besides its draw: the frame's size (a zero viewport or scissor
 // means the whole frame), depth format and sample count, and whether there is a colour attachment
-// (always kColourFormat; a depth pass has none).
+// (of colourFormat; a depth pass has none).
 struct TargetFormat {
   std::uint32_t width = 0, height = 0;
+  VkFormat colourFormat = VK_FORMAT_R8G8B8A8_UNORM;
   VkFormat depthFormat = VK_FORMAT_UNDEFINED;
   VkSampleCountFlagBits samples = VK_SAMPLE_COUNT_1_BIT;
   bool colour = true;
@@ -97,6 +98,7 @@ class PipelineCache {
     VkFormat depthFormat = VK_FORMAT_UNDEFINED;
     VkSampleCountFlagBits samples = VK_SAMPLE_COUNT_1_BIT;
     bool colour = true;
+    VkFormat colourFormat = VK_FORMAT_R8G8B8A8_UNORM;
     std::uint8_t topology = 0, polygonMode = 0, cullMode = 0, frontFace = 0, lineRasterization = 0;
     bool primitiveRestart = false, lineStipple = false, provokingLast = false;
     std::uint16_t stipplePattern = 0;

@@ -5,6 +5,7 @@
 #include "passes.hpp"
 
 #include <cstring>
+#include <utility>
 
 namespace vkref::detail {
 namespace {
@@ -24,8 +25,10 @@ std::uint32_t depthTexelBytes(softraster::DepthFormat format) {
 }  // namespace
 
 softraster::Result<HostImages> createHostImages(const Device& device, const Targets& targets,
+                                                softraster::ColourFormat colourFormat,
                                                 softraster::DepthFormat depthFormat) {
   HostImages host;
+  host.colourFormat = colourFormat;
   host.depthFormat = depthFormat;
   const VkDeviceSize pixels = VkDeviceSize{targets.width} * targets.height;
   auto colour = Buffer::create(device, pixels * 4, VK_BUFFER_USAGE_TRANSFER_DST_BIT);
@@ -74,6 +77,9 @@ FrameImages unpack(const HostImages& host, std::uint32_t width, std::uint32_t he
   out.height = height;
   out.rgba.resize(pixels * 4);
   std::memcpy(out.rgba.data(), host.colour.mapped(), pixels * 4);
+  if (softraster::swapsRedBlue(host.colourFormat)) {
+    for (std::size_t i = 0; i < pixels; ++i) std::swap(out.rgba[4 * i], out.rgba[4 * i + 2]);
+  }
   out.depth.resize(pixels);
   out.depthStorage.resize(pixels);
   const std::uint32_t texelBytes = depthTexelBytes(host.depthFormat);

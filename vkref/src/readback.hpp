@@ -1,9 +1,10 @@
 // vkref readback: the copies of a frame's single-sample colour and depth images into host
-// buffers, and their unpacking into FrameImages: colour as RGBA8, depth as floats in [0, 1] and
+// buffers, and their unpacking into FrameImages: colour as RGBA8 bytes, depth as floats in [0, 1] and
 // as stored (D16 and X8_D24 as UNORM integers, D32_SFLOAT as the float's bits; a depth/stencil
 // format's depth aspect as its depth-only twin's) and the stencil aspect as bytes.
 // Deliberately no resolve (passes resolves MSAA while rendering; samples.hpp reads the samples), no layout changes (passes leaves
-// the images ready to copy) and no format conversion beyond depth's: colour is R8G8B8A8 as is.
+// the images ready to copy) and no format conversion beyond depth's and colour's byte order
+// (B8G8R8A8 is read back with red and blue swapped into R, G, B, A).
 #pragma once
 
 #include "device.hpp"
@@ -21,12 +22,14 @@ namespace vkref::detail {
 
 // Where a frame's images are copied to: tightly packed rows, row 0 at the top.
 struct HostImages {
+  softraster::ColourFormat colourFormat = softraster::ColourFormat::R8G8B8A8Unorm;
   softraster::DepthFormat depthFormat = softraster::DepthFormat::D32Sfloat;
   Buffer colour, depth;
   Buffer stencil;  // with a depth/stencil format: one byte per pixel
 };
 
 softraster::Result<HostImages> createHostImages(const Device& device, const Targets& targets,
+                                                softraster::ColourFormat colourFormat,
                                                 softraster::DepthFormat depthFormat);
 
 // Records the copies of `targets` (in TRANSFER_SRC_OPTIMAL layout) into `host`, and the barrier
@@ -35,7 +38,7 @@ softraster::Result<HostImages> createHostImages(const Device& device, const Targ
 softraster::Status recordCopies(VkCommandBuffer cmd, const Targets& targets, const HostImages& host,
                                 const FrameSamples* samples = nullptr);
 
-// The images in `host` after the copies have run.
+// The images in `host` after the copies have run, colour as R, G, B, A bytes whatever the format.
 FrameImages unpack(const HostImages& host, std::uint32_t width, std::uint32_t height);
 
 }  // namespace vkref::detail

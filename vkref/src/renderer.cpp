@@ -132,9 +132,10 @@ Result<PreparedFrame> Renderer::prepare(const FrameRequest& request) {
   const detail::TargetFormat format{
       .width = width,
       .height = height,
+      .colourFormat = detail::kColourFormats[static_cast<std::size_t>(request.colourFormat)],
       .depthFormat = detail::kDepthFormats[static_cast<std::size_t>(request.depthFormat)],
       .samples = request.samples == 4 ? VK_SAMPLE_COUNT_4_BIT : VK_SAMPLE_COUNT_1_BIT};
-  auto targets = detail::createTargets(device, width, height, format.depthFormat, format.samples);
+  auto targets = detail::createTargets(device, width, height, format.colourFormat, format.depthFormat, format.samples);
   if (!targets) return targets.status();
   frame->targets = std::move(*targets);
   std::vector<VkImageView> passViews;
@@ -146,7 +147,7 @@ Result<PreparedFrame> Renderer::prepare(const FrameRequest& request) {
     passViews.push_back(image->view());
     frame->depthPassImages.push_back(std::move(*image));
   }
-  auto host = detail::createHostImages(device, frame->targets, request.depthFormat);
+  auto host = detail::createHostImages(device, frame->targets, request.colourFormat, request.depthFormat);
   if (!host) return host.status();
   frame->host = std::move(*host);
   if (frame->targets.multisampled()) {

@@ -88,10 +88,12 @@ void Buffer::destroy() {
 
 softraster::Result<Image> Image::create(const Device& device, VkFormat format, VkImageUsageFlags usage,
                                         VkImageAspectFlags aspect, std::uint32_t width, std::uint32_t height,
-                                        VkSampleCountFlagBits samples, std::uint32_t levels) {
+                                        VkSampleCountFlagBits samples, std::uint32_t levels, VkFormat bitsFormat) {
   Image i;
   i.device_ = device.device;
+  const bool twoViews = bitsFormat != VK_FORMAT_UNDEFINED && bitsFormat != format;
   const VkImageCreateInfo info{.sType = VK_STRUCTURE_TYPE_IMAGE_CREATE_INFO,
+                               .flags = twoViews ? VkImageCreateFlags{VK_IMAGE_CREATE_MUTABLE_FORMAT_BIT} : 0u,
                                .imageType = VK_IMAGE_TYPE_2D,
                                .format = format,
                                .extent = {width, height, 1},
@@ -114,6 +116,12 @@ softraster::Result<Image> Image::create(const Device& device, VkFormat format, V
                                        .subresourceRange = {aspect, 0, levels, 0, 1}};
   if (Status s = check(vkCreateImageView(device.device, &viewInfo, nullptr, &i.view_), "vkCreateImageView"); !s)
     return s;
+  if (twoViews) {
+    VkImageViewCreateInfo bitsInfo = viewInfo;
+    bitsInfo.format = bitsFormat;
+    if (Status s = check(vkCreateImageView(device.device, &bitsInfo, nullptr, &i.bitsView_), "vkCreateImageView"); !s)
+      return s;
+  }
   return i;
 }
 
@@ -121,7 +129,8 @@ Image::Image(Image&& other) noexcept
     : device_(std::exchange(other.device_, VK_NULL_HANDLE)),
       image_(std::exchange(other.image_, VK_NULL_HANDLE)),
       memory_(std::exchange(other.memory_, VK_NULL_HANDLE)),
-      view_(std::exchange(other.view_, VK_NULL_HANDLE)) {}
+      view_(std::exchange(other.view_, VK_NULL_HANDLE)),
+      bitsView_(std::exchange(other.bitsView_, VK_NULL_HANDLE)) {}
 
 Image& Image::operator=(Image&& other) noexcept {
   if (this != &other) {
@@ -130,6 +139,7 @@ Image& Image::operator=(Image&& other) noexcept {
     image_ = std::exchange(other.image_, VK_NULL_HANDLE);
     memory_ = std::exchange(other.memory_, VK_NULL_HANDLE);
     view_ = std::exchange(other.view_, VK_NULL_HANDLE);
+    bitsView_ = std::exchange(other.bitsView_, VK_NULL_HANDLE);
   }
   return *this;
 }
@@ -139,6 +149,7 @@ Image::~Image() { destroy(); }
 void Image::destroy() {
   if (!device_) return;
   vkDestroyImageView(device_, view_, nullptr);
+  if (bitsView_) vkDestroyImageView(device_, bitsView_, nullptr);
   vkDestroyImage(device_, image_, nullptr);
   vkFreeMemory(device_, memory_, nullptr);
   device_ = VK_NULL_HANDLE;
@@ -147,7 +158,7 @@ void Image::destroy() {
 // ---- A frame's images and geometry -------------------------------------------------------------
 
 softraster::Result<Targets> createTargets(const Device& device, std::uint32_t width, std::uint32_t height,
-                                          VkFormat depthFormat, VkSampleCountFlagBits samples) {
+                                          VkFormat colourFormat, VkFormat depthFormat, VkSampleCountFlagBits samples) {
   Targets t;
   t.width = width;
   t.height = height;
@@ -155,7 +166,7 @@ softraster::Result<Targets> createTargets(const Device& device, std::uint32_t wi
   t.samples = samples;
   constexpr VkImageUsageFlags colourUsage = VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT;
   constexpr VkImageUsageFlags depthUsage = VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT;
-  auto colour = Image::create(device, kColourFormat, colourUsage | VK_IMAGE_USAGE_TRANSFER_SRC_BIT,
+  auto colour = Image::create(device, colourFormat, colourUsage | VK_IMAGE_USAGE_TRANSFER_SRC_BIT,
                               VK_IMAGE_ASPECT_COLOR_BIT, width, height, VK_SAMPLE_COUNT_1_BIT);
   if (!colour) return colour.status();
   t.colour = std::move(*colour);
@@ -165,8 +176,9 @@ softraster::Result<Targets> createTargets(const Device& device, std::uint32_t wi
   t.depth = std::move(*depth);
   if (t.multisampled()) {
     // Sampled too: the per-sample read-back (samples.hpp) fetches every sample in a compute shader.
-    auto msColour = Image::create(device, kColourFormat, colourUsage | VK_IMAGE_USAGE_SAMPLED_BIT,
-                                  VK_IMAGE_ASPECT_COLOR_BIT, width, height, samples);
+    // An sRGB image is read through a UNORM view: its stored bytes, not their decoded values.
+    auto msColour = Image::create(device, colourFormat, colourUsage | VK_IMAGE_USAGE_SAMPLED_BIT,
+                                  VK_IMAGE_ASPECT_COLOR_BIT, width, height, samples, 1, unormTwin(colourFormat));
     if (!msColour) return msColour.status();
     t.msColour = std::move(*msColour);
     auto msDepth = Image::create(device, depthFormat, depthUsage | VK_IMAGE_USAGE_SAMPLED_BIT, depthAspects(depthFormat),

@@ -46,9 +46,12 @@ class Buffer {
 // Move-only.
 class Image {
  public:
+  // `bitsFormat`, if given and not `format`: the image is created mutable and gets a second view
+  // of that (compatible) format, bitsView(): an sRGB image read as UNORM, its bytes unconverted.
   static softraster::Result<Image> create(const Device& device, VkFormat format, VkImageUsageFlags usage,
                                           VkImageAspectFlags aspect, std::uint32_t width, std::uint32_t height,
-                                          VkSampleCountFlagBits samples, std::uint32_t levels = 1);
+                                          VkSampleCountFlagBits samples, std::uint32_t levels = 1,
+                                          VkFormat bitsFormat = VK_FORMAT_UNDEFINED);
   Image() = default;  // no image
   Image(Image&& other) noexcept;
   Image& operator=(Image&& other) noexcept;
@@ -56,6 +59,7 @@ class Image {
 
   VkImage handle() const { return image_; }
   VkImageView view() const { return view_; }
+  VkImageView bitsView() const { return bitsView_ ? bitsView_ : view_; }
   explicit operator bool() const { return image_ != VK_NULL_HANDLE; }
 
  private:
@@ -64,6 +68,7 @@ class Image {
   VkImage image_ = VK_NULL_HANDLE;
   VkDeviceMemory memory_ = VK_NULL_HANDLE;
   VkImageView view_ = VK_NULL_HANDLE;
+  VkImageView bitsView_ = VK_NULL_HANDLE;  // only with a bitsFormat
 };
 
 // The images one frame renders into. `colour` and `depth` are single-sampled and copied out;
@@ -81,7 +86,7 @@ struct Targets {
 };
 
 softraster::Result<Targets> createTargets(const Device& device, std::uint32_t width, std::uint32_t height,
-                                          VkFormat depthFormat, VkSampleCountFlagBits samples);
+                                          VkFormat colourFormat, VkFormat depthFormat, VkSampleCountFlagBits samples);
 
 // Every vertex, index and uniform block of a frame, in one vertex buffer, one index buffer and one
 // uniform buffer (each empty when no draw has any), and where each draw's share begins.

@@ -147,7 +147,7 @@ softraster::Result<std::unique_ptr<FrameSamples>> FrameSamples::create(const Dev
   if (Status s = check(vkAllocateDescriptorSets(device.device, &allocInfo, &f->set_), "vkAllocateDescriptorSets"); !s)
     return s;
   const VkDescriptorImageInfo images[3] = {
-      {VK_NULL_HANDLE, targets.msColour.view(), VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL},
+      {VK_NULL_HANDLE, targets.msColour.bitsView(), VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL},
       {VK_NULL_HANDLE, f->depthView_, VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL},
       {VK_NULL_HANDLE, f->stencilView_, VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL}};
   const VkDescriptorBufferInfo bufferInfo{f->buffer_.handle(), 0, VK_WHOLE_SIZE};

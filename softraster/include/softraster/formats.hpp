@@ -1,4 +1,7 @@
-// The image formats softraster stores: colour is always R8G8B8A8_UNORM; depth (and stencil) is
+// The image formats softraster stores: colour is R8G8B8A8 or B8G8R8A8, UNORM or sRGB (ColourFormat:
+// four bytes per sample in the format's memory order; the shaders' outputs, blend constants and
+// write masks stay RGBA and are swizzled where they meet memory; sRGB bytes are encoded from, and
+// blended in, linear values); depth (and stencil) is
 // one of the DepthFormat values below, depth kept as the format stores it (UNORM depth as its
 // integer, D32_SFLOAT as its float's bits), stencil as one byte per sample beside it. A header of
 // its own so setup and per-sample stages can name a depth format without depending on the
@@ -7,12 +10,24 @@
 // (depthAspect): the draw loop is instantiated per depth aspect, and stencil is a run-time
 // branch, so they cost no more compiled code.
 // Deliberately absent until a scene needs them: stencil-only formats (S8_UINT), D16_UNORM_S8_UINT
-// (lavapipe does not offer it), other colour formats.
+// (lavapipe does not offer it), other colour formats (float and 10-bit targets: their texels do
+// not fit the 8-bit frames the cross-check compares).
 #pragma once
 
 #include <cstdint>
 
 namespace softraster {
+
+enum class ColourFormat : std::uint8_t { R8G8B8A8Unorm, B8G8R8A8Unorm, R8G8B8A8Srgb, B8G8R8A8Srgb };
+
+// Whether the format stores red in byte 2 and blue in byte 0 (B8G8R8A8): its bytes are
+// R8G8B8A8's with those two swapped, as lavapipe blends it (the same arithmetic per channel, its
+// constants swizzled alike; measured, scene colour_format_bgra).
+constexpr bool swapsRedBlue(ColourFormat f) { return f == ColourFormat::B8G8R8A8Unorm || f == ColourFormat::B8G8R8A8Srgb; }
+
+// Whether the format's red, green and blue bytes are sRGB-encoded (alpha stays linear): lavapipe
+// blends them in linear float (fragment/colour.hpp), and clears and resolves convert.
+constexpr bool isSrgb(ColourFormat f) { return f == ColourFormat::R8G8B8A8Srgb || f == ColourFormat::B8G8R8A8Srgb; }
 
 enum class DepthFormat : std::uint8_t { D16Unorm, X8D24UnormPack32, D32Sfloat, D24UnormS8Uint, D32SfloatS8Uint };
 

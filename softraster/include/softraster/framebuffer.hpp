@@ -1,9 +1,11 @@
-// Framebuffer: an R8G8B8A8_UNORM colour image and a depth image (formats.hpp), row 0 at the top,
+// Framebuffer: a colour image (R8G8B8A8_UNORM, or B8G8R8A8_UNORM: the same four bytes per sample
+// with red and blue swapped; or either as sRGB) and a depth image (formats.hpp), row 0 at the top,
 // with 1 or 4 samples per pixel (samples of a pixel are adjacent, in Vulkan's sample order).
 // Depth is kept as the format stores it: UNORM depth as its integer, D32_SFLOAT as its float's
 // bits; depthValues() reads it back as floats. A depth/stencil format also has a stencil image,
 // one byte per sample in the same order. resolve() averages colour samples as lavapipe's
-// resolve blit does and keeps depth and stencil sample 0.
+// resolve blit does (sRGB ones decoded to linear and encoded again) and keeps depth and stencil
+// sample 0.
 // Made by Framebuffer::create, which checks the size, format and sample count and returns the
 // error as a Result (a default-constructed Framebuffer has no pixels and no draw accepts it).
 // clear() is deferred: it remembers the values, and the next draw that runs in the Context's
@@ -36,29 +38,33 @@ class Framebuffer {
 
   // A width x height framebuffer with `samples` samples per pixel (1, or 4: Vulkan's standard
   // 4x pattern), or the error: "framebuffer size WxH: width and height must be 1..16384",
-  // "framebuffer samples N: must be 1 or 4", "unknown depth format".
+  // "framebuffer samples N: must be 1 or 4", "unknown depth format", "unknown colour format".
   // A format with a stencil aspect (hasStencil) gets a stencil image, cleared to 0.
   static Result<Framebuffer> create(std::uint32_t width, std::uint32_t height,
-                                    DepthFormat depthFormat = DepthFormat::D32Sfloat, std::uint32_t samples = 1);
+                                    DepthFormat depthFormat = DepthFormat::D32Sfloat, std::uint32_t samples = 1,
+                                    ColourFormat colourFormat = ColourFormat::R8G8B8A8Unorm);
 
   std::uint32_t width() const { return width_; }
   std::uint32_t height() const { return height_; }
   std::uint32_t samples() const { return samples_; }
   DepthFormat depthFormat() const { return depthFormat_; }
+  ColourFormat colourFormat() const { return colourFormat_; }
 
   // A single-sample framebuffer: colour = average of the samples (float sum in sample order,
-  // times 0.25, stored as UNORM8), depth = sample 0. A single-sample framebuffer resolves to a copy.
+  // times 0.25, stored as UNORM8; sRGB red, green and blue summed as linear values and encoded as
+  // the fragment stage stores sRGB), depth = sample 0. A single-sample framebuffer resolves to a copy.
   Framebuffer resolve() const;
   // The same resolve into `out`, reusing its storage when it already has this framebuffer's size
-  // and depth format with one sample (no allocation per frame).
+  // and formats with one sample (no allocation per frame).
   void resolveInto(Framebuffer& out) const;
 
-  // Clears colour (converted as a UNORM8 store converts), depth (as a depth clear converts:
+  // Clears colour (converted as a UNORM8 store converts; sRGB red, green and blue as lavapipe's
+  // clear encodes them, srgb.hpp's linearToSrgbClearByte), depth (as a depth clear converts:
   // lrint(depth * (2^n - 1)) for UNORM formats) and stencil, if the format has it. Deferred, as
   // the top of this file says.
   void clear(Vec4 colour, float depth, std::uint8_t stencil = 0);
 
-  // 4 bytes per sample, RGBA; samples() samples per pixel.
+  // 4 bytes per sample in the colour format's order (RGBA, or BGRA); samples() samples per pixel.
   std::vector<std::uint8_t>& colour() { return settled().colour_; }
   const std::vector<std::uint8_t>& colour() const { return settled().colour_; }
 
@@ -81,9 +87,11 @@ class Framebuffer {
     assert(x < width_ && y < height_ && sample < samples_);
     return (static_cast<std::size_t>(y) * width_ + x) * samples_ + sample;
   }
-  // The RGBA8 bytes of one sample of pixel (x, y); (0, 0) is the top-left pixel.
+  // The R, G, B and A bytes of one sample of pixel (x, y), in that order whatever the format
+  // stores; (0, 0) is the top-left pixel.
   std::array<std::uint8_t, 4> colourAt(std::uint32_t x, std::uint32_t y, std::uint32_t sample = 0) const {
     const std::uint8_t* p = colour().data() + 4 * sampleIndex(x, y, sample);
+    if (swapsRedBlue(colourFormat_)) return {p[2], p[1], p[0], p[3]};
     return {p[0], p[1], p[2], p[3]};
   }
   // One sample's depth as depth() converts it.
@@ -91,7 +99,7 @@ class Framebuffer {
 
   // For the draw loop's bands: a clear's values, one word per sample each.
   struct PendingClear {
-    std::uint32_t colour;  // RGBA8
+    std::uint32_t colour;  // as stored (RGBA8 or BGRA8)
     std::uint32_t depth;   // as stored
     std::uint8_t stencil;  // written only where the format has stencil
   };
@@ -107,7 +115,8 @@ class Framebuffer {
   void clearRows(const PendingClear& clear, std::uint32_t y0, std::uint32_t y1);
 
  private:
-  Framebuffer(std::uint32_t width, std::uint32_t height, DepthFormat depthFormat, std::uint32_t samples);
+  Framebuffer(std::uint32_t width, std::uint32_t height, DepthFormat depthFormat, std::uint32_t samples,
+              ColourFormat colourFormat);
 
   // This framebuffer with any pending clear written: the images are its observable state, so
   // even a const access writes a pending clear first (hence the mutable members).
@@ -124,6 +133,7 @@ class Framebuffer {
 
   std::uint32_t width_ = 0, height_ = 0, samples_ = 1;
   DepthFormat depthFormat_ = DepthFormat::D32Sfloat;
+  ColourFormat colourFormat_ = ColourFormat::R8G8B8A8Unorm;
   mutable std::optional<PendingClear> pending_;
   mutable std::vector<std::uint8_t> colour_;
   mutable std::vector<std::uint32_t> depth_;

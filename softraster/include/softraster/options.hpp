@@ -34,8 +34,8 @@ enum class DepthMode : std::uint8_t { Vulkan, InverseZ };
 // MSAA each pixel's one result goes to all four samples.
 //   Exact:       lavapipe's rules; triangles, and single-sample lines and points, take the SIMD
 //                fast path (4x2 pixel batches, AVX2) where the CPU has AVX2 and FMA, fmuladd is
-//                fused and the shader's fragment function is written over its float type (shader.hpp);
-//                everything else takes the scalar path.
+//                fused, the shader's fragment function is written over its float type (shader.hpp)
+//                and the target is not sRGB; everything else takes the scalar path.
 //   ExactScalar: lavapipe's rules, one pixel at a time.
 //   Scanline:    the course's row method: each edge walked into per-row left/right arrays, each
 //                row drawn between them (detail/course/scanline.hpp).

@@ -287,7 +287,9 @@ class Context {
     }
 #if SOFTRASTER_HAS_FAST_PATH
     if constexpr (ShadesBatches<Shader>) {
-      if (options_.method == Method::Exact && options_.fusedMultiplyAdd && detail::fast::cpuRunsFastPath()) {
+      // sRGB targets blend in float per pixel (fragment/colour.hpp): the scalar fragment stage.
+      if (options_.method == Method::Exact && options_.fusedMultiplyAdd && detail::fast::cpuRunsFastPath() &&
+          !isSrgb(framebuffer.colourFormat())) {
         drawFast<Shader, Format>(state, uniforms, vertices, indices, framebuffer, scratch);
         return;
       }

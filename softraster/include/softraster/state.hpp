@@ -175,7 +175,8 @@ enum ColourComponent : std::uint8_t { kColourR = 1, kColourG = 2, kColourB = 4, 
 // VkPipelineColorBlendAttachmentState of the one colour attachment, plus
 // VkPipelineColorBlendStateCreateInfo::blendConstants, logicOpEnable and logicOp (static
 // pipeline state). The default is blending off with every component written. The write mask
-// applies with blending off too. On the R8G8B8A8_UNORM target both renderers blend in 8-bit
+// applies with blending off too; its bits, like blendConstants, name R, G, B, A whatever the
+// target's byte order. On R8G8B8A8_UNORM and B8G8R8A8_UNORM targets both renderers blend in 8-bit
 // integers (fragment/colour.hpp). With logicOpEnable the logic op replaces blending (Vulkan:
 // blending is then treated as disabled) and works on the stored bytes.
 struct BlendState {

@@ -75,6 +75,7 @@ struct FrameRequest {
   std::array<float, 4> clearColour{0, 0, 0, 0};
   float clearDepth = 1.0f;
   std::uint8_t clearStencil = 0;  // with a depth/stencil format
+  softraster::ColourFormat colourFormat = softraster::ColourFormat::R8G8B8A8Unorm;
   softraster::DepthFormat depthFormat = softraster::DepthFormat::D32Sfloat;
   std::uint32_t samples = 1;  // 1, or 4: rendered multisampled, colour resolved (average) and
                               // depth and stencil resolved (sample 0); read back both the
@@ -85,7 +86,7 @@ struct FrameRequest {
 
 struct FrameImages {
   std::uint32_t width = 0, height = 0;
-  std::vector<std::uint8_t> rgba;          // width*height*4, row 0 at the top
+  std::vector<std::uint8_t> rgba;          // width*height*4, R, G, B, A whatever the format; row 0 at the top
   std::vector<float> depth;                // width*height, as floats in [0, 1]
   std::vector<std::uint32_t> depthStorage; // width*height, as stored: UNORM integer or the float's bits
   std::vector<std::uint8_t> stencil;       // width*height with a depth/stencil format, else empty

@@ -175,9 +175,11 @@ inline Mask depthTestPasses(CompareOp op, Words incoming, Words stored) {
   return reinterpret_cast<Words>(_mm256_cvtps_epi32(_mm256_mul_ps(clamped, _mm256_set1_ps(255.0f))));
 }
 
-[[SOFTRASTER_FAST_TARGET]] inline Words packColour(const Vec4T<FloatBatch>& c) {
-  return unorm8FromFloat(c.x.native()) | (unorm8FromFloat(c.y.native()) << 8) |
-         (unorm8FromFloat(c.z.native()) << 16) | (unorm8FromFloat(c.w.native()) << 24);
+// The lanes' colours as stored: RGBA8, or with swapRedBlue BGRA8 (ColourBlend::swapRedBlue).
+[[SOFTRASTER_FAST_TARGET]] inline Words packColour(const Vec4T<FloatBatch>& c, bool swapRedBlue) {
+  const Words red = unorm8FromFloat(c.x.native()), blue = unorm8FromFloat(c.z.native());
+  return (swapRedBlue ? blue : red) | (unorm8FromFloat(c.y.native()) << 8) | ((swapRedBlue ? red : blue) << 16) |
+         (unorm8FromFloat(c.w.native()) << 24);
 }
 
 // blendColour per lane on packed RGBA8 (fragment/colour.hpp's arithmetic, 32 bytes at a time):

@@ -560,7 +560,7 @@ class FastFragmentStage {
     if constexpr (N > 0) interpolateBlock(std::make_index_sequence<N>{}, t, fx, fy, varyings.data());
     Vec4T<FloatBatch> c = Shader::template fragment<FloatBatch>(uniforms_, varyings.data());
     if (target_.coverage.alphaToOne) c.w = FloatBatch(1.0f);
-    return packColour(c);
+    return packColour(c, target_.blend.swapRedBlue);
   }
 
   // The lanes shaded before the tests (a shader with the fragment built-ins, or alpha to
@@ -590,7 +590,7 @@ class FastFragmentStage {
     }
     if (target_.coverage.alphaToCoverage) kept &= alphaToCoverageBits<Samples>(c.w.native());
     if (target_.coverage.alphaToOne) c.w = FloatBatch(1.0f);
-    return packColour(c);
+    return packColour(c, target_.blend.swapRedBlue);
   }
 
   // alphaToCoverageSamples (fragment/coverage.hpp) on the lanes: bit per lane with one sample,

@@ -1,4 +1,7 @@
-// Colour output: R8G8B8A8_UNORM stores and blending, as lavapipe's fragment JIT code does them.
+// Colour output: R8G8B8A8 and B8G8R8A8 (UNORM and sRGB) stores and blending, as lavapipe's
+// fragment JIT code does them. B8G8R8A8 is R8G8B8A8 with red and blue swapped where the colour
+// meets memory: the shader's output, the blend constants and the write mask are swizzled
+// (ColourBlend), the arithmetic per channel is the same. sRGB targets: see blendColourSrgb.
 // A store clamps to [0, 1] (NaN to 0), multiplies by 255 in float and rounds half to even.
 // Blending (every core VkBlendFactor and VkBlendOp, separate colour and alpha, blend constants,
 // the colour write mask) is lavapipe's 8-bit integer arithmetic on UNORM8 targets (Mesa 22.3.6,
@@ -17,14 +20,17 @@
 //   - a logic op (VkLogicOp) instead of blending works bit by bit on the source converted to
 //     UNORM8 as a store converts it and the destination byte (lp_build_logicop on the converted
 //     values), then the write mask.
-// Deliberately absent: dual-source factors, other colour formats (sRGB and float targets blend
-// in float in lavapipe, and take no logic op).
+// Deliberately absent: dual-source factors, float and 10-bit targets, and the SIMD form of the
+// sRGB path (the fast path draws sRGB targets with the scalar fragment stage).
 #pragma once
 
+#include <softraster/detail/fragment/srgb.hpp>
+#include <softraster/formats.hpp>
 #include <softraster/math.hpp>
 #include <softraster/state.hpp>
 
 #include <cstdint>
+#include <utility>
 
 namespace softraster::detail {
 
@@ -44,17 +50,34 @@ inline void storeColour(std::uint8_t* pixel, Vec4 c) {
   pixel[3] = unorm8FromFloat(c.w);
 }
 
-// A draw's BlendState prepared for UNORM8 blending: the blend constants as bytes (converted as
-// a store converts), and whether the destination is read at all.
+// A draw's BlendState prepared for UNORM8 blending in the target's byte order: the blend
+// constants as bytes (converted as a store converts) and the write mask, both in that order;
+// whether the shader's red and blue swap places before the store; and whether the destination is
+// read at all.
 struct ColourBlend {
-  BlendState state;
-  std::uint8_t constants[4] = {0, 0, 0, 0};
+  BlendState state;  // colorWriteMask: bit i for byte i of the stored pixel
+  std::uint8_t constants[4] = {0, 0, 0, 0};  // byte i for byte i of the stored pixel
+  float linearConstants[4] = {0, 0, 0, 0};   // sRGB: the constants clamped to [0, 1], in byte order
+  bool swapRedBlue = false;       // B8G8R8A8: the colour's x goes to byte 2, z to byte 0
+  bool srgb = false;              // an sRGB target: blendColourSrgb
   bool readsDestination = false;  // blending on, or a write mask without every component
 };
 
-inline ColourBlend colourBlend(const BlendState& state) {
+inline ColourBlend colourBlend(const BlendState& state, ColourFormat format = ColourFormat::R8G8B8A8Unorm) {
   ColourBlend b{state};
   for (int i = 0; i < 4; ++i) b.constants[i] = unorm8FromFloat(state.blendConstants[i]);
+  for (int i = 0; i < 4; ++i) {  // lp_build_clamp: min with 1, then max with 0
+    const float k = state.blendConstants[i] < 1.0f ? state.blendConstants[i] : 1.0f;
+    b.linearConstants[i] = k > 0.0f ? k : 0.0f;
+  }
+  b.srgb = isSrgb(format);
+  if (swapsRedBlue(format)) {
+    b.swapRedBlue = true;
+    std::swap(b.constants[0], b.constants[2]);
+    std::swap(b.linearConstants[0], b.linearConstants[2]);
+    const std::uint32_t mask = state.colorWriteMask;
+    b.state.colorWriteMask = static_cast<std::uint8_t>((mask & 0b1010u) | ((mask & 1u) << 2) | ((mask >> 2) & 1u));
+  }
   b.readsDestination = state.enable || (state.colorWriteMask & kColourRGBA) != kColourRGBA ||
                        (state.logicOpEnable && state.logicOp != LogicOp::Copy);
   return b;
@@ -132,9 +155,110 @@ inline int blendChannel8(BlendOp op, BlendFactor sf, BlendFactor df, int c, cons
   }
 }
 
-// The colour output of one fragment (or sample) into its RGBA8 pixel: the store, or blending in
-// 8-bit integers as lavapipe blends UNORM8 targets, then the write mask.
+// ---- sRGB targets: lavapipe's float path (lp_state_fs.c, format_expands_to_float_soa) ----
+// The source colour is clamped to [0, 1] (NaN to 0, lp_build_clamp_zero_one_nanzero), the
+// constants to [0, 1]; the destination's red, green and blue are decoded to linear (srgbToLinear)
+// and its alpha is byte * (1/255 as a float). Blending is float arithmetic per channel, unfused
+// (lp_build_blend on floats: one multiply per term, ONE_MINUS_x as 1 - x, SRC_ALPHA_SATURATE
+// min(As, 1 - Ad)), with lp_build_blend's one shortcut for floats: when the source and the
+// destination factor are the same for colour and the same for alpha, ADD, SUBTRACT and
+// REVERSE_SUBTRACT are computed as (s op d) * factor. MIN and MAX take the unweighted values
+// (lavapipe sets their factors to ONE before that test). A logic op is not applied (Vulkan: not on
+// sRGB targets; lavapipe stores the source). The write mask selects between result and
+// destination in linear values, then every channel is encoded again: red, green and blue by
+// linearToSrgbByte, alpha as a UNORM8 store (encode(decode(b)) == b for every byte, so what the
+// mask leaves keeps its byte).
+
+// VkBlendFactor in float for channel c (3 = alpha).
+inline float blendFactorFloat(BlendFactor f, int c, const float (&s)[4], const float (&d)[4], const float (&k)[4]) {
+  switch (f) {
+    case BlendFactor::Zero: return 0.0f;
+    case BlendFactor::One: return 1.0f;
+    case BlendFactor::SrcColor: return s[c];
+    case BlendFactor::OneMinusSrcColor: return 1.0f - s[c];
+    case BlendFactor::DstColor: return d[c];
+    case BlendFactor::OneMinusDstColor: return 1.0f - d[c];
+    case BlendFactor::SrcAlpha: return s[3];
+    case BlendFactor::OneMinusSrcAlpha: return 1.0f - s[3];
+    case BlendFactor::DstAlpha: return d[3];
+    case BlendFactor::OneMinusDstAlpha: return 1.0f - d[3];
+    case BlendFactor::ConstantColor: return k[c];
+    case BlendFactor::OneMinusConstantColor: return 1.0f - k[c];
+    case BlendFactor::ConstantAlpha: return k[3];
+    case BlendFactor::OneMinusConstantAlpha: return 1.0f - k[3];
+    case BlendFactor::SrcAlphaSaturate: {
+      if (c == 3) return 1.0f;
+      const float inverse = 1.0f - d[3];
+      return s[3] < inverse ? s[3] : inverse;
+    }
+  }
+  return 0.0f;
+}
+
+// ADD, SUBTRACT, REVERSE_SUBTRACT of two terms; MIN and MAX in SSE's operand order.
+inline float blendFunctionFloat(BlendOp op, float a, float b) {
+  switch (op) {
+    case BlendOp::Add: return a + b;
+    case BlendOp::Subtract: return a - b;
+    case BlendOp::ReverseSubtract: return b - a;
+    case BlendOp::Min: return a < b ? a : b;
+    case BlendOp::Max: return a > b ? a : b;
+  }
+  return 0.0f;
+}
+
+inline void blendColourSrgb(std::uint8_t* pixel, Vec4 c, const ColourBlend& blend) {
+  const BlendState& b = blend.state;
+  float s[4] = {c.x, c.y, c.z, c.w};
+  for (float& v : s) {
+    v = v > 0.0f ? v : 0.0f;  // NaN to 0
+    v = v < 1.0f ? v : 1.0f;
+  }
+  float out[4] = {s[0], s[1], s[2], s[3]};
+  if (blend.readsDestination) {
+    const float d[4] = {srgbToLinear(pixel[0]), srgbToLinear(pixel[1]), srgbToLinear(pixel[2]),
+                        static_cast<float>(pixel[3]) * static_cast<float>(1.0 / 255.0)};
+    if (b.enable && !b.logicOpEnable) {
+      // The factors lavapipe hands llvmpipe: ONE for MIN and MAX.
+      const bool colourMinMax = b.colorBlendOp == BlendOp::Min || b.colorBlendOp == BlendOp::Max;
+      const bool alphaMinMax = b.alphaBlendOp == BlendOp::Min || b.alphaBlendOp == BlendOp::Max;
+      const BlendFactor colourSource = colourMinMax ? BlendFactor::One : b.srcColorBlendFactor;
+      const BlendFactor colourDestination = colourMinMax ? BlendFactor::One : b.dstColorBlendFactor;
+      const BlendFactor alphaSource = alphaMinMax ? BlendFactor::One : b.srcAlphaBlendFactor;
+      const BlendFactor alphaDestination = alphaMinMax ? BlendFactor::One : b.dstAlphaBlendFactor;
+      const bool sameFactors = colourSource == colourDestination && alphaSource == alphaDestination;
+      for (int i = 0; i < 4; ++i) {
+        const BlendOp op = i < 3 ? b.colorBlendOp : b.alphaBlendOp;
+        const BlendFactor source = i < 3 ? colourSource : alphaSource;
+        const BlendFactor destination = i < 3 ? colourDestination : alphaDestination;
+        if (op == BlendOp::Min || op == BlendOp::Max) {
+          out[i] = blendFunctionFloat(op, s[i], d[i]);
+        } else if (sameFactors) {
+          out[i] = blendFunctionFloat(op, s[i], d[i]) * blendFactorFloat(source, i, s, d, blend.linearConstants);
+        } else {
+          out[i] = blendFunctionFloat(op, s[i] * blendFactorFloat(source, i, s, d, blend.linearConstants),
+                                      d[i] * blendFactorFloat(destination, i, s, d, blend.linearConstants));
+        }
+      }
+    }
+    for (int i = 0; i < 4; ++i) {
+      if (!(b.colorWriteMask & (1u << i))) out[i] = d[i];
+    }
+  }
+  pixel[0] = linearToSrgbByte(out[0]);
+  pixel[1] = linearToSrgbByte(out[1]);
+  pixel[2] = linearToSrgbByte(out[2]);
+  pixel[3] = unorm8FromFloat(out[3]);
+}
+
+// The colour output of one fragment (or sample) into its RGBA8 (or BGRA8) pixel: the store, or
+// blending in 8-bit integers as lavapipe blends UNORM8 targets, then the write mask.
 [[gnu::always_inline]] inline void blendColour(std::uint8_t* pixel, Vec4 c, const ColourBlend& blend) {
+  if (blend.swapRedBlue) std::swap(c.x, c.z);
+  if (blend.srgb) {
+    blendColourSrgb(pixel, c, blend);
+    return;
+  }
   if (!blend.readsDestination) {
     storeColour(pixel, c);
     return;

@@ -57,7 +57,7 @@ namespace softraster::detail {
 struct FragmentTarget {
   DepthState depth;
   StencilState stencil;  // enable: the state asks for the test and the framebuffer has stencil
-  ColourBlend blend;  // the draw's BlendState, prepared for UNORM8 (fragment/colour.hpp)
+  ColourBlend blend;  // the draw's BlendState, prepared for the UNORM8 target (fragment/colour.hpp)
   PixelRect region;   // what this stage may touch: the draw's raster region, or one band of it
   MsaaRegionEdges msaa;  // 4x MSAA: the whole draw's region edges (the same for every band)
   SampleCoverage coverage;  // sample mask, alpha to coverage, alpha to one
@@ -75,7 +75,7 @@ inline FragmentTarget fragmentTarget(const PipelineState& state, Framebuffer& fr
                                      Deviations deviations = Deviations::Driver) {
   return {state.depth,
           stencilState(state.depth, hasStencil(framebuffer.depthFormat())),
-          colourBlend(state.blend),
+          colourBlend(state.blend, framebuffer.colourFormat()),
           region,
           framebuffer.samples() == 4
               ? msaaRegionEdges(drawRegion(state.scissor, viewport, framebuffer.width(), framebuffer.height()),

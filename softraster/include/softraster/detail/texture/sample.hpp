@@ -27,6 +27,7 @@
 #pragma once
 
 #include <softraster/detail/fragment/depth.hpp>
+#include <softraster/detail/fragment/srgb.hpp>
 #include <softraster/math.hpp>
 #include <softraster/simd.hpp>
 
@@ -258,17 +259,7 @@ inline constexpr bool isPowerOfTwo(std::uint32_t n) { return (n & (n - 1)) == 0;
 // sRGB: lp_build_srgb_to_linear's polynomial), wrapping works on float coordinates, and each
 // lerp is fmuladd(w, v1 - v0, v0) (fused, as lavapipe's is on an FMA CPU).
 
-// lp_build_srgb_to_linear for 8 bits: v / (12.6 * 255) up to 15, else a cubic in v (1/255 folded
-// into the coefficients), through lp_build_polynomial's even/odd scheme.
-inline float srgbToLinear(std::uint8_t v) {
-  const float x = static_cast<float>(v);
-  if (x <= 15.0f) return x * (1.0f / (12.6f * 255.0f));
-  const float c0 = 0.0023f, c1 = 0.0030f / 255.0f, c2 = 0.6935f / (255.0f * 255.0f),
-              c3 = 0.3012f / (255.0f * 255.0f * 255.0f);
-  const float x2 = x * x;
-  const float even = std::fma(x2, c2, c0), odd = std::fma(x2, c3, c1);
-  return std::fma(odd, x, even);
-}
+// (srgbToLinear, lp_build_srgb_to_linear's cubic: fragment/srgb.hpp.)
 
 // lp_build_coord_mirror(coord, posOnly): the distance to the nearest even integer, in [0, 1].
 inline float mirrorCoordinate(float coord) {

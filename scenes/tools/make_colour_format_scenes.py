@@ -1,0 +1,112 @@
+#!/usr/bin/env python3
+"""Writes the colour-format scenes of the conformance suite, each with 4x MSAA:
+colour_format_bgra (a B8G8R8A8_UNORM target): eight cells, each one triangle over a background
+whose colour and alpha differ in every corner, each with a state in which red and blue must not
+trade places: a plain store, alpha blending, constant-colour factors with red and blue constants
+far apart, SRC_ALPHA_SATURATE, write masks naming red but not blue (and blue but not red), and
+logic ops. A strip at the bottom keeps the clear colour (red and blue far apart too).
+colour_format_srgb (an R8G8B8A8_SRGB target): twelve cells of blending in linear float, among
+them the states lavapipe computes another way (the same factor for source and destination: the
+sum or difference times the factor), MIN and MAX, a write mask, a logic op (not applied to sRGB),
+vertex colours reaching down into the linear segment of the sRGB curve; the clear colour is one
+where lavapipe's clear and its fragment stores encode differently (0.5 gives 188 and 187).
+Run from scenes/:  python3 tools/make_colour_format_scenes.py"""
+import os
+import random
+import sys
+
+sys.path.insert(0, os.path.dirname(__file__))
+from clip_layout import clip, dump, quad, BACKGROUND  # noqa: E402
+
+W, H = 192, 136
+CELL_W, CELL_H = 48, 60
+STATES = [
+    ("store", {"enable": False}),
+    ("over", {"source": "src_alpha", "destination": "one_minus_src_alpha"}),
+    ("constants", {"colour": {"source": "constant_color", "destination": "one_minus_constant_color"},
+                   "alpha": {"source": "one_minus_constant_alpha", "destination": "constant_alpha"},
+                   "constants": [0.9, 0.35, 0.05, 0.6]}),
+    ("saturate", {"colour": {"source": "src_alpha_saturate", "destination": "dst_color"},
+                  "alpha": {"source": "one", "destination": "one", "op": "max"}}),
+    ("write mask r", {"enable": False, "write_mask": "r"}),
+    ("additive, write mask ba", {"source": "one", "destination": "one", "write_mask": "ba"}),
+    ("xor", {"logic_op": "xor"}),
+    ("and_reverse, write mask rg", {"logic_op": "and_reverse", "write_mask": "rg"}),
+]
+
+rng = random.Random(71)
+draws = [quad("background", 0, 0, W, 2 * CELL_H, BACKGROUND, W, H, depth_test=False)]
+for i, (name, blend) in enumerate(STATES):
+    cx, cy = (i % 4) * CELL_W + CELL_W / 2, (i // 4) * CELL_H + CELL_H / 2
+    points = [[cx + rng.uniform(-22, 22), cy + rng.uniform(-28, 28)] for _ in range(3)]
+    # Red high and blue low or the other way round, alpha anywhere: a swap shows in every byte.
+    colours = []
+    for k in range(3):
+        high, low = round(rng.uniform(0.7, 0.97), 3), round(rng.uniform(0.03, 0.3), 3)
+        red, blue = (high, low) if k % 2 == 0 else (low, high)
+        colours.append([red, round(rng.uniform(0.1, 0.9), 3), blue, round(rng.uniform(0.1, 0.95), 3)])
+    draws.append({"name": f"cell {i} ({name})", "positions": [clip(x, y, W, H) for x, y in points],
+                  "colours": colours, "cull": "none", "depth_test": False, "blend": blend})
+
+dump("colour_format_bgra.json", {
+    "description": "A B8G8R8A8_UNORM colour target with 4x MSAA: eight triangles over a background whose colour and "
+    "alpha differ in every corner, one per cell (left to right, top to bottom): " +
+    "; ".join(name for name, _ in STATES) + ". Red and blue are far apart in every vertex colour, in the blend "
+    "constants [0.9, 0.35, 0.05, 0.6] and in the clear colour (the strip at the bottom), and the write masks name "
+    "one of them only, so a target read or written in the wrong byte order differs everywhere. lavapipe blends "
+    "B8G8R8A8 in the same 8-bit arithmetic as R8G8B8A8, per channel: the frame (read back as R, G, B, A) is the "
+    "R8G8B8A8 frame of the same scene, byte for byte.",
+    "framebuffer": {"width": W, "height": H, "colour_format": "b8g8r8a8_unorm", "clear_colour": [0.93, 0.5, 0.08, 0.7],
+                    "samples": 4},
+    "camera": {"type": "clip_space"},
+    "draws": draws})
+
+# ---- colour_format_srgb ----
+W, H = 256, 136
+CELL_W, CELL_H = 42, 60
+SRGB_STATES = [
+    ("store", {"enable": False}),
+    ("over", {"source": "src_alpha", "destination": "one_minus_src_alpha"}),
+    ("additive (same factors)", {"source": "one", "destination": "one"}),
+    ("src_alpha twice (same factors)", {"source": "src_alpha", "destination": "src_alpha"}),
+    ("subtract, dst_color twice (same factors)", {"source": "dst_color", "destination": "dst_color", "op": "subtract"}),
+    ("reverse_subtract, constants", {"colour": {"source": "constant_color", "destination": "one_minus_src_color",
+                                                "op": "reverse_subtract"},
+                                     "alpha": {"source": "one_minus_constant_alpha", "destination": "dst_alpha"},
+                                     "constants": [0.72, 0.3, 0.05, 0.6]}),
+    ("saturate", {"colour": {"source": "src_alpha_saturate", "destination": "dst_color"},
+                  "alpha": {"source": "one", "destination": "one_minus_src_alpha"}}),
+    ("min, alpha add one twice (same factors)", {"colour": {"op": "min", "source": "src_alpha",
+                                                            "destination": "zero"},
+                                                 "alpha": {"source": "one", "destination": "one"}}),
+    ("max, alpha src_alpha / dst_alpha", {"colour": {"op": "max"},
+                                          "alpha": {"source": "src_alpha", "destination": "dst_alpha"}}),
+    ("write mask rb, over", {"source": "src_alpha", "destination": "one_minus_src_alpha", "write_mask": "rb"}),
+    ("logic op xor (not applied)", {"logic_op": "xor"}),
+    ("dst_alpha / one_minus_dst_color", {"source": "dst_alpha", "destination": "one_minus_dst_color"}),
+]
+rng = random.Random(83)
+draws = [quad("background", 0, 0, W, 2 * CELL_H, BACKGROUND, W, H, depth_test=False)]
+for i, (name, blend) in enumerate(SRGB_STATES):
+    cx, cy = (i % 6) * CELL_W + CELL_W / 2 + 1, (i // 6) * CELL_H + CELL_H / 2
+    points = [[cx + rng.uniform(-20, 20), cy + rng.uniform(-28, 28)] for _ in range(3)]
+    # One vertex dark (linear values near the sRGB curve's linear segment), one bright, one anywhere.
+    colours = [[round(rng.uniform(0.0, 0.006), 4) for _ in range(3)] + [round(rng.uniform(0.1, 0.9), 3)],
+               [round(rng.uniform(0.75, 1.0), 3) for _ in range(3)] + [round(rng.uniform(0.1, 0.9), 3)],
+               [round(rng.uniform(0.0, 1.0), 3) for _ in range(4)]]
+    draws.append({"name": f"cell {i} ({name})", "positions": [clip(x, y, W, H) for x, y in points],
+                  "colours": colours, "cull": "none", "depth_test": False, "blend": blend})
+
+dump("colour_format_srgb.json", {
+    "description": "An R8G8B8A8_SRGB colour target with 4x MSAA: twelve triangles over a background whose colour and "
+    "alpha differ in every corner, one per cell (left to right, top to bottom): " +
+    "; ".join(name for name, _ in SRGB_STATES) + ". lavapipe blends sRGB targets in linear float: the destination "
+    "decoded by a cubic, the result encoded by an approximation built on the CPU's reciprocal square root; where "
+    "source and destination factors are the same it computes (s op d) * factor; a logic op is not applied. Each "
+    "triangle has a vertex whose colour lies near the linear segment of the sRGB curve. The clear colour "
+    "[0.5, 0.2, 0.0031, 0.5] (the strip at the bottom) is encoded by the clear's own table, which gives 188 for 0.5 "
+    "where a fragment store gives 187.",
+    "framebuffer": {"width": W, "height": H, "colour_format": "r8g8b8a8_srgb", "clear_colour": [0.5, 0.2, 0.0031, 0.5],
+                    "samples": 4},
+    "camera": {"type": "clip_space"},
+    "draws": draws})
