@@ -24,6 +24,7 @@ struct BuiltinsDiscard {
     softraster::Mat4 modelViewProjection;
   };
   static constexpr int kVaryings = 4;  // vColour
+  static constexpr bool kReadsFrontFacing = true;  // gl_FrontFacing (also on unfilled polygons' lines and points)
   static constexpr std::array<softraster::VertexAttribute, 2> kAttributes{{
       {0, 3, offsetof(Vertex, position)},
       {1, 4, offsetof(Vertex, colour)},

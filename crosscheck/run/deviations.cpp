@@ -40,7 +40,8 @@ const std::vector<KnownDeviation>& knownDeviations() {
        "starts at the first pixel corner it covers, so covered samples left of or above it are dropped where that "
        "pixel lies in another 64x64 tile than the box's (not binned); and Bresenham lines are drawn with "
        "multisampling off "
-       "(depth and stencil tested and written at sample 0 only, the colour in all four samples)",
+       "(depth and stencil tested and written at sample 0 only, the colour in all four samples, the sample mask not "
+       "applied)",
        "lines_msaa"},
   };
   return kDeviations;

@@ -493,13 +493,6 @@ void readDrawState(const json& d, const std::string& place, softraster::Pipeline
     rs.lineStipple.enable = true;
     rs.lineStipple.factor = static_cast<std::uint32_t>(factor);
     rs.lineStipple.pattern = static_cast<std::uint16_t>(readCount(st, "pattern", sp, 0xFFFF, 0xFFFF));
-    const bool triangles = state.topology == Topology::TriangleList || state.topology == Topology::TriangleStrip ||
-                           state.topology == Topology::TriangleFan || state.topology == Topology::TriangleListWithAdjacency ||
-                           state.topology == Topology::TriangleStripWithAdjacency;
-    if (triangles && rs.polygonMode != softraster::PolygonMode::Fill) {
-      throw SceneError(sp, "stippled polygon-mode lines are not supported by softraster yet (Mesa's unfilled stage "
-                           "feeds the stipple stage lines that never reset its counter)");
-    }
   }
   if (d.contains("depth_bias")) {
     const std::string bp = placeOf(place, "depth_bias");

@@ -5,7 +5,9 @@ of both windings and slanted depths, with the depth test and stencil on, single-
 MSAA, over two depth/stencil formats; and the builtins_frag_depth model (gl_FragDepth) over the
 depth formats, with depth bias (which gl_FragDepth replaces) and depth clamp; both again with
 sample shading (4x MSAA, shaded per sample); builtins_sample (gl_SampleID, gl_SamplePosition)
-single-sample and 4x MSAA; and varyings_64
+single-sample and 4x MSAA; builtins_sample_mask (gl_SampleMask, gl_SampleMaskIn) single-sample, 4x MSAA
+and with sample shading; builtins_discard on unfilled polygons (polygon modes line and point);
+and varyings_64
 (64 varying components, smooth, flat and noperspective) on triangles that clipping cuts.
 
 Run from the repository root: python3 scenes/tools/make_builtins_scenes.py
@@ -89,6 +91,62 @@ def varyings_draws():
     ]
 
 
+def polygon_mode_draws():
+    """Unfilled polygons of both facings drawn by builtins_discard (which reads gl_FrontFacing) and
+    one by vertex_color (which does not): front state writes one value, back state another."""
+    def faces(front, back):
+        return {"front": {"compare_op": "always", "pass_op": "replace", "reference": front},
+                "back": {"compare_op": "always", "pass_op": "replace", "reference": back}}
+    return [
+        draw("background", quad(-4, -4, 260, 196, 3.5, 5.0), colour=[0.3, 0.3, 0.35], cull="none",
+             stencil={"compare_op": "always", "pass_op": "replace", "reference": 2}),
+        draw("builtins, line mode, front (ccw)", tri((10, 10, 2.0), (20, 90, 3.0), (110, 20, 2.5)),
+             shading="builtins_discard", cull="none", polygon_mode="line", stencil=faces(128, 55)),
+        draw("builtins, line mode, back (cw)", tri((130, 10, 2.0), (240, 20, 2.5), (140, 90, 3.0)),
+             shading="builtins_discard", cull="none", polygon_mode="line", colour=[0.9, 0.6, 0.1],
+             stencil=faces(128, 55)),
+        draw("builtins, point mode, back (cw)", tri((12, 110, 2.0), (110, 115, 2.5), (30, 180, 3.0)),
+             shading="builtins_discard", cull="none", polygon_mode="point", point_size=4, colour=[0.2, 0.8, 0.9],
+             stencil=faces(128, 55)),
+        draw("builtins, point mode, front (cw with front_face clockwise)",
+             tri((60, 120, 2.0), (100, 150, 2.5), (70, 185, 3.0)), shading="builtins_discard", cull="none",
+             polygon_mode="point", point_size=4, front_face="clockwise", colour=[0.7, 0.2, 0.7],
+             stencil=faces(3, 56)),
+        # No gl_FrontFacing in the shader: lavapipe's lines are front-facing, the back state unused.
+        draw("vertex colour, line mode, back (cw)", tri((130, 110, 2.0), (240, 120, 2.5), (140, 185, 3.0)),
+             colour=[0.9, 0.9, 0.2], cull="none", polygon_mode="line", stencil=faces(66, 77)),
+    ]
+
+
+def sample_mask_draws():
+    """builtins_sample_mask (gl_SampleMask, gl_SampleMaskIn) under late tests (stencil written),
+    early depth (stencil only read), the sample mask state, alpha to coverage and on lines."""
+    counting = {"compare_op": "always", "pass_op": "increment_and_clamp"}
+    return [
+        draw("background", quad(-4, -4, 260, 196, 3.5, 5.0), colour=[0.3, 0.3, 0.35], cull="none",
+             stencil={"compare_op": "always", "pass_op": "replace", "reference": 2}),
+        draw("mask, stencil written", tri((8, 8, 2.0), (20, 150, 4.0), (150, 20, 3.0)), shading="builtins_sample_mask",
+             cull="none", stencil=counting, colour=[0.2, 0.6, 0.9, 1.0]),
+        draw("mask, back-facing, depth written, stencil read", tri((250, 10, 2.2), (245, 180, 3.0), (140, 100, 4.0)),
+             shading="builtins_sample_mask", cull="none", colour=[0.9, 0.6, 0.1, 1.0],
+             stencil={"compare_op": "not_equal", "reference": 3, "write_mask": 0}),
+        draw("mask with the sample mask state 0xb", tri((40, 120, 2.0), (60, 188, 2.5), (130, 150, 2.2)),
+             shading="builtins_sample_mask", cull="none", stencil=counting, colour=[0.4, 0.9, 0.4, 1.0],
+             multisample={"sample_mask": 11}),
+        draw("mask and alpha to coverage (alpha 0.6)", tri((150, 110, 2.0), (170, 188, 2.6), (250, 130, 2.3)),
+             shading="builtins_sample_mask", cull="none", colour=[0.9, 0.2, 0.7, 0.6],
+             multisample={"alpha_to_coverage": True}),
+        draw("Bresenham lines", [at(160, 60, 2.1), at(250, 70, 2.1), at(170, 90, 2.1), at(240, 100, 2.1)],
+             shading="builtins_sample_mask", topology="line_list", line_rasterization="bresenham", line_width=3.0,
+             colour=[0.9, 0.9, 0.9, 1.0]),
+        draw("rectangular line strip", [at(100, 170, 2.1), at(140, 185, 2.1), at(200, 168, 2.1)],
+             shading="builtins_sample_mask", topology="line_strip", line_width=2.5, colour=[0.6, 0.9, 0.9, 1.0]),
+        # Drawn last, behind the builtins draws: it shows where their dropped samples left the depth.
+        draw("behind, through the dropped samples", quad(0, 0, 256, 192, 3.2, 3.2), colour=[0.9, 0.9, 0.2],
+             cull="none", depth_compare="less"),
+    ]
+
+
 def sample_draws():
     counting = {"compare_op": "always", "pass_op": "increment_and_clamp"}
     return [
@@ -149,6 +207,38 @@ def main():
           "writes its own gl_FragDepth from gl_FragCoord.z at the sample; the vertex-colour draws give the same "
           "bits as without sample shading.",
           depth_shaded, dict(FRAMEBUFFER, depth_format="d24_unorm_s8_uint", samples=4), CAMERA)
+
+    pm = ("Unfilled polygons (polygon modes line and point) drawn by builtins_discard, which reads "
+          "gl_FrontFacing: lavapipe's unfilled stage then gives their lines and points the polygon's facing, for "
+          "gl_FrontFacing (back faces coloured by the vertex colour) and for the stencil face (front state writes "
+          "128 or 3, back state 55 or 56); the last triangle, drawn by vertex_color, which does not read it, keeps "
+          "lavapipe's front state (66, never its back state's 77) whatever its winding.")
+    scene(os.path.join(OUT, "builtins_polygon_modes.json"), pm + " D24_UNORM_S8_UINT, single sample.",
+          polygon_mode_draws(), fb, CAMERA)
+    scene(os.path.join(OUT, "builtins_polygon_modes_msaa.json"), pm + " D24_UNORM_S8_UINT, 4x MSAA.",
+          polygon_mode_draws(), dict(fb, samples=4), CAMERA)
+
+    sm = ("gl_SampleMask and gl_SampleMaskIn (builtins_sample_mask: gl_SampleMask = (column + 3 * row) & 15 of "
+          "gl_FragCoord's integer parts, red = gl_SampleMaskIn / 16): a sample the mask drops is neither tested nor "
+          "written, stencil and depth included, under late tests (stencil written) and early depth (stencil read), "
+          "with the sample mask state 0xb, with alpha to coverage, and on Bresenham and rectangular lines; a last "
+          "draw shows the depth the dropped samples left.")
+    scene(os.path.join(OUT, "builtins_sample_mask.json"),
+          sm + " D24_UNORM_S8_UINT, single sample: gl_SampleMaskIn is 1 and bit 0 of gl_SampleMask keeps or drops "
+          "the fragment.", sample_mask_draws(), fb, CAMERA)
+    scene(os.path.join(OUT, "builtins_sample_mask_msaa.json"),
+          sm + " D24_UNORM_S8_UINT, 4x MSAA, shaded once per pixel: gl_SampleMaskIn holds the covered samples (after "
+          "the sample mask state) and gl_SampleMask drops samples; the Bresenham lines are drawn with multisampling "
+          "off (gl_SampleMaskIn 1, bit 0 decides).", sample_mask_draws(), dict(fb, samples=4), CAMERA)
+    shaded_masks = sample_mask_draws()
+    for d in shaded_masks:
+        # Refused with sample shading (pipeline.hpp), and invalid on Bresenham lines (VUID-...-02766).
+        if d["name"] not in ("mask and alpha to coverage (alpha 0.6)", "Bresenham lines"):
+            d.setdefault("multisample", {})["min_sample_shading"] = 1.0
+    scene(os.path.join(OUT, "builtins_sample_mask_sample_shading.json"),
+          sm + " D24_UNORM_S8_UINT, 4x MSAA with sample shading (minSampleShading 1, but on the alpha-to-coverage "
+          "draw and the Bresenham lines): each sample's invocation sees only its own bit in gl_SampleMaskIn and keeps its sample by its own "
+          "bit of gl_SampleMask.", shaded_masks, dict(fb, samples=4), CAMERA)
 
     sd = ("The per-sample built-ins (builtins_sample: colour = (gl_SamplePosition.x, gl_SamplePosition.y, "
           "gl_SampleID / 4, vertex alpha); sample 3 discarded where gl_FragCoord.y < 96). Reading gl_SampleID "

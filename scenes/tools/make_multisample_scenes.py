@@ -1,8 +1,8 @@
 #!/usr/bin/env python3
 """Writes the multisample-state scenes of the conformance suite (VkPipelineMultisampleStateCreateInfo:
 the sample mask, alpha to coverage, alpha to one) and 4x MSAA points: sample_mask_msaa,
-alpha_to_coverage_msaa, alpha_to_coverage, sample_mask_single_sample, points_msaa and lines_msaa (one JSON
-file each).
+alpha_to_coverage_msaa, alpha_to_coverage, sample_mask_single_sample, points_msaa, lines_msaa and
+msaa_bresenham_sample_state (one JSON file each).
 2D scenes: the clip_space camera with positions laid out in pixels (x_win = x * W/2 + W/2).
 Run from scenes/:  python3 tools/make_multisample_scenes.py"""
 import math
@@ -323,3 +323,51 @@ dump("lines_msaa.json", scene(
     "and Bresenham lines against a scissor and an offset viewport, which multisampling off cuts exactly."
     " D24_UNORM_S8_UINT; every sample compared.", W, H, draws, samples=4,
     depth_format="d24_unorm_s8_uint"))
+
+# ---- msaa_bresenham_sample_state: the multisample state on lines drawn with multisampling off ----
+W, H = 160, 96
+draws = [background(W, H, z=0.9)]
+
+
+def bresenham(name, y, colours, topology="line_list", **state):
+    """Three Bresenham lines (a list) or a strip zig-zagging across row y, 3 px wide."""
+    xs = [6.3, 52.7, 55.1, 104.6, 107.2, 153.8] if topology == "line_list" else [6.3, 40.2, 78.9, 117.4, 153.8]
+    d = {"name": name, "topology": topology, "line_rasterization": "bresenham", "line_width": 3.0,
+         "positions": [clip(x, y + (4.6 if k % 2 else 0.3), W, H, 0.4 + 0.05 * k) for k, x in enumerate(xs)],
+         "colours": [colours[k % len(colours)] for k in range(len(xs))], "depth_test": False}
+    d.update(state)
+    return d
+
+
+opaque = [[0.95, 0.8, 0.2, 1], [0.2, 0.9, 0.9, 1]]
+draws.append(bresenham("sample mask 0x5: not applied", 6, opaque, multisample={"sample_mask": 5}))
+draws.append(bresenham("sample mask 0x10 (none of the four): drawn whole", 18, opaque,
+                       multisample={"sample_mask": 16}))
+draws.append(bresenham("sample mask 0x6, depth and stencil", 30, opaque, topology="line_strip", depth_test=True,
+                       multisample={"sample_mask": 6}, stencil={"compare_op": "always", "pass_op": "increment_and_clamp"}))
+# Alpha to coverage, alpha to one and sample shading are invalid on Bresenham lines
+# (VUID-VkGraphicsPipelineCreateInfo-lineRasterizationMode-02766): the mask with blending instead.
+fading = [[0.9, 0.3, 0.1, 0.0], [0.1, 0.5, 0.9, 1.0]]
+draws.append(bresenham("sample mask 0x8, blended", 42, fading, multisample={"sample_mask": 8},
+                       blend={"source": "src_alpha", "destination": "one_minus_src_alpha"}))
+draws.append(bresenham("sample mask 0x3, blended", 54, fading, multisample={"sample_mask": 3},
+                       blend={"source": "src_alpha", "destination": "one_minus_src_alpha"}))
+draws.append(bresenham("sample mask 0x9, blended strip", 66, fading, topology="line_strip",
+                       multisample={"sample_mask": 9},
+                       blend={"source": "src_alpha", "destination": "one_minus_src_alpha"}))
+# Multisampled for comparison: rectangular lines and polygon mode line take the mask per sample.
+draws.append(dict(bresenham("rectangular, sample mask 0x5, alpha to coverage", 78, fading,
+                            multisample={"sample_mask": 5, "alpha_to_coverage": True}),
+                  line_rasterization="rectangular"))
+draws.append({"name": "polygon mode line, Bresenham, sample mask 0xa", "polygon_mode": "line",
+              "line_rasterization": "bresenham", "line_width": 2.0, "cull": "none", "depth_test": False,
+              "positions": [clip(120.4, 60.2, W, H, 0.3), clip(150.7, 92.1, W, H, 0.3), clip(156.3, 58.8, W, H, 0.3)],
+              "colour": [0.9, 0.9, 0.9, 1], "multisample": {"sample_mask": 10}})
+dump("msaa_bresenham_sample_state.json", scene(
+    "The sample mask on 4x MSAA Bresenham lines, which lavapipe draws with multisampling off: the mask is not "
+    "applied (0x5, 0x6 with depth and stencil, 0x8, 0x3 and 0x9 blended, and 0x10, none of the four samples, all "
+    "drawn whole; only a mask of 0 drops a draw); Vulkan forbids alpha to coverage, alpha to one and sample "
+    "shading on Bresenham lines (VUID-VkGraphicsPipelineCreateInfo-lineRasterizationMode-02766). For comparison, "
+    "multisampled lines: rectangular lines and polygon mode line (Bresenham), where the mask and alpha to coverage "
+    "act per sample. Vulkan applies the mask to every sample: the known deviation msaa_lines covers these lines. "
+    "D24_UNORM_S8_UINT; every sample compared.", W, H, draws, samples=4, depth_format="d24_unorm_s8_uint"))

@@ -1,6 +1,6 @@
 #!/usr/bin/env python3
 """Writes the topology and primitive-state scenes (issue 13): the negative-height viewport, primitive
-restart, provoking vertex last, stippled lines and the adjacency topologies. Geometry is laid out in
+restart, provoking vertex last, stippled lines (and stippled polygon-mode lines) and the adjacency topologies. Geometry is laid out in
 pixels and unprojected through the pinhole camera (origin, looking along +z, y down, focal length
 F), with the helpers it shares with make_feature_scenes.py (scene_layout.py). Run from scenes/:  python3 tools/make_topology_scenes.py"""
 import math
@@ -142,6 +142,45 @@ def stipple_scene(filename, mode, label):
 
 stipple_scene("line_stipple.json", "rectangular", "rectangular")
 stipple_scene("line_stipple_bresenham.json", "bresenham", "Bresenham")
+
+
+# ---- 5. stippled polygon-mode lines ----
+def stipple_polygon_scene(filename, mode, label):
+    def st(factor, pattern, **more):
+        return dict(topology=more.pop("topology", "triangle_list"), polygon_mode=more.pop("polygon_mode", "line"),
+                    line_rasterization=mode, line_stipple={"factor": factor, "pattern": pattern}, cull="none", **more)
+    draws = [
+        draw("list of both windings: the counter restarts at each triangle, factor 1, 0x0f0f",
+             ccw(6, 6, 50, 40) + cw(62, 6, 50, 40, 2.5) + ccw(6, 52, 30, 50, 3.0), rainbow(9), **st(1, 0x0F0F)),
+        draw("strip, width 2, factor 2, 0x3c5a", strip(120, 8, 26, 36, 8, 2.0, 3.5), rainbow(8, 2),
+             **st(2, 0x3C5A, topology="triangle_strip", line_width=2.0)),
+        draw("fan, factor 3, 0x00ff, provoking vertex last", fan(200, 110, 40, 7, 2.5), rainbow(8, 4),
+             shading="vertex_color_flat", provoking_vertex="last", **st(3, 0x00FF, topology="triangle_fan")),
+        # Clipping cuts these into fans: the counter restarts at a fan's first triangle only and runs on
+        # through the rest of its edges.
+        draw("clipped by the near plane and the sides, factor 1, 0x1fe3",
+             [[-1.2, 0.2, -0.5], [-0.2, 0.9, 3.0], [-1.4, 0.9, 2.0], [-0.3, 0.25, 1.0], [-0.6, 0.3, -1.0],
+              [0.1, 0.8, 2.5]], rainbow(6, 5), **st(1, 0x1FE3)),
+        draw("clipped by the sides, flat, width 1.5, factor 2, 0xa5f1",
+             [[1.0, -0.2, 2.0], [1.6, 0.4, 2.0], [0.7, 0.1, 2.0], [1.9, 0.8, 2.0], [0.8, 0.6, 2.0],
+              [2.2, 0.95, 2.0]], rainbow(6, 2), shading="vertex_color_flat",
+             **st(2, 0xA5F1, topology="triangle_strip", line_width=1.5)),
+        draw("depth-biased, over the first triangle, factor 1, 0x3333",
+             [at(10, 10, 2.6), at(14, 44, 2.6), at(54, 12, 2.6)], rainbow(3, 3),
+             depth_bias={"constant": 2000, "slope": 1.5, "clamp": 0}, **st(1, 0x3333)),
+        draw("point mode: the stipple leaves points alone", ccw(60, 120, 60, 60, 2.0), rainbow(3, 6),
+             point_size=3.0, **st(1, 0x0001, polygon_mode="point")),
+    ]
+    scene(filename, f"Stippled {label} polygon-mode lines: Mesa's unfilled stage hands each triangle's edges "
+          "(v2-v0, v0-v1, v1-v2, those its edge flags keep) to the stipple stage, resetting the counter at every "
+          "triangle of the draw and, of a triangle clipping cut into a fan, at the fan's first triangle only, so the "
+          "counter runs on through the fan's edges; a list of both windings, a wide strip, a flat fan with provoking "
+          "vertex last, triangles clipped by the near plane and the sides, depth bias, and polygon mode point, "
+          "which the stipple leaves alone.", draws)
+
+
+stipple_polygon_scene("line_stipple_polygon_modes.json", "rectangular", "rectangular")
+stipple_polygon_scene("line_stipple_polygon_modes_bresenham.json", "bresenham", "Bresenham")
 
 # ---- 5. adjacency topologies ----
 def adjacent_list(x, y, n, z):

@@ -5,14 +5,18 @@
 // centre (the colour of a kept front-facing pixel is round(255 * (x + 0.5) / 128)), a discarded
 // pixel keeps the stencil and depth under it, a kept one is written, and the draw behind shows
 // through the holes; gl_FragDepth lands in the depth buffer clamped to [0, 1], or with depth
-// clamp to the viewport's range, over D16, D24, D32 and 4x MSAA.
+// clamp to the viewport's range, over D16, D24, D32 and 4x MSAA; the lines and points of unfilled
+// polygons take their polygon's facing when the shader reads gl_FrontFacing; gl_SampleMask keeps
+// the samples its bits name and gl_SampleMaskIn holds the covered ones.
 #include "agreement.hpp"
 
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <cstdint>
+#include <map>
 #include <string>
+#include <vector>
 
 namespace {
 
@@ -96,18 +100,100 @@ TEST(Varyings64, SixtyFourComponentsAgree) {
   }
 }
 
-// What softraster does not draw yet is one error naming the draw, not a silent difference:
-// lavapipe gives the lines and points of an unfilled polygon the polygon's gl_FrontFacing when
-// the shader reads it (draw_pipe_unfilled.c), softraster's unfilled stage does not carry it.
-TEST(FragmentBuiltins, PolygonModeLineIsRefused) {
-  auto scene = crosscheck::loadScene(agreement::kScenes / "builtins_discard.json", {"draws.1.polygon_mode=line"});
-  ASSERT_TRUE(scene) << scene.error();
-  auto frame = crosscheck::renderSoftraster(*scene, {});
-  ASSERT_FALSE(frame);
-  EXPECT_NE(frame.error().find("polygon modes line and point with the fragment built-ins"), std::string::npos)
-      << frame.error();
-  EXPECT_NE(frame.error().find("front, ccw, stencil written"), std::string::npos) << frame.error();
-  EXPECT_EQ(frame.error().find('\n'), std::string::npos) << frame.error();
+// Unfilled polygons with a shader that reads gl_FrontFacing (builtins_polygon_modes): lavapipe's
+// unfilled stage gives their lines and points the polygon's facing, which picks the stencil state
+// too (front writes 128 or 3, back 55 or 56); the vertex_color polygon keeps the front state (66,
+// never its back state's 77), and the discard pattern holds on lines and points as on triangles.
+// Following the spec (Deviations::Spec) changes only that polygon: its back-facing lines write 77.
+TEST(FragmentBuiltins, UnfilledPolygonsTakeTheirFacingWhenTheShaderReadsIt) {
+  for (const std::string name : {"builtins_polygon_modes", "builtins_polygon_modes_msaa"}) {
+    const crosscheck::Frame f = renderAgreeing(name, {});
+    ASSERT_FALSE(f.rgba.empty()) << name;
+    const std::vector<std::uint8_t>& stencil = f.samples == 1 ? f.stencil : f.sampleStencil;
+    ASSERT_EQ(stencil.size(), std::size_t{f.width} * f.height * f.samples) << name;
+    std::map<int, std::size_t> written;
+    for (std::size_t i = 0; i < stencil.size(); ++i) {
+      const std::size_t pixel = i / f.samples;
+      const auto x = static_cast<std::uint32_t>(pixel % f.width), y = static_cast<std::uint32_t>(pixel / f.width);
+      const int value = stencil[i];
+      ++written[value];
+      if (value == 128 || value == 55 || value == 3) {
+        EXPECT_FALSE(discardedBy(x, y)) << name << ": a discarded fragment wrote stencil " << value << " at " << x
+                                        << ", " << y;
+      }
+    }
+    EXPECT_GT(written[128], 50u) << name << ": the front-facing polygon's lines";
+    EXPECT_GT(written[55], 80u) << name << ": the back-facing polygons' lines and points take the back state";
+    EXPECT_GT(written[3], 0u) << name << ": clockwise points with front_face clockwise are front-facing";
+    EXPECT_EQ(written[56], 0u) << name << ": the clockwise front polygon used its back state";
+    EXPECT_GT(written[66], 80u) << name << ": vertex_color's back-facing lines take the front state";
+    EXPECT_EQ(written[77], 0u) << name << ": vertex_color's lines took the back state";
+    // gl_FrontFacing false on the back-facing lines: coloured by their vertex colour (0.9, 0.6, 0.1).
+    std::size_t vertexColoured = 0;
+    for (std::size_t i = 0; i + 3 < f.rgba.size(); i += 4) vertexColoured += f.rgba[i] == 230 && f.rgba[i + 1] == 153;
+    EXPECT_GT(vertexColoured, 30u) << name;
+
+    const std::vector<crosscheck::Frame> specFrames = agreement::renderInSpecMode(name);
+    ASSERT_EQ(specFrames.size(), 2u) << name;
+    for (const crosscheck::Frame& spec : specFrames) {
+      const std::vector<std::uint8_t>& specStencil = spec.samples == 1 ? spec.stencil : spec.sampleStencil;
+      ASSERT_EQ(specStencil.size(), stencil.size()) << name;
+      std::size_t changed = 0;
+      for (std::size_t i = 0; i < stencil.size(); ++i) {
+        if (specStencil[i] == stencil[i]) continue;
+        ++changed;
+        EXPECT_EQ(stencil[i], 66) << name << " sample " << i;
+        EXPECT_EQ(specStencil[i], 77) << name << " sample " << i;
+      }
+      EXPECT_EQ(changed, written[66]) << name << ": following the spec, all of vertex_color's lines face back";
+    }
+  }
+}
+
+// gl_SampleMask and gl_SampleMaskIn (builtins_sample_mask): the shader keeps the samples of
+// mask (x + 3y) & 15 and colours red gl_SampleMaskIn / 16. Inside the first triangle (stencil
+// incremented from the background's 2 to 3 where a sample is kept) and the one drawn with the
+// sample mask state 0xb, each sample s is kept iff bit s of the mask (and of 0xb) is set: with
+// one sample bit 0 decides for the pixel; with 4x MSAA shaded once per pixel the red is the
+// covered samples (15, or 0xb = 11) over 16; with sample shading each invocation sees its own bit.
+TEST(FragmentBuiltins, SampleMaskKeepsTheSamplesItsBitsName) {
+  struct Region {
+    std::uint32_t x0, x1, y0, y1;
+    unsigned stateMask;
+  };
+  const Region regions[] = {{25, 45, 25, 45, 0xfu}, {65, 80, 145, 158, 0xbu}};
+  for (const std::string name : {"builtins_sample_mask", "builtins_sample_mask_msaa", "builtins_sample_mask_sample_shading"}) {
+    SCOPED_TRACE(name);
+    const crosscheck::Frame f = renderAgreeing(name, {});
+    ASSERT_FALSE(f.rgba.empty());
+    const bool perSample = name == "builtins_sample_mask_sample_shading";
+    const std::vector<std::uint8_t>& stencil = f.samples == 1 ? f.stencil : f.sampleStencil;
+    const std::vector<std::uint8_t>& rgba = f.samples == 1 ? f.rgba : f.sampleRgba;
+    std::size_t kept = 0, dropped = 0;
+    for (const Region& r : regions) {
+      for (std::uint32_t y = r.y0; y < r.y1; ++y) {
+        for (std::uint32_t x = r.x0; x < r.x1; ++x) {
+          const unsigned mask = (x + 3 * y) & 15u & (f.samples == 1 ? 1u : r.stateMask);
+          for (std::uint32_t s = 0; s < f.samples; ++s) {
+            const std::size_t i = (static_cast<std::size_t>(y) * f.width + x) * f.samples + s;
+            const bool keep = (mask >> s) & 1u;
+            EXPECT_EQ(int{stencil.at(i)}, keep ? 3 : 2) << x << ", " << y << " sample " << s;
+            if (!keep) {
+              ++dropped;
+              continue;
+            }
+            ++kept;
+            const unsigned maskIn = f.samples == 1 ? 1u : perSample ? 1u << s : r.stateMask;
+            if (maskIn == 8u) continue;  // 127.5: the rounding of a tie is not what this checks
+            EXPECT_EQ(int{rgba.at(4 * i)}, static_cast<int>(std::nearbyint(255.0 * maskIn / 16.0)))
+                << x << ", " << y << " sample " << s;
+          }
+        }
+      }
+    }
+    EXPECT_GT(kept, 100u);
+    EXPECT_GT(dropped, 100u);
+  }
 }
 
 // Sample shading (4x MSAA, minSampleShading 1): the shader runs once per covered sample with

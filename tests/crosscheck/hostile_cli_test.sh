@@ -93,12 +93,12 @@ case $case_name in
     expect_status 0
     ;;
   renderer_errors_name_the_file)
-    # A state the loader accepts but softraster cannot draw yet (a sample mask on Bresenham
-    # lines with 4x MSAA): the renderer's error comes with the scene file in front.
-    run render scenes/lines.json --renderer soft -o "$artifacts/x.png" --set framebuffer.samples=4 \
-      --set draws.0.line_rasterization=bresenham --set 'draws.0.multisample={"sample_mask": 7}'
+    # A state the loader accepts but softraster cannot draw yet (alpha to coverage with sample
+    # shading and the fragment built-ins): the renderer's error comes with the scene file in front.
+    run render scenes/builtins_discard_msaa.json --renderer soft -o "$artifacts/x.png" \
+      --set 'draws.1.multisample={"alpha_to_coverage": true, "min_sample_shading": 1}'
     expect_status 2
-    expect_error '^crosscheck: scenes/lines.json: .*4x MSAA'
+    expect_error '^crosscheck: scenes/builtins_discard_msaa.json: .*alpha to coverage with sample shading'
     ;;
   vocabulary)
     # -o/--output on every subcommand that writes (--out and bench's --json still work); render

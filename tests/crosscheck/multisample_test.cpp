@@ -5,7 +5,8 @@
 // a sample the mask drops keeps the background and its stencil 0; alpha to coverage keeps sample s
 // where alpha > s / 4 with 4x MSAA and a fragment where alpha > 0.5 with one sample; alpha to one
 // writes alpha 255; the single-sample mask deviation, in driver and spec mode; and 4x MSAA lines
-// as lavapipe bins them (and as the spec draws them).
+// as lavapipe bins them (and as the spec draws them); Bresenham lines, drawn by lavapipe with
+// multisampling off, whole whatever the sample mask.
 #include "agreement.hpp"
 
 #include <gtest/gtest.h>
@@ -270,5 +271,57 @@ TEST(Multisample, LinesAsLavapipeBinsThem) {
                    driver.sampleRgba[i + 2] != spec.sampleRgba[i + 2];
     }
     EXPECT_GT(differing, 500u);  // the half-pixel shift of every line's colours, the lost samples, the stencil
+  }
+}
+
+// msaa_bresenham_sample_state: 4x MSAA Bresenham lines, which lavapipe draws with multisampling
+// off. Checked against the same scene with those lines' sample mask 0 (nothing drawn: the
+// background): in driver mode a line writes all four samples of a pixel alike whatever the mask
+// (0x5, 0x10, 0x6, 0x8 blended); in spec mode the mask applies per sample (0x10: nothing; 0x5:
+// samples 1 and 3 stay background).
+TEST(Multisample, BresenhamLinesIgnoreTheSampleMaskAsLavapipeDoes) {
+  const std::string name = "msaa_bresenham_sample_state";
+  const crosscheck::Frame driver = renderAgreeing(name, {});
+  std::vector<std::string> none;
+  for (int d = 1; d <= 6; ++d) none.push_back("draws." + std::to_string(d) + ".multisample={\"sample_mask\":0}");
+  const crosscheck::Frame background = renderAgreeing(name, none);
+  ASSERT_EQ(driver.samples, 4u);
+  ASSERT_EQ(background.sampleRgba.size(), driver.sampleRgba.size());
+  const auto drawn = [&](const crosscheck::Frame& f, std::uint32_t x, std::uint32_t y, std::uint32_t s) {
+    return !sameRgb(sampleColour(f, x, y, s), sampleColour(background, x, y, s));
+  };
+  // Rows y0 - 2 .. y0 + 8 of a line row starting at y0, columns 0..109 (the polygon-mode draw lies right of them).
+  const auto band = [&](std::uint32_t y0, auto&& visit) {
+    for (std::uint32_t y = y0 - 2; y <= y0 + 8; ++y) {
+      for (std::uint32_t x = 0; x < 110; ++x) visit(x, y);
+    }
+  };
+  for (const std::uint32_t y0 : {6u, 18u, 30u, 42u}) {
+    std::size_t pixels = 0;
+    band(y0, [&](std::uint32_t x, std::uint32_t y) {
+      const bool any = drawn(driver, x, y, 0) || drawn(driver, x, y, 1) || drawn(driver, x, y, 2) || drawn(driver, x, y, 3);
+      if (!any) return;
+      ++pixels;
+      for (std::uint32_t s = 1; s < 4; ++s) {
+        // (Blended lines keep differences the background's samples had: its diagonal edge.)
+        if (sampleColour(background, x, y, s) != sampleColour(background, x, y, 0)) continue;
+        EXPECT_EQ(sampleColour(driver, x, y, s), sampleColour(driver, x, y, 0)) << x << ", " << y << " sample " << s;
+      }
+    });
+    EXPECT_GT(pixels, 150u) << "row " << y0;
+  }
+  const std::vector<crosscheck::Frame> specFrames = agreement::renderInSpecMode(name);
+  ASSERT_EQ(specFrames.size(), 2u);
+  for (const crosscheck::Frame& spec : specFrames) {
+    std::size_t masked = 0, kept = 0;
+    band(18, [&](std::uint32_t x, std::uint32_t y) {
+      for (std::uint32_t s = 0; s < 4; ++s) masked += drawn(spec, x, y, s);
+    });
+    band(6, [&](std::uint32_t x, std::uint32_t y) {
+      for (const std::uint32_t s : {1u, 3u}) masked += drawn(spec, x, y, s);
+      kept += drawn(spec, x, y, 0);
+    });
+    EXPECT_EQ(masked, 0u) << "spec: the mask drops those samples";
+    EXPECT_GT(kept, 150u);
   }
 }

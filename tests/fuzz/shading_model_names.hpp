@@ -40,6 +40,7 @@ inline constexpr ShadingModelName kShadingModelNames[] = {
     {"builtins_discard", 0},
     {"builtins_frag_depth", 0},
     {"builtins_sample", 0},
+    {"builtins_sample_mask", 0},
     {"varyings_64", 0},
 };
 

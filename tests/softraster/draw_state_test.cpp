@@ -108,7 +108,8 @@ TEST(DrawState, ScissorAtTheEdgeOfInt32) {
 
 // Issue 13's primitive state: a negative viewport height flips y (the triangle drawn in the lower
 // half lands in the upper half), primitive restart skips its index in the bounds check and is
-// refused for list topologies, the stipple factor's range and the unknown enumerators.
+// refused for list topologies, the stipple factor's range (and stippled polygon modes drawn) and the
+// unknown enumerators.
 TEST(DrawState, NegativeViewportHeightFlipsY) {
   const auto whiteRows = [](const softraster::PipelineState& state) {
     softraster::Framebuffer framebuffer = softraster::Framebuffer::create(16, 16).value();
@@ -164,9 +165,23 @@ TEST(DrawState, LineStippleAndTopologyRefusals) {
   int white = 0;
   ASSERT_TRUE(drawWith(state, &white).ok());
   EXPECT_GT(white, 0) << "bit 0 of the pattern is on for the first 256 steps";
+  // Polygon mode line is stippled too (Mesa's stipple stage follows the unfilled stage): runs of
+  // 2 steps on, 2 off keep some of the outline's pixels; point mode ignores the stipple.
   state.topology = softraster::Topology::TriangleList;
+  state.rasterization.lineStipple = {true, 0x3333, 1};
+  int outline = 0, stippled = 0, points = 0, stippledPoints = 0;
   state.rasterization.polygonMode = softraster::PolygonMode::Line;
-  expectRefused(state, "stippled lines with polygon mode line or point");
+  ASSERT_TRUE(drawWith(state, &stippled).ok());
+  state.rasterization.lineStipple.enable = false;
+  ASSERT_TRUE(drawWith(state, &outline).ok());
+  EXPECT_GT(stippled, outline / 4);
+  EXPECT_LT(stippled, outline * 3 / 4);
+  state.rasterization.polygonMode = softraster::PolygonMode::Point;
+  ASSERT_TRUE(drawWith(state, &points).ok());
+  state.rasterization.lineStipple.enable = true;
+  ASSERT_TRUE(drawWith(state, &stippledPoints).ok());
+  EXPECT_GT(points, 0);
+  EXPECT_EQ(stippledPoints, points);
   softraster::PipelineState unknown;
   unknown.topology = static_cast<softraster::Topology>(10);  // VK_PRIMITIVE_TOPOLOGY_PATCH_LIST
   expectRefused(unknown, "unknown topology");
@@ -208,9 +223,9 @@ TEST(DrawState, SampleMaskAndSampleShadingRules) {
   expectRefused(state, "minSampleShading must be in [0, 1]");
 }
 
-// 4x MSAA lines are drawn (rectangular, Bresenham, polygon mode line); what is refused is a
-// sample mask on Bresenham lines, which lavapipe draws with multisampling off (so it applies
-// none), and the course's 1/z buffer with 4 samples.
+// 4x MSAA lines are drawn (rectangular, Bresenham, polygon mode line); a sample mask leaves
+// Bresenham lines whole (lavapipe draws them with multisampling off, so only a mask of 0 drops
+// them) and narrows rectangular ones; the course's 1/z buffer with 4 samples is refused.
 TEST(DrawState, MsaaLineRules) {
   const auto drawMsaa = [](softraster::PipelineState state, softraster::DepthMode depthMode = softraster::DepthMode::Vulkan) {
     softraster::Framebuffer framebuffer =
@@ -239,14 +254,21 @@ TEST(DrawState, MsaaLineRules) {
     EXPECT_TRUE(drawMsaa(polygonMode).first.ok());
   }
   softraster::PipelineState masked = lines(1.0f);
-  masked.multisample.sampleMask = 0x7;
-  EXPECT_TRUE(drawMsaa(masked).first.ok());  // rectangular lines are multisampled: the mask applies
   masked.rasterization.lineRasterization = softraster::LineRasterization::Bresenham;
-  const softraster::Status refused = drawMsaa(masked).first;
-  ASSERT_FALSE(refused.ok());
-  EXPECT_NE(refused.message().find("a sample mask on Bresenham lines with 4x MSAA"), std::string::npos) << refused.message();
-  masked.multisample.sampleMask = 0xFFFFFFF0u | 0xFu;  // every sample kept: drawn
-  EXPECT_TRUE(drawMsaa(masked).first.ok());
+  const std::size_t unmasked = drawMsaa(masked).second;
+  ASSERT_GT(unmasked, 0u);
+  masked.multisample.sampleMask = 0x1;  // lavapipe draws Bresenham lines with multisampling off: no mask applies
+  EXPECT_EQ(drawMsaa(masked).second, unmasked);
+  masked.multisample.sampleMask = 0x10;  // no sample of the four, yet not 0: still drawn whole
+  EXPECT_EQ(drawMsaa(masked).second, unmasked);
+  masked.multisample.sampleMask = 0;  // a mask of 0 discards the draw
+  EXPECT_EQ(drawMsaa(masked).second, 0u);
+  masked.multisample.sampleMask = 0x7;
+  masked.rasterization.lineRasterization = softraster::LineRasterization::Rectangular;
+  const auto [rectangularStatus, rectangularMasked] = drawMsaa(masked);  // multisampled: the mask applies
+  EXPECT_TRUE(rectangularStatus.ok());
+  masked.multisample.sampleMask = 0xf;
+  EXPECT_LT(rectangularMasked, drawMsaa(masked).second);
   const softraster::Status inverseZ = drawMsaa(lines(1.0f), softraster::DepthMode::InverseZ).first;
   ASSERT_FALSE(inverseZ.ok());
   EXPECT_NE(inverseZ.message().find("the 1/z depth buffer takes one sample per pixel"), std::string::npos)

@@ -140,9 +140,6 @@ class Context {
       return Status::error("line stipple factor " + std::to_string(rs.lineStipple.factor) +
                            " is outside [1, 256] (VUID-VkGraphicsPipelineCreateInfo-stippledLineEnable-02767)");
     }
-    if (rs.lineStipple.enable && rs.polygonMode != PolygonMode::Fill && detail::isTriangleTopology(state.topology)) {
-      return Status::error("stippled lines with polygon mode line or point are not supported by softraster yet");
-    }
     if (!isCourseMethod(options_.method) && options_.method != Method::Exact && options_.method != Method::ExactScalar) {
       return Status::error("unknown method");
     }
@@ -156,11 +153,6 @@ class Context {
     if (framebuffer.samples() == 4) {
       if (options_.depthMode != DepthMode::Vulkan) {
         return Status::error("the 1/z depth buffer takes one sample per pixel (no 4x MSAA)");
-      }
-      const bool bresenhamLines = detail::isLineTopology(state.topology) && rs.lineRasterization == LineRasterization::Bresenham;
-      if (bresenhamLines && (state.multisample.sampleMask & 0xfu) != 0xfu) {
-        return Status::error("a sample mask on Bresenham lines with 4x MSAA is not supported by softraster yet (lavapipe "
-                             "draws them with multisampling off)");
       }
     }
     if (!(rs.lineWidth >= DeviceLimits::kMinLineWidth && rs.lineWidth <= DeviceLimits::kMaxLineWidth)) {
@@ -235,14 +227,16 @@ class Context {
                              "softraster yet (lavapipe's per-sample invocations narrow one another's coverage)");
       }
     }
-    if (detail::sampleCoverage(state.multisample, framebuffer.samples(), options_.deviations).sampleMask == 0) {
-      return {};  // no sample kept: nothing to draw (lavapipe discards the rasterization)
+    // No sample kept: nothing to draw (lavapipe discards the rasterization). Its 4x MSAA Bresenham
+    // lines are drawn with multisampling off, where only a mask of 0 discards them.
+    const bool broadcastLines = framebuffer.samples() == 4 && options_.deviations == Deviations::Driver &&
+                                detail::isLineTopology(state.topology) &&
+                                state.rasterization.lineRasterization == LineRasterization::Bresenham;
+    if (broadcastLines ? state.multisample.sampleMask == 0
+                       : detail::sampleCoverage(state.multisample, framebuffer.samples(), options_.deviations).sampleMask == 0) {
+      return {};
     }
     if constexpr (UsesFragmentBuiltins<Shader>) {
-      if (state.rasterization.polygonMode != PolygonMode::Fill && detail::isTriangleTopology(state.topology)) {
-        return Status::error("polygon modes line and point with the fragment built-ins are not supported by softraster "
-                             "yet (lavapipe gives their lines and points the polygon's gl_FrontFacing)");
-      }
       if (WritesFragDepth<Shader> && options_.depthMode != DepthMode::Vulkan) {
         return Status::error("gl_FragDepth needs the Vulkan depth mode, not the 1/z depth buffer");
       }

@@ -108,6 +108,19 @@ template <class S>
 concept WritesFragDepth = UsesFragmentBuiltins<S> && requires {
   { S::kWritesFragDepth } -> std::convertible_to<bool>;
 } && S::kWritesFragDepth;
+// A shader with the built-ins that writes gl_SampleMask (fragment_builtins.hpp).
+template <class S>
+concept WritesSampleMask = UsesFragmentBuiltins<S> && requires {
+  { S::kWritesSampleMask } -> std::convertible_to<bool>;
+} && S::kWritesSampleMask;
+// A shader with the built-ins whose fragment function reads gl_FrontFacing declares
+// `static constexpr bool kReadsFrontFacing = true`: the lines and points of its unfilled
+// polygons (polygon modes line and point) then take the polygon's facing, for gl_FrontFacing and
+// for the stencil state, as lavapipe's unfilled stage gives it only to a shader that reads it.
+template <class S>
+concept ReadsFrontFacing = UsesFragmentBuiltins<S> && requires {
+  { S::kReadsFrontFacing } -> std::convertible_to<bool>;
+} && S::kReadsFrontFacing;
 // A shader with the built-ins whose fragment function reads gl_SampleID or gl_SamplePosition
 // declares `static constexpr bool kShadesPerSample = true`: with 4x MSAA it runs once per
 // covered sample (GLSL: reading gl_SampleID turns sample shading on at the full rate).

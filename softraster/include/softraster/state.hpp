@@ -115,7 +115,9 @@ struct StencilOpState {
 // The stencil test needs a framebuffer with a stencil aspect (formats.hpp); without one it is
 // skipped, as Vulkan skips it without a stencil attachment. `front` applies to fragments of
 // front-facing triangles, `back` to those of back-facing ones; lines and points use `front`, and
-// so do the lines and points of polygon modes line and point (lavapipe: docs/lavapipe-rules.md).
+// so do the lines and points of polygon modes line and point, unless the shader reads
+// gl_FrontFacing (kReadsFrontFacing, shader.hpp): then they take the polygon's facing (lavapipe:
+// docs/lavapipe-rules.md).
 struct DepthState {
   bool testEnable = true;
   bool writeEnable = true;

@@ -127,6 +127,9 @@ class ExactDraw {
     // The stencil face of the lines and points being drawn: front, but for an unfilled
     // back-facing polygon's in Deviations::Spec (lavapipe gives them the front face).
     bool facingFront = true;
+    // The stipple counter of stippled polygon-mode lines: Mesa's stipple stage keeps one for the
+    // whole draw, reset by each triangle that reaches the unfilled stage with its reset flag.
+    std::uint32_t stippleCounter = 0;
   };
 
   // Primitives per round of the parallel front end (the top comment), and the fewest a draw
@@ -143,7 +146,7 @@ class ExactDraw {
   void forEachRange(std::size_t count, std::size_t align, bool oneRange, Range&& range) {
     ThreadPool* pool = fragments_.pool();
     if (pool == nullptr || count < kParallelPrimitives || oneRange) {
-      Worker worker{fragments_.recorder(0), {}, true};
+      Worker worker{fragments_.recorder(0), {}, true, 0};
       range(worker, 0, count);
       return;
     }
@@ -154,7 +157,7 @@ class ExactDraw {
       const std::size_t per = ((end - start + workers - 1) / workers + align - 1) / align * align;
       pool->run(workers, [&](std::size_t k) {
         const std::size_t begin = std::min(end, start + k * per);
-        Worker worker{fragments_.recorder(static_cast<unsigned>(k)), {}, true};
+        Worker worker{fragments_.recorder(static_cast<unsigned>(k)), {}, true, 0};
         range(worker, begin, std::min(end, begin + per));
       });
       fragments_.endRound();
@@ -251,7 +254,10 @@ class ExactDraw {
     if (!winding_.drawClockwise && !winding_.drawCounterClockwise) return;
     assembleTriangles(state_.topology, indices, triangles_, provokingLast_);
     const std::size_t batchSize = trianglesPerBatch(state_.topology);
-    forEachRange(triangles_.size(), batchSize, false, [&](Worker& worker, std::size_t begin, std::size_t end) {
+    // Stippled polygon-mode lines: the stipple counter may run on from one triangle to the next
+    // (drawCulled), so the draw is one range.
+    const bool oneRange = rs_.lineStipple.enable && rs_.polygonMode == PolygonMode::Line;
+    forEachRange(triangles_.size(), batchSize, oneRange, [&](Worker& worker, std::size_t begin, std::size_t end) {
       runRange<&ExactDraw::drawTriangleRange>(worker, indices, begin, end);
     });
   }
@@ -296,7 +302,7 @@ class ExactDraw {
   void drawThroughPipeline(Worker& worker, const Vertex& v0, const Vertex& v1, const Vertex& v2) {
     const std::uint32_t outside = v0.clipMask | v1.clipMask | v2.clipMask;
     if (outside == 0) {
-      if (survivesPipelineCull(v0.window, v1.window, v2.window, rs_)) drawCulled(worker, v0, v1, v2, 7u);
+      if (survivesPipelineCull(v0.window, v1.window, v2.window, rs_)) drawCulled(worker, v0, v1, v2, 7u, true);
       return;
     }
     if ((v0.clipMask & v1.clipMask & v2.clipMask) != 0) return;  // entirely outside one plane
@@ -313,23 +319,39 @@ class ExactDraw {
       const Vertex& b = provokingLast_ ? p2 : p1;
       const Vertex& c = provokingLast_ ? p0 : p2;
       if (survivesPipelineCull(a.window, b.window, c.window, rs_)) {
-        drawCulled(worker, a, b, c, fanTriangleEdgeFlags(polygon, i, provokingLast_));
+        drawCulled(worker, a, b, c, fanTriangleEdgeFlags(polygon, i, provokingLast_), i == 2);
       }
     }
   }
 
   // A triangle past the draw pipeline's cull: filled, or as lines or points (depth-biased first).
-  void drawCulled(Worker& worker, const Vertex& a, const Vertex& b, const Vertex& c, unsigned edgeFlags) {
+  // resetStipple: the triangle carries Mesa's DRAW_PIPE_RESET_STIPPLE, as every unclipped
+  // triangle does and, of a clipped one, the first of its fan (draw_pipe_clip.c emit_poly): its
+  // lines start the stipple counter at 0; the fan's later triangles continue it.
+  void drawCulled(Worker& worker, const Vertex& a, const Vertex& b, const Vertex& c, unsigned edgeFlags,
+                  bool resetStipple) {
     if (rs_.polygonMode == PolygonMode::Fill) {
       drawTriangle(worker, a, b, c);
       return;
     }
     Vertex biased[3] = {a, b, c};
     if (rs_.depthBias.enable) offsetUnfilledTriangle(biased[0], biased[1], biased[2], rs_.depthBias, Format);
-    worker.facingFront = !specDeviations_ || facesFrontInPipeline(a.window, b.window, c.window, rs_.frontFace);
+    // lavapipe's unfilled stage passes the polygon's facing on only to a shader that reads
+    // gl_FrontFacing; its lines and points are otherwise front-facing (stencil state included).
+    worker.facingFront = !(specDeviations_ || ReadsFrontFacing<Shader>) ||
+                         facesFrontInPipeline(a.window, b.window, c.window, rs_.frontFace);
+    if (resetStipple) worker.stippleCounter = 0;
     drawUnfilledTriangle(
         rs_.polygonMode, biased[0], biased[1], biased[2], edgeFlags, kInterpolation,
-        [&](const Vertex& p, const Vertex& q) { drawLine(worker, p, q); },
+        [&](const Vertex& p, const Vertex& q) {
+          if (!rs_.lineStipple.enable) {
+            drawLine(worker, p, q);
+            return;
+          }
+          // The unfilled stage has flat-shaded the triangle already; the stipple stage follows it.
+          stippleLine(p, q, rs_.lineStipple, rs_.lineRasterization != LineRasterization::Bresenham,
+                      worker.stippleCounter, [&](const Vertex& s, const Vertex& e) { drawLine(worker, s, e); });
+        },
         [&](const Vertex& p) { drawPoint(worker, p); }, provokingLast_);
     worker.facingFront = true;
   }

@@ -477,7 +477,7 @@ class FastFragmentStage {
     const bool shadedFirst = kBuiltins || target_.coverage.shadesFirst();
     if (shadedFirst) {  // at the pixel centres; a discard drops every sample of its pixel, alpha to coverage some
       const Floats cx = (x0 + kLaneX) + broadcast(0.5f), cy = (y0 + kLaneY) + broadcast(0.5f);
-      std::uint32_t kept = ~0u;
+      std::uint32_t kept = covered;  // gl_SampleMaskIn: each lane's covered samples
       shaded = reinterpret_cast<__m256i>(shadeFirst<4>(t, x0 + kLaneX, y0 + kLaneY, cx, cy, kept, fragDepth));
       covered &= kept;
       if (covered == 0) return;
@@ -565,9 +565,10 @@ class FastFragmentStage {
 
   // The lanes shaded before the tests (a shader with the fragment built-ins, or alpha to
   // coverage): their packed colour, their gl_FragDepth in `fragDepth`, and `kept` narrowed to what
-  // survives: with Samples 1 bit per lane (the lanes not discarded, whose alpha covers them),
-  // with 4 bit 4 * lane + s (every sample of a discarded lane dropped; alpha to coverage per
-  // sample). (px, py): the lanes' pixel coordinates; (sx, sy): where the planes are evaluated
+  // survives: with Samples 1 bit per lane (the lanes not discarded, whose alpha covers them and
+  // whose gl_SampleMask has bit 0), with 4 bit 4 * lane + s (every sample of a discarded lane
+  // dropped; alpha to coverage and gl_SampleMask per sample); with 4 `kept` comes in as the
+  // lanes' covered samples, their gl_SampleMaskIn (1 with one sample). (px, py): the lanes' pixel coordinates; (sx, sy): where the planes are evaluated
   // (the same, or the MSAA pixel centres).
   template <int Samples>
   [[SOFTRASTER_FAST_TARGET]] Words shadeFirst(const BlockPlanes& t, Floats px, Floats py, Floats sx, Floats sy,
@@ -581,9 +582,25 @@ class FastFragmentStage {
                             FloatBatch(evaluatePlane(t.depth, sx, sy) + t.depthOffset),
                             FloatBatch(evaluatePlane(t.oneOverW, sx, sy))};
       builtins.frontFacing = t.frontFacing;
+      if constexpr (Samples == 4) {
+        static constexpr IntBatch::Native kNibble = {0, 4, 8, 12, 16, 20, 24, 28};
+        builtins.sampleMaskIn = IntBatch((IntBatch::Native{} + static_cast<std::int32_t>(kept)) >> kNibble & 0xf);
+      }
       c = Shader::template fragment<FloatBatch>(uniforms_, varyings.data(), builtins);
       const unsigned survivors = ~maskBits(builtins.discard.native()) & 0xffu;
       kept &= Samples == 4 ? kSpreadToSamples[survivors] : survivors;
+      if constexpr (kWritesSampleMask) {
+        const IntBatch::Native out = builtins.sampleMask.native();
+        if constexpr (Samples == 4) {
+          std::uint32_t samples = 0;
+          for (int lane = 0; lane < kBatchLanes; ++lane) {
+            samples |= (static_cast<std::uint32_t>(out[lane]) & 0xfu) << (4 * lane);
+          }
+          kept &= samples;
+        } else {
+          kept &= maskBits((out & 1) != 0);
+        }
+      }
       fragDepth = builtins.fragDepth.native();
     } else {
       c = Shader::template fragment<FloatBatch>(uniforms_, varyings.data());
@@ -611,6 +628,7 @@ class FastFragmentStage {
 
   static constexpr bool kBuiltins = UsesFragmentBuiltins<Shader>;
   static constexpr bool kWritesDepth = WritesFragDepth<Shader>;
+  static constexpr bool kWritesSampleMask = WritesSampleMask<Shader>;
 
   FragmentStage<Shader, true, Format> scalar_;
   const typename Shader::Uniforms& uniforms_;

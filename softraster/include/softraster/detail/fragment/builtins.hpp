@@ -8,7 +8,8 @@
 // (px + 0.5, py + 0.5) for the 4x MSAA ones (shaded once at the centre, min_samples == 1).
 // gl_FrontFacing: the primitive's facing as the draw loop set it (the stencil's face).
 // Deliberately absent: the depth test and the writes (fragment/shade.hpp decides what a
-// discarded fragment leaves alone), per-sample built-ins.
+// discarded fragment leaves alone), per-sample built-ins and gl_SampleMaskIn (the caller's, who
+// knows the coverage).
 #pragma once
 
 #include <softraster/detail/exact/interpolation.hpp>

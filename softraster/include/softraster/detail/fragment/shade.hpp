@@ -13,14 +13,17 @@
 //   - 4x MSAA Bresenham lines (line topologies; shadeBroadcast): lavapipe turns multisampling off
 //     for them, so coverage, depth and the shader are the single-sample ones, depth and stencil
 //     are tested and written at sample 0 only, and the colour goes to all four samples, the draw
-//     region cut exactly (single-sample scissor planes); with
-//     Deviations::Spec every sample is covered and tested with the centre's depth;
+//     region cut exactly (single-sample scissor planes); the sample mask does not apply, alpha to
+//     coverage keeps or drops the whole fragment by the single-sample rule; with
+//     Deviations::Spec every sample the mask keeps is covered and tested with the centre's depth;
 //   - depth is tested and written only with the depth test on (Vulkan); the course's 1/z buffer
 //     (DepthMode::InverseZ) compares the other way round, larger being nearer.
 //   - a shader with the fragment built-ins (shader.hpp) runs before the depth and stencil tests,
 //     and a fragment it discards writes nothing (lavapipe: late tests, or early ones with the
 //     write deferred to the kill mask; the same pixels either way); one that writes
-//     gl_FragDepth has every sample tested and written with that value (clamped, no bias);
+//     gl_FragDepth has every sample tested and written with that value (clamped, no bias); the
+//     samples its gl_SampleMask drops are neither tested nor written (one sample, or lines with
+//     multisampling off: bit 0 for the whole fragment);
 //   - the sample mask narrows the coverage first; with alpha to coverage the fragment is shaded
 //     before the tests, which see only the samples its alpha keeps; alpha to one sets the
 //     alpha to 1 before blending (fragment/coverage.hpp);
@@ -136,8 +139,9 @@ class FragmentStage {
       Vec4 colour{};
       [[maybe_unused]] float fragDepth = 0.0f;
       const bool shadedFirst = kBuiltins || target_.coverage.shadesFirst();
-      if (shadedFirst) {  // a discarded fragment, or one its alpha does not cover, tests and writes nothing
-        if (!shadeFirst(t, px, py, 0.0f, varyings.data(), colour, fragDepth)) return;
+      if (shadedFirst) {  // a discarded fragment, or one its alpha or gl_SampleMask drops, tests and writes nothing
+        unsigned maskOut = ~0u;
+        if (!shadeFirst(t, px, py, 0.0f, varyings.data(), colour, fragDepth, 1u, maskOut) || !(maskOut & 1u)) return;
         if (target_.coverage.alphaToCoverage && !alphaToCoverageSamples<1>(colour.w)) return;
       }
       std::uint32_t stored = 0;
@@ -180,8 +184,10 @@ class FragmentStage {
       Vec4 c{};
       [[maybe_unused]] float fragDepth = 0.0f;
       const bool shadedFirst = kBuiltins || target_.coverage.shadesFirst();
-      if (shadedFirst) {  // a discarded fragment leaves every sample alone; alpha to coverage drops some
-        if (!shadeFirst(t, px, py, 0.5f, varyings.data(), c, fragDepth)) return;
+      if (shadedFirst) {  // a discarded fragment leaves every sample alone; alpha to coverage and gl_SampleMask drop some
+        unsigned maskOut = ~0u;
+        if (!shadeFirst(t, px, py, 0.5f, varyings.data(), c, fragDepth, mask, maskOut)) return;
+        mask &= maskOut;
         if (target_.coverage.alphaToCoverage) mask &= alphaToCoverageSamples<4>(c.w);
         if (mask == 0) return;
       }
@@ -225,7 +231,9 @@ class FragmentStage {
   void shadeBroadcastHere(const EdgeFunction (&edges)[4], const PixelRect& bounds, const TriangleInterpolants<N>& t) const {
     std::array<float, (N == 0 ? 1 : N)> varyings{};
     const bool spec = target_.deviations == Deviations::Spec;
-    const unsigned tested = spec ? 0xfu : 0x1u;  // lavapipe: sample 0's depth and stencil only
+    // lavapipe: sample 0's depth and stencil only, and no sample mask (multisampling is off; a
+    // mask of 0 is dropped before the draw, pipeline.hpp); the spec: every sample the mask keeps.
+    const unsigned tested = spec ? target_.coverage.sampleMask : 0x1u;
     // Not multisampled, so no scissor plane reaches past the draw region (MsaaRegionEdges).
     const PixelRect region = intersect(target_.region, target_.msaa.drawRegion);
     rasterizeEdges(edges, bounds, region, [&](int px, int py) {
@@ -233,17 +241,27 @@ class FragmentStage {
       const std::size_t pixel = static_cast<std::size_t>(py) * target_.width + static_cast<std::size_t>(px);
       Vec4 colour{};
       [[maybe_unused]] float fragDepth = 0.0f;
-      if constexpr (kBuiltins) {
-        if (!shadeWithBuiltins(t, px, py, 0.0f, varyings.data(), colour, fragDepth)) return;
+      unsigned kept = tested;
+      const bool shadedFirst = kBuiltins || target_.coverage.shadesFirst();
+      if (shadedFirst) {  // a discarded fragment, or one its alpha does not cover, tests and writes nothing
+        // Multisampling off (lavapipe): gl_SampleMaskIn is 1 and bit 0 of gl_SampleMask decides.
+        unsigned maskOut = ~0u;
+        if (!shadeFirst(t, px, py, 0.0f, varyings.data(), colour, fragDepth, spec ? tested : 1u, maskOut)) return;
+        kept &= spec ? maskOut : ((maskOut & 1u) ? 0xfu : 0u);
+        if (target_.coverage.alphaToCoverage) {
+          // lavapipe: the single-sample rule (alpha > 0.5) keeps or drops the whole fragment.
+          kept &= spec ? alphaToCoverageSamples<4>(colour.w) : (alphaToCoverageSamples<1>(colour.w) ? 0xfu : 0u);
+        }
+        if (kept == 0) return;
       }
       std::uint32_t stored = 0;
-      unsigned passed = tested;
+      unsigned passed = kept;
       if (target_.depth.testEnable) {
         const float z = kWritesDepth ? fragDepth : interpolateDepth<Fused>(t, fx, fy);
         stored = depthToStorage<Format>(clampDepth(z, target_.depthRange));
         passed = 0;
         for (int s = 0; s < 4; ++s) {
-          if ((tested & (1u << s)) &&
+          if ((kept & (1u << s)) &&
               depthTestPasses<Format>(target_.depth.compareOp, stored, target_.depthStorage[pixel * 4 + static_cast<std::size_t>(s)])) {
             passed |= 1u << s;
           }
@@ -252,13 +270,16 @@ class FragmentStage {
       if (target_.stencil.enable) {
         for (int s = 0; s < 4; ++s) {
           const unsigned bit = 1u << s;
-          if ((tested & bit) && !stencilTestAndUpdate(t.frontFacing, pixel * 4 + static_cast<std::size_t>(s), (passed & bit) != 0)) {
+          if ((kept & bit) && !stencilTestAndUpdate(t.frontFacing, pixel * 4 + static_cast<std::size_t>(s), (passed & bit) != 0)) {
             passed &= ~bit;
           }
         }
       }
       if (passed == 0) return;
-      if constexpr (!kBuiltins) colour = shadeAt(t, px, py, 0.0f, varyings.data());
+      if constexpr (!kBuiltins) {
+        if (!shadedFirst) colour = shadeAt(t, px, py, 0.0f, varyings.data());
+      }
+      if (target_.coverage.alphaToOne) colour.w = 1.0f;
       const unsigned written = spec ? passed : 0xfu;  // lavapipe: sample 0 passing writes every colour sample
       for (int s = 0; s < 4; ++s) {
         const unsigned bit = 1u << s;
@@ -288,8 +309,10 @@ class FragmentStage {
       builtins.discard = false;
       builtins.sampleId = s;
       builtins.samplePosition = {kSamplePositions4x[s][0], kSamplePositions4x[s][1]};
+      builtins.sampleMaskIn = static_cast<std::int32_t>(bit);  // the invocation's own sample
       Vec4 c = shadeFragment<Shader>(uniforms_, varyings, builtins);
       if (builtins.discard) continue;
+      if (kWritesSampleMask && !(static_cast<std::uint32_t>(builtins.sampleMask) & bit)) continue;
       const std::size_t sample = pixel * 4 + static_cast<std::size_t>(s);
       std::uint32_t stored = 0;
       bool passes = true;
@@ -341,12 +364,13 @@ class FragmentStage {
   }
 
   // The fragment shaded before the tests (a shader with the fragment built-ins, or alpha to
-  // coverage): its colour in `colour`, its gl_FragDepth in `fragDepth`, and whether the fragment
-  // survives (was not discarded).
+  // coverage): its colour in `colour`, its gl_FragDepth in `fragDepth`, its gl_SampleMask in
+  // `maskOut` (left alone without the built-ins), and whether the fragment survives (was not
+  // discarded); `maskIn` is its gl_SampleMaskIn.
   bool shadeFirst(const TriangleInterpolants<N>& t, int px, int py, float offset, float* varyings, Vec4& colour,
-                  float& fragDepth) const {
+                  float& fragDepth, unsigned maskIn, unsigned& maskOut) const {
     if constexpr (kBuiltins) {
-      return shadeWithBuiltins(t, px, py, offset, varyings, colour, fragDepth);
+      return shadeWithBuiltins(t, px, py, offset, varyings, colour, fragDepth, maskIn, maskOut);
     } else {
       colour = shadeAt(t, px, py, offset, varyings);
       return true;
@@ -354,19 +378,24 @@ class FragmentStage {
   }
 
   // A shader with the fragment built-ins (fragment/builtins.hpp): its colour in `colour`, its
-  // gl_FragDepth in `fragDepth`, and whether the fragment survives (was not discarded).
+  // gl_FragDepth in `fragDepth`, its gl_SampleMask in `maskOut` (every bit without
+  // kWritesSampleMask), and whether the fragment survives (was not discarded); `maskIn` is its
+  // gl_SampleMaskIn.
   bool shadeWithBuiltins(const TriangleInterpolants<N>& t, int px, int py, float offset, float* varyings,
-                         Vec4& colour, float& fragDepth) const {
+                         Vec4& colour, float& fragDepth, unsigned maskIn, unsigned& maskOut) const {
     interpolateVaryings<Fused>(t, kInterpolation, static_cast<float>(px) + offset, static_cast<float>(py) + offset,
                                varyings);
     FragmentBuiltins<float> builtins = fragmentBuiltinsAt<Fused>(t, px, py, offset);
+    builtins.sampleMaskIn = static_cast<std::int32_t>(maskIn);
     colour = shadeFragment<Shader>(uniforms_, varyings, builtins);
     fragDepth = builtins.fragDepth;
+    maskOut = kWritesSampleMask ? static_cast<std::uint32_t>(builtins.sampleMask) : ~0u;
     return !builtins.discard;
   }
 
   static constexpr bool kBuiltins = UsesFragmentBuiltins<Shader>;
   static constexpr bool kWritesDepth = WritesFragDepth<Shader>;
+  static constexpr bool kWritesSampleMask = WritesSampleMask<Shader>;
   static constexpr bool kPerSampleShader = ShadesPerSample<Shader>;  // reads gl_SampleID: shaded per sample
   static constexpr InterpolationSet<N> kInterpolation = interpolationOf<Shader>();
 

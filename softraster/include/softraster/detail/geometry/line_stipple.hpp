@@ -14,8 +14,11 @@
 //   - The counter restarts at 0 for every line of a line list (with or without adjacency) and at
 //     the first line of each strip (a draw, or a run between primitive restarts); a line that
 //     clipping drops entirely does not advance it (the stage never sees it).
-// Deliberately absent: stippled polygon-mode lines (softraster refuses them), the counter's
-// storage (the caller's, one per run of lines drawn in order), and drawing the segments.
+//   - Polygon mode line: the unfilled stage's lines come in the triangle's edge order, the
+//     counter restarting at each triangle and, of a triangle clipping cut into a fan, at the
+//     fan's first triangle only (the caller, exact/draw.hpp drawCulled, resets it).
+// Deliberately absent: the counter's storage (the caller's, one per run of lines drawn in order)
+// and drawing the segments.
 #pragma once
 
 #include <softraster/detail/geometry/vertex_processing.hpp>
