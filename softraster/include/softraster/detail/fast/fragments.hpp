@@ -568,8 +568,8 @@ class FastFragmentStage {
   // survives: with Samples 1 bit per lane (the lanes not discarded, whose alpha covers them and
   // whose gl_SampleMask has bit 0), with 4 bit 4 * lane + s (every sample of a discarded lane
   // dropped; alpha to coverage and gl_SampleMask per sample); with 4 `kept` comes in as the
-  // lanes' covered samples, their gl_SampleMaskIn (1 with one sample). (px, py): the lanes' pixel coordinates; (sx, sy): where the planes are evaluated
-  // (the same, or the MSAA pixel centres).
+  // lanes' covered samples, their gl_SampleMaskIn (1 with one sample). (px, py): the lanes' pixel
+  // coordinates; (sx, sy): where the planes are evaluated (the same, or the MSAA pixel centres).
   template <int Samples>
   [[SOFTRASTER_FAST_TARGET]] Words shadeFirst(const BlockPlanes& t, Floats px, Floats py, Floats sx, Floats sy,
                                               std::uint32_t& kept, Floats& fragDepth) const {

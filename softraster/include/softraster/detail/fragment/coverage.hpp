@@ -11,8 +11,10 @@
 //     write to the final mask, or tests late when the stencil is written: the same samples);
 //   - alpha to one then replaces the alpha of the colour with 1.0 before blending;
 //   - 4x MSAA Bresenham lines of a line topology are drawn with multisampling off (lvp_execute.c):
-//     no sample mask applies (only a mask of 0 discards the draw), alpha to coverage takes the
-//     single-sample rule for the whole fragment, alpha to one applies (fragment/shade.hpp);
+//     no sample mask applies (only a mask of 0 discards the draw). Vulkan forbids alpha to
+//     coverage, alpha to one and sample shading there (VUID-VkGraphicsPipelineCreateInfo-
+//     lineRasterizationMode-02766, refused by crosscheck's loader); a library caller who sets
+//     them gets lavapipe's multisampling-off rules (fragment/shade.hpp), which are not measured;
 //   - sample shading: lavapipe's min_samples = ceil(samples * minSampleShading); above 1 the
 //     fragment shader runs once for every covered sample (not only min_samples of them). Each
 //     invocation's gl_FragCoord.xy is the sample's position (px + its offset) and .z the depth
@@ -20,8 +22,9 @@
 //     declared `sample` move, and none of ours is); its discard and gl_FragDepth apply to its
 //     sample alone. A shader without the built-ins therefore gives the same bits either way.
 // Deliberately absent: coverage itself (exact/rasterizer.hpp), the built-ins (gl_SampleID,
-// gl_SamplePosition, gl_SampleMask: fragment/shade.hpp), and alpha to coverage together with per-sample built-ins (lavapipe's
-// invocations then narrow one another's masks in sample order; refused, pipeline.hpp).
+// gl_SamplePosition, gl_SampleMask: fragment/shade.hpp), and alpha to coverage together with
+// per-sample built-ins (lavapipe's invocations then narrow one another's masks in sample order;
+// refused, pipeline.hpp).
 #pragma once
 
 #include <softraster/options.hpp>

@@ -13,8 +13,8 @@
 //   - 4x MSAA Bresenham lines (line topologies; shadeBroadcast): lavapipe turns multisampling off
 //     for them, so coverage, depth and the shader are the single-sample ones, depth and stencil
 //     are tested and written at sample 0 only, and the colour goes to all four samples, the draw
-//     region cut exactly (single-sample scissor planes); the sample mask does not apply, alpha to
-//     coverage keeps or drops the whole fragment by the single-sample rule; with
+//     region cut exactly (single-sample scissor planes); the sample mask does not apply (alpha to
+//     coverage, invalid there in Vulkan, keeps or drops the whole fragment: not measured); with
 //     Deviations::Spec every sample the mask keeps is covered and tested with the centre's depth;
 //   - depth is tested and written only with the depth test on (Vulkan); the course's 1/z buffer
 //     (DepthMode::InverseZ) compares the other way round, larger being nearer.
