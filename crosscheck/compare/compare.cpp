@@ -4,51 +4,88 @@
 #include <algorithm>
 #include <bit>
 #include <cmath>
+#include <cstdint>
 #include <cstdlib>
+#include <cstring>
 #include <limits>
+#include <utility>
 
 namespace crosscheck {
 namespace {
 
-std::array<std::uint8_t, 4> clearColourBytes(const Scene& scene) {
-  auto toByte = [](float v) {
-    const float c = v > 0.0f ? (v < 1.0f ? v : 1.0f) : 0.0f;
-    return static_cast<std::uint8_t>(std::nearbyint(c * 255.0f));
-  };
-  return {toByte(scene.clearColour.x), toByte(scene.clearColour.y), toByte(scene.clearColour.z),
-          toByte(scene.clearColour.w)};
-}
-
-// The clear values a pixel is compared with to tell whether anything covered it.
+// The clear values a pixel is compared with to tell whether anything covered it: the colour as
+// the format stores its clear (softraster::colourClearValue), as a Frame holds it (R, G, B, A
+// bytes, or a wider format's texel words).
 struct ClearValues {
   std::array<std::uint8_t, 4> colour;
+  std::array<std::uint32_t, 4> colourWords;
   std::uint32_t depth;
   std::uint8_t stencil;
 };
 
 ClearValues clearValues(const Scene& scene) {
-  return {clearColourBytes(scene), softraster::depthClearValue(scene.depthFormat, scene.clearDepth), scene.clearStencil};
+  ClearValues clear{};
+  clear.colourWords = softraster::colourClearValue(scene.colourFormat, scene.clearColour);
+  std::memcpy(clear.colour.data(), clear.colourWords.data(), 4);
+  if (softraster::swapsRedBlue(scene.colourFormat)) std::swap(clear.colour[0], clear.colour[2]);
+  clear.depth = softraster::depthClearValue(scene.depthFormat, scene.clearDepth);
+  clear.stencil = scene.clearStencil;
+  return clear;
 }
 
 // A frame's samples: with MSAA every sample as stored before the resolve, else the pixels (one
 // sample each). Sample s of pixel i is at i * samples + s.
 struct Samples {
   const std::uint8_t* rgba;
+  const std::uint32_t* words;   // a wider format's stored texels (rgba is their view), else null
+  std::uint32_t texelWords;     // words per texel: 1, 2 (four halves) or 4 (four floats)
   const std::uint32_t* depth;
   const std::uint8_t* stencil;  // null without a stencil aspect
   std::uint32_t samples;
 };
 
-Samples samplesOf(const Frame& f) {
-  if (f.samples > 1)
-    return {f.sampleRgba.data(), f.sampleDepthStorage.data(), f.sampleStencil.empty() ? nullptr : f.sampleStencil.data(),
-            f.samples};
-  return {f.rgba.data(), f.depthStorage.data(), f.stencil.empty() ? nullptr : f.stencil.data(), 1};
+Samples samplesOf(const Frame& f, bool resolved = false) {
+  const std::uint32_t texelWords = softraster::colourBytes(f.colourFormat) / 4;
+  if (f.samples > 1 && !resolved)
+    return {f.sampleRgba.data(), f.sampleColourWords.empty() ? nullptr : f.sampleColourWords.data(), texelWords,
+            f.sampleDepthStorage.data(), f.sampleStencil.empty() ? nullptr : f.sampleStencil.data(), f.samples};
+  return {f.rgba.data(), f.colourWords.empty() ? nullptr : f.colourWords.data(), texelWords, f.depthStorage.data(),
+          f.stencil.empty() ? nullptr : f.stencil.data(), 1};
+}
+
+// The resolved colour (the pixels themselves without MSAA) as Samples of one sample each.
+Samples resolvedOf(const Frame& f) { return samplesOf(f, true); }
+
+// A float's bits (`bits` wide, sign in the top bit) as an integer that orders as the values do,
+// one step per representable value; -0 is one step below +0, so a sign of zero counts too.
+std::int64_t orderedFloat(std::uint32_t value, int bits) {
+  const std::uint32_t sign = 1u << (bits - 1);
+  const std::int64_t magnitude = value & (sign - 1);
+  return (value & sign) ? -magnitude - 1 : magnitude;
+}
+
+// Channel ch (0..3 = R, G, B, A) of sample k in the format's own steps: a byte; of A2B10G10R10 the
+// 10-bit (alpha: 2-bit) value; of a float format the value's place among its format's floats
+// (orderedFloat), so differences are in units in the last place.
+std::int64_t channel(const Samples& f, std::size_t k, int ch) {
+  if (!f.words) return f.rgba[4 * k + ch];
+  const std::uint32_t* texel = f.words + k * f.texelWords;
+  if (f.texelWords == 1) return softraster::tenBitChannel(texel[0], ch);
+  if (f.texelWords == 2) return orderedFloat((texel[ch / 2] >> (16 * (ch % 2))) & 0xffffu, 16);
+  return orderedFloat(texel[ch], 32);
+}
+
+// |a - b| of one channel, at most INT_MAX (float formats can differ by more steps).
+int channelDelta(const Samples& a, const Samples& b, std::size_t k, int ch) {
+  const std::int64_t d = channel(a, k, ch) - channel(b, k, ch);
+  return static_cast<int>(std::min<std::int64_t>(d < 0 ? -d : d, std::numeric_limits<int>::max()));
 }
 
 bool sampleCovered(const Samples& f, std::size_t k, const ClearValues& clear) {
-  return f.depth[k] != clear.depth || (f.stencil && f.stencil[k] != clear.stencil) ||
-         !std::equal(clear.colour.begin(), clear.colour.end(), f.rgba + 4 * k);
+  const bool colourCleared = f.words ? std::equal(f.words + k * f.texelWords, f.words + (k + 1) * f.texelWords,
+                                                  clear.colourWords.begin())
+                                     : std::equal(clear.colour.begin(), clear.colour.end(), f.rgba + 4 * k);
+  return f.depth[k] != clear.depth || (f.stencil && f.stencil[k] != clear.stencil) || !colourCleared;
 }
 
 // Whether each sample of pixel i is covered, one bit per sample.
@@ -82,12 +119,16 @@ Comparison compareFrames(const Frame& a, const Frame& b, const Scene& scene) {
     c.failures.push_back("image sizes or depth formats differ");
     return c;
   }
+  if (a.colourWords.size() != b.colourWords.size() || a.sampleColourWords.size() != b.sampleColourWords.size()) {
+    c.failures.push_back("colour formats differ");
+    return c;
+  }
   if (a.samples != b.samples || a.sampleRgba.size() != b.sampleRgba.size() ||
       a.sampleStencil.size() != b.sampleStencil.size()) {
     c.failures.push_back("sample counts differ");
     return c;
   }
-  const Samples sa = samplesOf(a), sb = samplesOf(b);
+  const Samples sa = samplesOf(a), sb = samplesOf(b), ra = resolvedOf(a), rb = resolvedOf(b);
   const std::uint32_t samples = sa.samples;
   c.samples = samples;
   const Tolerance& tol = scene.tolerance;
@@ -102,7 +143,7 @@ Comparison compareFrames(const Frame& a, const Frame& b, const Scene& scene) {
       const std::size_t k = i * samples + s;
       stencilDiffers = stencilDiffers || (sa.stencil && sa.stencil[k] != sb.stencil[k]);
       for (int ch = 0; ch < 4; ++ch) {
-        const int d = std::abs(int{sa.rgba[4 * k + ch]} - int{sb.rgba[4 * k + ch]});
+        const int d = channelDelta(sa, sb, k, ch);
         c.colourMaxDelta[ch] = std::max(c.colourMaxDelta[ch], d);
         over = over || d > tol.colourThreshold;
       }
@@ -111,11 +152,12 @@ Comparison compareFrames(const Frame& a, const Frame& b, const Scene& scene) {
       depthOver = depthOver || dz > tol.depthThreshold;
     }
     for (int ch = 0; ch < 4; ++ch) {  // the resolved colour (the pixel's one sample without MSAA)
-      const int d = std::abs(int{a.rgba[4 * i + ch]} - int{b.rgba[4 * i + ch]});
+      const int d = channelDelta(ra, rb, i, ch);
       c.resolvedColourMaxDelta[ch] = std::max(c.resolvedColourMaxDelta[ch], d);
       c.colourMaxDelta[ch] = std::max(c.colourMaxDelta[ch], d);
       sums[ch] += static_cast<std::uint64_t>(d);
-      if (ch < 3) squaredErrorRgb += double(d) * d;
+      const double viewDelta = static_cast<double>(a.rgba[4 * i + ch]) - static_cast<double>(b.rgba[4 * i + ch]);
+      if (ch < 3) squaredErrorRgb += viewDelta * viewDelta;
       over = over || d > tol.colourThreshold;
     }
     if (over) ++c.colourPixelsOver;
@@ -140,6 +182,8 @@ std::vector<std::uint8_t> diffHeatmap(const Frame& a, const Frame& b, const Scen
   const std::size_t pixels = static_cast<std::size_t>(a.width) * a.height;
   std::vector<std::uint8_t> out(4 * pixels, 0);
   const ClearValues clear = clearValues(scene);
+  if (a.colourWords.size() != b.colourWords.size()) return out;
+  const Samples ra = resolvedOf(a), rb = resolvedOf(b);
   for (std::size_t i = 0; i < pixels; ++i) {
     std::uint8_t* p = &out[4 * i];
     p[3] = 255;
@@ -148,7 +192,7 @@ std::vector<std::uint8_t> diffHeatmap(const Frame& a, const Frame& b, const Scen
       continue;
     }
     int d = 0;
-    for (int ch = 0; ch < 4; ++ch) d = std::max(d, std::abs(int{a.rgba[4 * i + ch]} - int{b.rgba[4 * i + ch]}));
+    for (int ch = 0; ch < 4; ++ch) d = std::max(d, channelDelta(ra, rb, i, ch));
     if (d == 0) continue;
     if (d <= scene.tolerance.colourThreshold) {
       p[2] = 255;

@@ -1,7 +1,10 @@
 // Image comparison of two Frames of one scene, within the scene's Tolerance: the metrics
 // (metrics.hpp) and the two difference heatmaps.
+// Colour is compared in the format's own steps (bytes; A2B10G10R10's stored 10- and 2-bit values;
+// the float formats' units in the last place; not their byte view), so the colour threshold is in
+// those steps too.
 // Coverage: a sample is covered in a frame when its colour, depth or stencil differs from the
-// clear values; a coverage mismatch is a pixel whose samples are not covered alike in both frames.
+// clear values (as the format stores them); a coverage mismatch is a pixel whose samples are not covered alike in both frames.
 // Stencil (with a depth/stencil format) is compared exactly: a stencil mismatch is a pixel whose
 // stored stencil differs in any sample. With MSAA every sample is compared (colour, depth,
 // stencil, coverage) and the resolved colour too (metrics.hpp says which metric is which);

@@ -29,7 +29,8 @@ std::pair<float, float> sharedDepthRange(const Frame& soft, const Frame& vulkan,
 bool identicalFrames(const Frame& a, const Frame& b) {
   return a.width == b.width && a.height == b.height && a.rgba == b.rgba && a.stencil == b.stencil && a.depth.size() == b.depth.size() &&
          std::memcmp(a.depth.data(), b.depth.data(), a.depth.size() * sizeof(float)) == 0 && a.samples == b.samples &&
-         a.sampleRgba == b.sampleRgba && a.sampleDepthStorage == b.sampleDepthStorage && a.sampleStencil == b.sampleStencil;
+         a.sampleRgba == b.sampleRgba && a.sampleDepthStorage == b.sampleDepthStorage && a.sampleStencil == b.sampleStencil &&
+         a.colourWords == b.colourWords && a.sampleColourWords == b.sampleColourWords;
 }
 
 // Sample s of an MSAA frame as a one-sample frame (colour, depth as stored, stencil): what the

@@ -7,6 +7,7 @@
 #include <shading_models.hpp>
 
 #include <chrono>
+#include <cstring>
 #include <string>
 #include <utility>
 #include <vector>
@@ -141,9 +142,25 @@ Frame frameFrom(const Scene& scene, softraster::Framebuffer& framebuffer, const 
     frame.depthStorage = framebuffer.depthStorage();
     frame.stencil = framebuffer.stencilStorage();
   }
-  if (softraster::swapsRedBlue(framebuffer.colourFormat())) {  // a Frame is R, G, B, A, as vkref reads it back
-    for (std::vector<std::uint8_t>* bytes : {&frame.rgba, &frame.sampleRgba}) {
+  frame.colourFormat = framebuffer.colourFormat();
+  // A Frame is R, G, B, A bytes, as vkref reads it back; a wider format keeps its texels as words
+  // and the bytes become their view.
+  const softraster::ColourFormat format = framebuffer.colourFormat();
+  const std::pair<std::vector<std::uint8_t>*, std::vector<std::uint32_t>*> images[] = {
+      {&frame.rgba, &frame.colourWords}, {&frame.sampleRgba, &frame.sampleColourWords}};
+  for (auto [bytes, words] : images) {
+    if (softraster::swapsRedBlue(format)) {
       for (std::size_t i = 0; i + 3 < bytes->size(); i += 4) std::swap((*bytes)[i], (*bytes)[i + 2]);
+    }
+    if (!softraster::isTenBit(format) && !softraster::isFloat(format)) continue;
+    const std::size_t texelBytes = softraster::colourBytes(format), texels = bytes->size() / texelBytes;
+    words->resize(bytes->size() / 4);
+    std::memcpy(words->data(), bytes->data(), bytes->size());
+    bytes->resize(4 * texels);
+    const auto* stored = reinterpret_cast<const std::uint8_t*>(words->data());
+    for (std::size_t i = 0; i < texels; ++i) {
+      const auto view = softraster::Framebuffer::viewBytes(format, stored + texelBytes * i);
+      std::memcpy(bytes->data() + 4 * i, view.data(), 4);
     }
   }
   return frame;
@@ -230,12 +247,15 @@ softraster::Result<Frame> readVulkan(const Scene& scene, vkref::Renderer& render
   frame.width = images.width;
   frame.height = images.height;
   frame.rgba = std::move(images.rgba);
+  frame.colourFormat = scene.colourFormat;
+  frame.colourWords = std::move(images.colourWords);
   frame.depth = std::move(images.depth);
   frame.depthFormat = scene.depthFormat;
   frame.depthStorage = std::move(images.depthStorage);
   frame.stencil = std::move(images.stencil);
   frame.samples = images.samples;
   frame.sampleRgba = std::move(images.sampleRgba);
+  frame.sampleColourWords = std::move(images.sampleColourWords);
   frame.sampleDepthStorage = std::move(images.sampleDepthStorage);
   frame.sampleStencil = std::move(images.sampleStencil);
   return frame;

@@ -25,7 +25,11 @@ namespace crosscheck {
 
 struct Frame {
   std::uint32_t width = 0, height = 0;
-  std::vector<std::uint8_t> rgba;
+  std::vector<std::uint8_t> rgba;           // R, G, B, A bytes (of a wider format: a view of colourWords)
+  softraster::ColourFormat colourFormat = softraster::ColourFormat::R8G8B8A8Unorm;
+  // A2B10G10R10 and the float formats: each pixel's stored texel as words (1, 2 or 4), compared
+  // in the format's own steps (compare/); empty for 8-bit formats.
+  std::vector<std::uint32_t> colourWords;
   std::vector<float> depth;                 // as floats in [0, 1], for views
   softraster::DepthFormat depthFormat = softraster::DepthFormat::D32Sfloat;
   std::vector<std::uint32_t> depthStorage;  // as the format stores it, for exact comparison
@@ -35,6 +39,7 @@ struct Frame {
   // Vulkan's sample order); with one sample these stay empty and `samples` is 1.
   std::uint32_t samples = 1;
   std::vector<std::uint8_t> sampleRgba;           // 4 bytes per sample
+  std::vector<std::uint32_t> sampleColourWords;   // as colourWords
   std::vector<std::uint32_t> sampleDepthStorage;  // as depthStorage
   std::vector<std::uint8_t> sampleStencil;        // as stencil
   double milliseconds = 0;                  // the renderer's timed span (render.cpp): softraster's clear,

@@ -195,10 +195,21 @@ std::array<double, 3> readVec3(const json& object, const char* key, const std::s
 }
 
 // A colour is [r, g, b] or [r, g, b, a], floats in [0, 1]; alpha defaults to 1.
-softraster::Vec4 readColour(const json& value, const std::string& place) {
+// What a colour may hold: [0, 1] for a UNORM or sRGB target (they clamp), any finite float for a
+// float target (it keeps values beyond 1 and below 0).
+enum class ColourRange { Unit, Finite };
+
+ColourRange colourRange(softraster::ColourFormat format) {
+  return softraster::isFloat(format) ? ColourRange::Finite : ColourRange::Unit;
+}
+
+softraster::Vec4 readColour(const json& value, const std::string& place, ColourRange range = ColourRange::Unit) {
   const auto v = readNumbers(value, place, 3, 4);
   for (std::size_t i = 0; i < v.size(); ++i) {
-    if (!(v[i] >= 0 && v[i] <= 1)) throw SceneError(placeOf(place, std::to_string(i)), "must be in [0, 1]");
+    if (range == ColourRange::Unit && !(v[i] >= 0 && v[i] <= 1))
+      throw SceneError(placeOf(place, std::to_string(i)), "must be in [0, 1]");
+    if (!(std::fabs(v[i]) <= std::numeric_limits<float>::max()))
+      throw SceneError(placeOf(place, std::to_string(i)), "must be a finite float");
   }
   return {static_cast<float>(v[0]), static_cast<float>(v[1]), static_cast<float>(v[2]),
           v.size() == 4 ? static_cast<float>(v[3]) : 1.0f};
@@ -633,7 +644,7 @@ void makeSphere(const json& sphere, const std::string& place, Draw& draw) {
   }
 }
 
-Draw readDrawMesh(const json& d, const std::string& place, const std::filesystem::path& sceneDir);
+Draw readDrawMesh(const json& d, const std::string& place, const std::filesystem::path& sceneDir, ColourRange range);
 
 // "transform": the object-to-world matrix M = T * Rz * Ry * Rx * S (scale first, then rotations
 // about x, y and z, then translation; angles in degrees, right-handed about the scene's axes,
@@ -845,8 +856,8 @@ void readTexcoords(const json& d, const std::string& place, Draw& draw, bool hav
 }
 
 Draw readDraw(const json& d, const std::string& place, const std::filesystem::path& sceneDir, double time,
-              TextureCache& textures, const std::vector<std::string>& passNames) {
-  Draw draw = readDrawMesh(d, place, sceneDir);
+              TextureCache& textures, const std::vector<std::string>& passNames, ColourRange range) {
+  Draw draw = readDrawMesh(d, place, sceneDir, range);
   if (draw.shading->depthPassOnly) {
     throw SceneError(placeOf(place, "shading"), "'" + std::string(draw.shading->name) +
                                                     "' writes no colour: it is the model of depth passes (\"passes\"), not of a draw");
@@ -903,7 +914,7 @@ Draw readDraw(const json& d, const std::string& place, const std::filesystem::pa
   return draw;
 }
 
-Draw readDrawMesh(const json& d, const std::string& place, const std::filesystem::path& sceneDir) {
+Draw readDrawMesh(const json& d, const std::string& place, const std::filesystem::path& sceneDir, ColourRange range) {
   checkKeys(d, place, {"name", "obj", "sphere", "positions", "colours", "colour", "indices", "normals", "texcoords",
                        "texture", "normal_map", "shadow_map", "shading",
                        "transform", "material", "topology", "viewport", "scissor", "cull", "front_face", "depth_clamp",
@@ -919,7 +930,7 @@ Draw readDrawMesh(const json& d, const std::string& place, const std::filesystem
     throw SceneError(placeOf(place, "point_size"), "must be in (0, 255], the device's pointSizeRange (Vulkan clamps "
                                                    "gl_PointSize to it, so a larger size would not draw what it says)");
   }
-  const softraster::Vec4 colour = d.contains("colour") ? readColour(d["colour"], placeOf(place, "colour"))
+  const softraster::Vec4 colour = d.contains("colour") ? readColour(d["colour"], placeOf(place, "colour"), range)
                                                        : softraster::Vec4{1, 1, 1, 1};
 
   if (d.contains("sphere")) {
@@ -968,7 +979,7 @@ Draw readDrawMesh(const json& d, const std::string& place, const std::filesystem
       throw SceneError(placeOf(place, "colours"), "expected one colour per position (" + std::to_string(positions.size()) + ")");
     }
     for (std::size_t i = 0; i < colours.size(); ++i) {
-      draw.mesh.colours[i] = readColour(colours[i], placeOf(placeOf(place, "colours"), std::to_string(i)));
+      draw.mesh.colours[i] = readColour(colours[i], placeOf(placeOf(place, "colours"), std::to_string(i)), range);
     }
   }
   if (d.contains("indices")) {
@@ -1140,7 +1151,10 @@ Scene readScene(json& document, const std::filesystem::path& path, const std::ve
                                   {{"r8g8b8a8_unorm", softraster::ColourFormat::R8G8B8A8Unorm},
                                    {"b8g8r8a8_unorm", softraster::ColourFormat::B8G8R8A8Unorm},
                                    {"r8g8b8a8_srgb", softraster::ColourFormat::R8G8B8A8Srgb},
-                                   {"b8g8r8a8_srgb", softraster::ColourFormat::B8G8R8A8Srgb}});
+                                   {"b8g8r8a8_srgb", softraster::ColourFormat::B8G8R8A8Srgb},
+                                   {"a2b10g10r10_unorm", softraster::ColourFormat::A2B10G10R10Unorm},
+                                   {"r16g16b16a16_sfloat", softraster::ColourFormat::R16G16B16A16Sfloat},
+                                   {"r32g32b32a32_sfloat", softraster::ColourFormat::R32G32B32A32Sfloat}});
     scene.depthFormat = readEnum(fb, "depth_format", "/framebuffer", scene.depthFormat,
                                  {{"d16_unorm", softraster::DepthFormat::D16Unorm},
                                   {"x8_d24_unorm", softraster::DepthFormat::X8D24UnormPack32},
@@ -1150,7 +1164,8 @@ Scene readScene(json& document, const std::filesystem::path& path, const std::ve
     scene.width = static_cast<std::uint32_t>(readCount(fb, "width", "/framebuffer", scene.width, kMaxFramebufferSize));
     scene.height = static_cast<std::uint32_t>(readCount(fb, "height", "/framebuffer", scene.height, kMaxFramebufferSize));
     if (scene.width == 0 || scene.height == 0) throw SceneError("/framebuffer", "width and height must be in 1..8192");
-    if (fb.contains("clear_colour")) scene.clearColour = readColour(fb["clear_colour"], "/framebuffer/clear_colour");
+    if (fb.contains("clear_colour"))
+      scene.clearColour = readColour(fb["clear_colour"], "/framebuffer/clear_colour", colourRange(scene.colourFormat));
     scene.clearDepth = readFloat(fb, "clear_depth", "/framebuffer", scene.clearDepth);
     if (!(scene.clearDepth >= 0 && scene.clearDepth <= 1)) throw SceneError("/framebuffer/clear_depth", "must be in [0, 1]");
     scene.clearStencil = static_cast<std::uint8_t>(readCount(fb, "clear_stencil", "/framebuffer", 0, 255));
@@ -1192,7 +1207,8 @@ Scene readScene(json& document, const std::filesystem::path& path, const std::ve
   TextureCache textures;
   for (std::size_t i = 0; i < draws.size(); ++i) {
     const std::string place = "/draws/" + std::to_string(i);
-    scene.draws.push_back(readDraw(draws[i], place, path.parent_path(), scene.time, textures, passNames));
+    scene.draws.push_back(
+        readDraw(draws[i], place, path.parent_path(), scene.time, textures, passNames, colourRange(scene.colourFormat)));
     const Draw& draw = scene.draws.back();
     if (draw.state.depth.stencilTestEnable && !softraster::hasStencil(scene.depthFormat)) {
       throw SceneError(placeOf(place, "stencil"),

@@ -8,8 +8,9 @@
 
 namespace crosscheck {
 
-// A pixel is "over" when any colour channel differs by more than colourThreshold (in 8-bit
-// steps) or depth by more than depthThreshold; the max* counts are how many such pixels pass.
+// A pixel is "over" when any colour channel differs by more than colourThreshold (in the format's
+// steps: 8-bit, 10-bit for A2B10G10R10, units in the last place for the float formats) or depth
+// by more than depthThreshold; the max* counts are how many such pixels pass.
 struct Tolerance {
   int colourThreshold = 1;
   double depthThreshold = 0x1p-24;

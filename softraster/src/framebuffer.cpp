@@ -1,8 +1,10 @@
 // Framebuffer creation (the checks create() documents), storage, clears (deferred: see
 // framebuffer.hpp; the colour swizzled to the format's byte order), the MSAA resolve (SSE2 where
-// the build has it, the same operations per channel, so blind to the channels' order; stencil
-// keeps sample 0 as depth does) and depth read-out (one sample, or all of them as floats).
+// the build has it, the same operations per channel, so blind to the channels' order;
+// A2B10G10R10 and the float formats per channel in float, stored as a fragment stores them;
+// stencil keeps sample 0 as depth does) and depth read-out (one sample, or all of them as floats).
 #include <softraster/detail/fragment/colour.hpp>
+#include <softraster/detail/fragment/half.hpp>
 #include <softraster/detail/fragment/srgb.hpp>
 #include <softraster/framebuffer.hpp>
 
@@ -40,7 +42,9 @@ Result<Framebuffer> Framebuffer::create(std::uint32_t width, std::uint32_t heigh
     return Status::error("unknown depth format");
   }
   if (colourFormat != ColourFormat::R8G8B8A8Unorm && colourFormat != ColourFormat::B8G8R8A8Unorm &&
-      colourFormat != ColourFormat::R8G8B8A8Srgb && colourFormat != ColourFormat::B8G8R8A8Srgb) {
+      colourFormat != ColourFormat::R8G8B8A8Srgb && colourFormat != ColourFormat::B8G8R8A8Srgb &&
+      colourFormat != ColourFormat::A2B10G10R10Unorm && colourFormat != ColourFormat::R16G16B16A16Sfloat &&
+      colourFormat != ColourFormat::R32G32B32A32Sfloat) {
     return Status::error("unknown colour format");
   }
   return Framebuffer(width, height, depthFormat, samples, colourFormat);
@@ -53,7 +57,7 @@ Framebuffer::Framebuffer(std::uint32_t width, std::uint32_t height, DepthFormat 
       samples_(samples),
       depthFormat_(depthFormat),
       colourFormat_(colourFormat),
-      colour_(static_cast<std::size_t>(width) * height * samples * 4, 0),
+      colour_(static_cast<std::size_t>(width) * height * samples * colourBytes(colourFormat), 0),
       depth_(static_cast<std::size_t>(width) * height * samples, 0),
       stencil_(hasStencil(depthFormat) ? static_cast<std::size_t>(width) * height * samples : 0, 0) {}
 
@@ -80,6 +84,56 @@ void Framebuffer::resolveInto(Framebuffer& out) const {
   const float average = 1.0f / static_cast<float>(samples_);
   const bool srgb = isSrgb(colourFormat_);
   std::size_t p = 0;
+  if (isFloat(colourFormat_)) {  // the resolve shader's sum and product under FTZ and DAZ, then a fragment store
+    const std::uint32_t bytes = colourBytes(colourFormat_);
+    const detail::ColourBlend store = detail::colourBlend(BlendState{}, colourFormat_);
+    for (; p < pixels; ++p) {
+      std::uint8_t* pixel = out.colour_.data() + bytes * p;
+      const std::uint8_t* first = colour_.data() + bytes * p * samples_;
+      if (samples_ == 1) {
+        std::memcpy(pixel, first, bytes);
+      } else {
+        float sum[4] = {0.0f, 0.0f, 0.0f, 0.0f};
+        for (std::uint32_t s = 0; s < samples_; ++s) {
+          float values[4];  // the texel fetch's floats: halves widened exactly
+          if (bytes == 8) {
+            std::uint16_t halves[4];
+            std::memcpy(halves, first + 8 * s, sizeof halves);
+            for (int c = 0; c < 4; ++c) values[c] = detail::floatFromHalf(halves[c]);
+          } else {
+            std::memcpy(values, first + 16 * s, sizeof values);
+          }
+          for (int c = 0; c < 4; ++c) sum[c] = detail::flushDenormal(sum[c] + detail::flushDenormal(values[c]));
+        }
+        const Vec4 mean{detail::flushDenormal(sum[0] * average), detail::flushDenormal(sum[1] * average),
+                        detail::flushDenormal(sum[2] * average), detail::flushDenormal(sum[3] * average)};
+        detail::blendColour(pixel, mean, store);
+      }
+      out.depth_[p] = depth_[p * samples_];
+    }
+  }
+  if (isTenBit(colourFormat_)) {  // lavapipe's resolve: sample texels as floats, averaged, stored as a fragment
+    const float toFloat10 = static_cast<float>(1.0 / 1023.0), toFloat2 = static_cast<float>(1.0 / 3.0);
+    for (; p < pixels; ++p) {
+      std::uint32_t words[4];
+      std::memcpy(words, colour_.data() + 4 * p * samples_, 4 * samples_);
+      Vec4 sum{0.0f, 0.0f, 0.0f, 0.0f};
+      for (std::uint32_t s = 0; s < samples_; ++s) {
+        sum.x = sum.x + static_cast<float>(tenBitChannel(words[s], 0)) * toFloat10;
+        sum.y = sum.y + static_cast<float>(tenBitChannel(words[s], 1)) * toFloat10;
+        sum.z = sum.z + static_cast<float>(tenBitChannel(words[s], 2)) * toFloat10;
+        sum.w = sum.w + static_cast<float>(tenBitChannel(words[s], 3)) * toFloat2;
+      }
+      std::uint8_t* pixel = out.colour_.data() + 4 * p;
+      if (samples_ == 1) {
+        std::memcpy(pixel, words, 4);
+      } else {
+        const Vec4 mean{sum.x * average, sum.y * average, sum.z * average, sum.w * average};
+        detail::blendColour(pixel, mean, detail::colourBlend(BlendState{}, colourFormat_));
+      }
+      out.depth_[p] = depth_[p * samples_];
+    }
+  }
 #if defined(__SSE2__)
   if (samples_ == 4 && !srgb) {  // the loop below with the four channels of a pixel in four lanes
     const __m128i zero = _mm_setzero_si128();
@@ -119,17 +173,74 @@ void Framebuffer::resolveInto(Framebuffer& out) const {
   }
 }
 
-void Framebuffer::clear(Vec4 colour, float depth, std::uint8_t stencil) {
-  if (swapsRedBlue(colourFormat_)) std::swap(colour.x, colour.z);
+namespace {
+
+// A clear value's channel as Mesa's generated format packer converts it for a UNORM channel of
+// `one` (1023, or 3 for the 2-bit alpha): CLAMP to [0, 1] (NaN to 0), times `one` in float, then
+// util_iround (round half to even). Not the fragment path's truncating 16-bit route.
+std::uint32_t clearUnorm(float v, float one) {
+  const float clamped = v > 0.0f ? (v > 1.0f ? 1.0f : v) : 0.0f;
+  return static_cast<std::uint32_t>(std::nearbyint(clamped * one));
+}
+
+}  // namespace
+
+std::array<std::uint32_t, 4> colourClearValue(ColourFormat format, Vec4 colour) {
+  std::array<std::uint32_t, 4> words{0, 0, 0, 0};
+  if (format == ColourFormat::R32G32B32A32Sfloat) {  // as given
+    const float values[4] = {colour.x, colour.y, colour.z, colour.w};
+    std::memcpy(words.data(), values, sizeof values);
+    return words;
+  }
+  if (format == ColourFormat::R16G16B16A16Sfloat) {  // _mesa_float_to_float16_rtz
+    const std::uint16_t halves[4] = {detail::halfFromFloatTowardZero(colour.x), detail::halfFromFloatTowardZero(colour.y),
+                                     detail::halfFromFloatTowardZero(colour.z), detail::halfFromFloatTowardZero(colour.w)};
+    std::memcpy(words.data(), halves, sizeof halves);
+    return words;
+  }
+  if (isTenBit(format)) {  // util_pack_color's R10G10B10A2 packer
+    words[0] = packTenBit(clearUnorm(colour.x, 1023.0f), clearUnorm(colour.y, 1023.0f), clearUnorm(colour.z, 1023.0f),
+                          clearUnorm(colour.w, 3.0f));
+    return words;
+  }
+  if (swapsRedBlue(format)) std::swap(colour.x, colour.z);
   std::uint8_t bytes[4];
   detail::storeColour(bytes, colour);
-  if (isSrgb(colourFormat_)) {  // util_pack_color: red, green and blue through Giesen's table
+  if (isSrgb(format)) {  // util_pack_color: red, green and blue through Giesen's table
     bytes[0] = detail::linearToSrgbClearByte(colour.x);
     bytes[1] = detail::linearToSrgbClearByte(colour.y);
     bytes[2] = detail::linearToSrgbClearByte(colour.z);
   }
+  std::memcpy(words.data(), bytes, sizeof bytes);
+  return words;
+}
+
+std::array<std::uint8_t, 4> Framebuffer::viewBytes(ColourFormat format, const std::uint8_t* p) {
+  if (swapsRedBlue(format)) return {p[2], p[1], p[0], p[3]};
+  if (isTenBit(format)) {
+    std::uint32_t word;
+    std::memcpy(&word, p, sizeof word);
+    auto byte = [&](int c) { return static_cast<std::uint8_t>((tenBitChannel(word, c) * 255 + 511) / 1023); };
+    return {byte(0), byte(1), byte(2), static_cast<std::uint8_t>(tenBitChannel(word, 3) * 85)};
+  }
+  if (isFloat(format)) {
+    float values[4];
+    if (format == ColourFormat::R16G16B16A16Sfloat) {
+      std::uint16_t halves[4];
+      std::memcpy(halves, p, sizeof halves);
+      for (int c = 0; c < 4; ++c) values[c] = detail::floatFromHalf(halves[c]);
+    } else {
+      std::memcpy(values, p, sizeof values);
+    }
+    return {detail::unorm8FromFloat(values[0]), detail::unorm8FromFloat(values[1]), detail::unorm8FromFloat(values[2]),
+            detail::unorm8FromFloat(values[3])};
+  }
+  return {p[0], p[1], p[2], p[3]};
+}
+
+void Framebuffer::clear(Vec4 colour, float depth, std::uint8_t stencil) {
   PendingClear clear;
-  std::memcpy(&clear.colour, bytes, sizeof clear.colour);
+  clear.colour = colourClearValue(colourFormat_, colour);
   clear.depth = depthClearValue(depthFormat_, depth);
   clear.stencil = stencil;
   pending_ = clear;
@@ -137,13 +248,15 @@ void Framebuffer::clear(Vec4 colour, float depth, std::uint8_t stencil) {
 
 namespace {
 
-// `count` 32-bit words from `out` on set to `value`, in 64-byte pieces (a memset-speed fill).
-void fillWords(std::uint8_t* out, std::size_t count, std::uint32_t value) {
+// `count` values of `period` 32-bit words (1, 2 or 4) from `out` on set to `value`'s first
+// `period` words, in 64-byte pieces (a memset-speed fill).
+void fillWords(std::uint8_t* out, std::size_t count, const std::array<std::uint32_t, 4>& value, std::size_t period = 1) {
   std::uint32_t piece[16];
-  for (std::uint32_t& w : piece) w = value;
+  for (std::size_t w = 0; w < 16; ++w) piece[w] = value[w % period];
+  const std::size_t words = count * period;
   std::size_t i = 0;
-  for (; i + 16 <= count; i += 16) std::memcpy(out + 4 * i, piece, sizeof piece);
-  for (; i < count; ++i) std::memcpy(out + 4 * i, &value, sizeof value);
+  for (; i + 16 <= words; i += 16) std::memcpy(out + 4 * i, piece, sizeof piece);
+  for (; i < words; ++i) std::memcpy(out + 4 * i, &piece[i % period], 4);
 }
 
 }  // namespace
@@ -155,8 +268,9 @@ void Framebuffer::fillRows(const PendingClear& clear, std::uint32_t y0, std::uin
   y1 = std::min(y1, height_ - 1);
   const std::size_t perRow = static_cast<std::size_t>(width_) * samples_;
   const std::size_t first = y0 * perRow, count = (y1 - y0 + 1) * perRow;
-  fillWords(colour_.data() + 4 * first, count, clear.colour);
-  fillWords(reinterpret_cast<std::uint8_t*>(depth_.data() + first), count, clear.depth);
+  const std::size_t period = colourBytes(colourFormat_) / 4;
+  fillWords(colour_.data() + 4 * period * first, count, clear.colour, period);
+  fillWords(reinterpret_cast<std::uint8_t*>(depth_.data() + first), count, {clear.depth, 0, 0, 0});
   if (!stencil_.empty()) std::memset(stencil_.data() + first, clear.stencil, count);
 }
 

@@ -46,6 +46,8 @@ inline crosscheck::Frame renderAgreeing(const std::string& name, const std::vect
     for (int ch = 0; ch < 4; ++ch) EXPECT_EQ(c.colourMaxDelta[ch], 0) << name << " channel " << ch;
     EXPECT_EQ(c.depthMaxDelta, 0.0) << name;
     EXPECT_EQ(c.stencilMismatches, 0u) << name;
+    EXPECT_TRUE(soft->colourWords == reference->colourWords && soft->sampleColourWords == reference->sampleColourWords)
+        << name << ": the stored colour words differ";
     if (first.rgba.empty()) first = std::move(*soft);
   }
   return first;

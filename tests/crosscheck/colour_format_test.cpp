@@ -4,7 +4,9 @@
 // byte (lavapipe blends both in the same 8-bit arithmetic per channel). sRGB targets (R8G8B8A8 and
 // B8G8R8A8) agree to the bit on theirs and on the blending scenes, one sample and four, and differ
 // from the UNORM frames (the blending is in linear values); their clear uses the clear's own
-// encoding. Then the loader's error for an unknown format. (softraster's BGRA byte order:
+// encoding. A2B10G10R10, R16G16B16A16_SFLOAT and R32G32B32A32_SFLOAT targets agree on every
+// stored bit, on their scenes and the blending scenes. Then the loader's errors: colours out of
+// the target's range, an unknown format. (softraster's BGRA byte order:
 // tests/softraster/api_test.cpp.)
 #include "agreement.hpp"
 
@@ -12,6 +14,7 @@
 
 #include <array>
 #include <cstdint>
+#include <set>
 #include <string>
 #include <vector>
 
@@ -95,8 +98,103 @@ TEST(ColourFormat, BlendingScenesAgreeOnSrgb) {
   }
 }
 
+// An A2B10G10R10 target agrees with lavapipe on every stored 10-bit and 2-bit value (every sample
+// and the resolve), not only on the bytes of its view; its clear is packed by the clear's own
+// rounding.
+TEST(ColourFormat, TenBitAgreesOnEveryStoredBit) {
+  const crosscheck::Frame tenBit = renderAgreeing("colour_format_10bit", {});
+  ASSERT_EQ(tenBit.colourWords.size(), std::size_t{256} * 136);
+  ASSERT_EQ(tenBit.sampleColourWords.size(), std::size_t{256} * 136 * 4);
+  // The clear strip: [0.9995, 0.25, 0.6, 0.5] -> 1022, 256, 614, 2.
+  EXPECT_EQ(tenBit.colourWords[std::size_t{256} * 130 + 100], softraster::packTenBit(1022, 256, 614, 2));
+  // The stored words carry more than their byte view: some pixels differ in the low bits alone.
+  const crosscheck::Frame unorm = renderAgreeing("colour_format_10bit", {"framebuffer.colour_format=r8g8b8a8_unorm"});
+  EXPECT_TRUE(unorm.colourWords.empty());
+  std::set<std::uint32_t> lowBits;
+  for (const std::uint32_t w : tenBit.colourWords) lowBits.insert(w & 3u);
+  EXPECT_EQ(lowBits.size(), 4u) << "red's two bits below the byte view take every value";
+}
+
+TEST(ColourFormat, SingleSampleTenBitAgrees) {
+  const crosscheck::Frame tenBit = renderAgreeing("colour_format_10bit", {"framebuffer.samples=1"});
+  EXPECT_EQ(tenBit.colourWords.size(), std::size_t{256} * 136);
+  EXPECT_TRUE(tenBit.sampleColourWords.empty());
+}
+
+// Every blend factor pair and every logic op into an A2B10G10R10 target (lavapipe's 16-bit integer
+// path, logic ops applied). Ops, write masks and MSAA: colour_format_10bit's cells. (Two scenes,
+// not the six the 8-bit formats run: each costs seconds of CI under the validation layer.)
+TEST(ColourFormat, BlendingScenesAgreeOnTenBit) {
+  for (const std::string name : {"blend_factors", "logic_ops"}) {
+    SCOPED_TRACE(name);
+    const crosscheck::Frame tenBit = renderAgreeing(name, {"framebuffer.colour_format=a2b10g10r10_unorm"});
+    EXPECT_FALSE(tenBit.colourWords.empty());
+  }
+}
+
+// Float targets agree with lavapipe on every stored half and float (every sample and the resolve):
+// unclamped values, halves rounded toward zero and held at 65504, tiny values as half denormals.
+TEST(ColourFormat, HalfFloatAgreesOnEveryStoredBit) {
+  const crosscheck::Frame half = renderAgreeing("colour_format_float", {});
+  ASSERT_EQ(half.colourWords.size(), std::size_t{256} * 136 * 2);
+  ASSERT_EQ(half.sampleColourWords.size(), std::size_t{256} * 136 * 4 * 2);
+  // The clear strip: [100000, -2.5, 0.3, 3] -> halves 0x7bff (65504), 0xc100, 0x34cc (0.2998, toward
+  // zero; the nearest half is 0x34cd), 0x4200.
+  const std::size_t clear = 2 * (std::size_t{256} * 130 + 100);
+  EXPECT_EQ(half.colourWords[clear], 0xc1007bffu);
+  EXPECT_EQ(half.colourWords[clear + 1], 0x420034ccu);
+  // Values beyond [0, 1], half denormals and the largest half all occur among the stored red halves.
+  bool above = false, negative = false, denormal = false, largest = false;
+  for (std::size_t i = 0; i < half.colourWords.size(); i += 2) {
+    const std::uint32_t red = half.colourWords[i] & 0xffffu;
+    above = above || (red >= 0x3c01u && red < 0x7c00u);
+    negative = negative || (red > 0x8000u && red < 0xfc00u);
+    denormal = denormal || (red > 0u && red < 0x0400u);
+    largest = largest || red == 0x7bffu;
+  }
+  EXPECT_TRUE(above);
+  EXPECT_TRUE(negative);
+  EXPECT_TRUE(denormal);
+  EXPECT_TRUE(largest);
+}
+
+TEST(ColourFormat, FloatAgreesOnEveryStoredBit) {
+  const crosscheck::Frame f32 = renderAgreeing("colour_format_float", {"framebuffer.colour_format=r32g32b32a32_sfloat"});
+  ASSERT_EQ(f32.colourWords.size(), std::size_t{256} * 136 * 4);
+  const std::size_t clear = 4 * (std::size_t{256} * 130 + 100);
+  EXPECT_EQ(f32.colourWords[clear], 0x47c35000u) << "100000 as given";
+  EXPECT_EQ(f32.colourWords[clear + 2], 0x3e99999au) << "0.3 as given";
+}
+
+TEST(ColourFormat, SingleSampleFloatTargetsAgree) {
+  for (const std::string format : {"r16g16b16a16_sfloat", "r32g32b32a32_sfloat"}) {
+    SCOPED_TRACE(format);
+    const crosscheck::Frame f =
+        renderAgreeing("colour_format_float", {"framebuffer.samples=1", "framebuffer.colour_format=" + format});
+    EXPECT_FALSE(f.colourWords.empty());
+  }
+}
+
+// Every blend factor pair into both float targets (ops, write masks, logic ops and MSAA:
+// colour_format_float's cells).
+TEST(ColourFormat, BlendingScenesAgreeOnFloatTargets) {
+  for (const std::string format : {"r16g16b16a16_sfloat", "r32g32b32a32_sfloat"}) {
+    SCOPED_TRACE(format);
+    const crosscheck::Frame f = renderAgreeing("blend_factors", {"framebuffer.colour_format=" + format});
+    EXPECT_FALSE(f.colourWords.empty());
+  }
+}
+
+// Colours beyond [0, 1] are refused for targets that clamp, and non-finite ones for any.
+TEST(ColourFormat, ColourRangeFollowsTheTarget) {
+  expectSceneError({"framebuffer.colour_format=r8g8b8a8_unorm", "framebuffer.clear_colour=[2, 0, 0, 1]"},
+                   "colour_format_float.json", "/framebuffer/clear_colour/0: must be in [0, 1]");
+  expectSceneError({"draws.1.colours=[[0, 0, 0, 1], [0, 1e300, 0, 1], [0, 0, 0, 1]]"}, "colour_format_float.json",
+                   "/draws/1/colours/1/1: must be a finite float");
+}
+
 TEST(ColourFormat, UnknownFormatIsOneLineNamingTheFile) {
-  expectSceneError({"framebuffer.colour_format=r16g16b16a16_sfloat"}, "colour_format_bgra.json",
-                   "/framebuffer/colour_format: 'r16g16b16a16_sfloat' is not one of r8g8b8a8_unorm, b8g8r8a8_unorm, "
-                   "r8g8b8a8_srgb, b8g8r8a8_srgb");
+  expectSceneError({"framebuffer.colour_format=r16g16b16a16_unorm"}, "colour_format_bgra.json",
+                   "/framebuffer/colour_format: 'r16g16b16a16_unorm' is not one of r8g8b8a8_unorm, b8g8r8a8_unorm, "
+                   "r8g8b8a8_srgb, b8g8r8a8_srgb, a2b10g10r10_unorm, r16g16b16a16_sfloat, r32g32b32a32_sfloat");
 }

@@ -1,5 +1,5 @@
 // Fuzz target: softraster's draw input. The input's bytes become a framebuffer (1..48 pixels a
-// side, 1 or 4 samples, every depth format), a PipelineState (every field, out-of-range enum
+// side, 1 or 4 samples, every depth and colour format), a PipelineState (every field, out-of-range enum
 // values and non-finite floats included), the vertex_color twin's uniforms (a matrix of any
 // floats or a tame one) and up to 64 vertices and 128 indices, drawn with Context::draw or
 // drawIndexed.
@@ -118,7 +118,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   // threads (waking threads costs more than most of these small draws).
   const bool onThreads = in.below(8) == 7;
   const bool affine = in.flag();
-  const auto colourFormat = static_cast<ColourFormat>(in.below(4));  // RGBA8, BGRA8, and both as sRGB
+  const auto colourFormat = static_cast<ColourFormat>(in.below(7));  // every colour format
 
   const auto drawWith = [&](const Context& context) {
     Framebuffer framebuffer = Framebuffer::create(width, height, format, samples, colourFormat).value();

@@ -3,6 +3,7 @@
 // framebuffer with no pixels, and the threading promise (four threads, each with its own Context
 // and Framebuffer, draw the same bits as one).
 // Deliberately no pipeline arithmetic: the stage tests and the cross-check cover that.
+#include <softraster/detail/fragment/colour.hpp>
 #include <softraster/pipeline.hpp>
 
 #include <gtest/gtest.h>
@@ -10,9 +11,11 @@
 #include <algorithm>
 #include <array>
 #include <iterator>
+#include <limits>
 #include <bit>
 #include <cmath>
 #include <cstdint>
+#include <cstring>
 #include <thread>
 #include <utility>
 #include <vector>
@@ -208,6 +211,118 @@ TEST(FramebufferCreate, SrgbClearAndResolve) {
   const double encoded = 255.0 * (1.055 * std::pow(linear, 1.0 / 2.4) - 0.055);
   EXPECT_NEAR(resolved.colourAt(0, 0)[0], encoded, 1.0);
   EXPECT_EQ(resolved.colourAt(1, 0), (std::array<std::uint8_t, 4>{188, 124, 255, 128})) << "four equal samples";
+}
+
+// An A2B10G10R10 target: one word per sample, red in the low bits. The clear rounds as Mesa's
+// format packer does (0.9995 * 1023 = 1022.49 -> 1022; alpha 0.5 * 3 -> 2, half to even); colourAt
+// is a byte view; the resolve averages v * float(1/1023) and stores as a fragment does (the
+// 16-bit route: round to UNORM16, then >> 6).
+TEST(FramebufferCreate, TenBitClearViewAndResolve) {
+  auto framebuffer = Framebuffer::create(2, 1, DepthFormat::D32Sfloat, 4, softraster::ColourFormat::A2B10G10R10Unorm);
+  ASSERT_TRUE(framebuffer);
+  framebuffer->clear({0.9995f, 0.25f, 0.6f, 0.5f}, 1.0f);
+  std::uint32_t word;
+  std::memcpy(&word, framebuffer->colour().data() + 4 * framebuffer->sampleIndex(1, 0, 3), 4);
+  EXPECT_EQ(word, softraster::packTenBit(1022, 256, 614, 2));
+  EXPECT_EQ(word,
+            softraster::colourClearValue(softraster::ColourFormat::A2B10G10R10Unorm, {0.9995f, 0.25f, 0.6f, 0.5f})[0]);
+  EXPECT_EQ(framebuffer->colourAt(1, 0, 3), (std::array<std::uint8_t, 4>{255, 64, 153, 170}));
+  // Pixel 0's red: 1022, 1022, 0, 1023 -> the mean of v * float(1/1023) is 0.74951, UNORM16 49119,
+  // >> 6 = 767.
+  const std::size_t first = framebuffer->sampleIndex(0, 0, 0);
+  const std::uint32_t reds[4] = {1022, 1022, 0, 1023};
+  for (std::uint32_t s = 0; s < 4; ++s) {
+    const std::uint32_t w = (word & ~1023u) | reds[s];
+    std::memcpy(framebuffer->colour().data() + 4 * (first + s), &w, 4);
+  }
+  const Framebuffer resolved = framebuffer->resolve();
+  std::uint32_t resolvedWord, sameWord;
+  std::memcpy(&resolvedWord, resolved.colour().data(), 4);
+  std::memcpy(&sameWord, resolved.colour().data() + 4, 4);
+  const float toFloat = static_cast<float>(1.0 / 1023.0);
+  const float mean = (1022.0f * toFloat + 1022.0f * toFloat + 0.0f + 1023.0f * toFloat) * 0.25f;
+  EXPECT_EQ(softraster::tenBitChannel(resolvedWord, 0),
+            static_cast<std::uint32_t>(softraster::detail::unorm16FromFloat(mean)) >> 6);
+  EXPECT_EQ(softraster::tenBitChannel(resolvedWord, 1), 256u) << "four equal samples keep their value";
+  EXPECT_EQ(softraster::tenBitChannel(resolvedWord, 3), 2u);
+  EXPECT_EQ(softraster::tenBitChannel(resolvedWord, 0), 767u);
+  // A pixel of four equal samples keeps its word (v / 1023 goes back to v on the 16-bit route).
+  EXPECT_EQ(sameWord, word);
+}
+
+// The 10-bit format's conversions: the 16-bit UNORM of a float (clamped, NaN to 0), widening and
+// narrowing that invert each other for every 10-bit and 2-bit value, and a plain store that
+// truncates (0.9995 stores as 1023 where round(0.9995 * 1023) = 1022).
+TEST(FramebufferCreate, TenBitConversionsInvertEachOther) {
+  using namespace softraster::detail;
+  EXPECT_EQ(unorm16FromFloat(0.0f), 0);
+  EXPECT_EQ(unorm16FromFloat(1.0f), 65535);
+  EXPECT_EQ(unorm16FromFloat(-2.0f), 0);
+  EXPECT_EQ(unorm16FromFloat(7.0f), 65535);
+  EXPECT_EQ(unorm16FromFloat(std::nanf("")), 0);
+  EXPECT_EQ(unorm16FromFloat(0.5f), 32768) << "32767.5, half to even";
+  for (std::uint32_t v = 0; v < 1024; ++v) ASSERT_EQ(narrowToTenBit(widenTenBit(v)), v) << v;
+  for (std::uint32_t a = 0; a < 4; ++a) ASSERT_EQ(narrowToTwoBit(widenTwoBit(a)), a) << a;
+  EXPECT_EQ(widenTwoBit(3), 65535);
+  std::uint8_t pixel[4] = {0, 0, 0, 0};
+  blendColour(pixel, {0.9995f, 0.0f, 1.0f, 0.4f},
+              colourBlend(softraster::BlendState{}, softraster::ColourFormat::A2B10G10R10Unorm));
+  std::uint32_t word;
+  std::memcpy(&word, pixel, 4);
+  EXPECT_EQ(word, softraster::packTenBit(1023, 0, 1023, 1));
+}
+
+// Halves as lavapipe converts them: widened exactly, narrowed toward zero (held at 65504 where
+// nearest would round up or overflow, infinities kept, NaN quieted, denormals truncated).
+TEST(FramebufferCreate, HalfConversionsRoundTowardZero) {
+  using softraster::detail::floatFromHalf;
+  using softraster::detail::halfFromFloatTowardZero;
+  for (std::uint32_t h = 0; h < 0x10000; ++h) {
+    const auto half = static_cast<std::uint16_t>(h);
+    if ((h & 0x7c00u) == 0x7c00u && (h & 0x3ffu) != 0) continue;  // NaN: checked below
+    ASSERT_EQ(halfFromFloatTowardZero(floatFromHalf(half)), half) << h;
+  }
+  EXPECT_EQ(halfFromFloatTowardZero(0.3f), 0x34cc) << "nearest would be 0x34cd";
+  EXPECT_EQ(halfFromFloatTowardZero(-0.3f), 0xb4cc);
+  EXPECT_EQ(halfFromFloatTowardZero(65519.0f), 0x7bff);
+  EXPECT_EQ(halfFromFloatTowardZero(1e30f), 0x7bff);
+  EXPECT_EQ(halfFromFloatTowardZero(-1e30f), 0xfbff);
+  EXPECT_EQ(halfFromFloatTowardZero(std::numeric_limits<float>::infinity()), 0x7c00);
+  EXPECT_EQ(halfFromFloatTowardZero(std::bit_cast<float>(0xffc00000u)), 0xfe00) << "the default NaN";
+  EXPECT_EQ(halfFromFloatTowardZero(std::bit_cast<float>(0x7f800001u)), 0x7e00) << "a signalling NaN, quieted";
+  EXPECT_EQ(halfFromFloatTowardZero(0x1p-24f * 2.9f), 0x0002) << "a denormal, truncated";
+  EXPECT_EQ(halfFromFloatTowardZero(0x1p-25f), 0x0000);
+  EXPECT_EQ(halfFromFloatTowardZero(-0x1p-30f), 0x8000);
+  EXPECT_EQ(floatFromHalf(0x0001), 0x1p-24f);
+  EXPECT_EQ(floatFromHalf(0x7bff), 65504.0f);
+}
+
+// Float targets: clear values as the format stores them (halves toward zero, floats as given),
+// unclamped stores, and the resolve's mean.
+TEST(FramebufferCreate, FloatTargetsClearStoreAndResolve) {
+  auto half = Framebuffer::create(2, 1, DepthFormat::D32Sfloat, 4, softraster::ColourFormat::R16G16B16A16Sfloat);
+  ASSERT_TRUE(half);
+  ASSERT_EQ(half->colour().size(), std::size_t{2} * 4 * 8);
+  half->clear({100000.0f, -2.5f, 0.3f, 3.0f}, 1.0f);
+  std::uint16_t halves[4];
+  std::memcpy(halves, half->colour().data() + 8 * half->sampleIndex(1, 0, 3), sizeof halves);
+  EXPECT_EQ((std::array<int, 4>{halves[0], halves[1], halves[2], halves[3]}),
+            (std::array<int, 4>{0x7bff, 0xc100, 0x34cc, 0x4200}));
+  EXPECT_EQ(half->colourAt(1, 0, 3), (std::array<std::uint8_t, 4>{255, 0, 76, 255})) << "the byte view clamps";
+  // Sample 2 of pixel 0 gets 7 in red: the mean of 65504, 65504, 7, 65504 is 49129.75, toward zero 49120.
+  softraster::detail::blendColour(half->colour().data() + 8 * half->sampleIndex(0, 0, 2), {7.0f, -2.5f, 0.3f, 3.0f},
+                                  softraster::detail::colourBlend(softraster::BlendState{}, half->colourFormat()));
+  const Framebuffer resolved = half->resolve();
+  std::memcpy(halves, resolved.colour().data(), sizeof halves);
+  EXPECT_EQ(softraster::detail::floatFromHalf(halves[0]), 49120.0f);
+  EXPECT_EQ(halves[1], 0xc100);
+  auto f32 = Framebuffer::create(1, 1, DepthFormat::D32Sfloat, 1, softraster::ColourFormat::R32G32B32A32Sfloat);
+  ASSERT_TRUE(f32);
+  f32->clear({100000.0f, -2.5f, 0.3f, 3.0f}, 1.0f);
+  float values[4];
+  std::memcpy(values, f32->colour().data(), sizeof values);
+  EXPECT_EQ((std::array<float, 4>{values[0], values[1], values[2], values[3]}),
+            (std::array<float, 4>{100000.0f, -2.5f, 0.3f, 3.0f}));
 }
 
 TEST(Context, RefusesAFramebufferWithoutPixels) {

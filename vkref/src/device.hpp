@@ -23,13 +23,22 @@
 namespace vkref::detail {
 
 // The colour and depth formats are the request's. Indexed by softraster::ColourFormat.
-inline constexpr VkFormat kColourFormats[] = {VK_FORMAT_R8G8B8A8_UNORM, VK_FORMAT_B8G8R8A8_UNORM,
-                                              VK_FORMAT_R8G8B8A8_SRGB, VK_FORMAT_B8G8R8A8_SRGB};
-// The UNORM format with an sRGB format's bytes (the format itself for any other).
-inline constexpr VkFormat unormTwin(VkFormat format) {
-  return format == VK_FORMAT_R8G8B8A8_SRGB   ? VK_FORMAT_R8G8B8A8_UNORM
-         : format == VK_FORMAT_B8G8R8A8_SRGB ? VK_FORMAT_B8G8R8A8_UNORM
-                                             : format;
+inline constexpr VkFormat kColourFormats[] = {VK_FORMAT_R8G8B8A8_UNORM,
+                                              VK_FORMAT_B8G8R8A8_UNORM,
+                                              VK_FORMAT_R8G8B8A8_SRGB,
+                                              VK_FORMAT_B8G8R8A8_SRGB,
+                                              VK_FORMAT_A2B10G10R10_UNORM_PACK32,
+                                              VK_FORMAT_R16G16B16A16_SFLOAT,
+                                              VK_FORMAT_R32G32B32A32_SFLOAT};
+// 32-bit words per texel of a colour format, and the unsigned integer format of that many words
+// (a view in the same compatibility class) through which a shader reads its bits unconverted.
+inline constexpr std::uint32_t colourWords(VkFormat format) {
+  return format == VK_FORMAT_R16G16B16A16_SFLOAT ? 2u : format == VK_FORMAT_R32G32B32A32_SFLOAT ? 4u : 1u;
+}
+inline constexpr VkFormat colourBitsFormat(VkFormat format) {
+  return colourWords(format) == 4 ? VK_FORMAT_R32G32B32A32_UINT
+         : colourWords(format) == 2 ? VK_FORMAT_R32G32_UINT
+                                    : VK_FORMAT_R32_UINT;
 }
 // Indexed by softraster::DepthFormat.
 inline constexpr VkFormat kDepthFormats[] = {VK_FORMAT_D16_UNORM, VK_FORMAT_X8_D24_UNORM_PACK32, VK_FORMAT_D32_SFLOAT,

@@ -4,8 +4,10 @@
 #include "errors.hpp"
 #include "passes.hpp"
 
+#include <array>
 #include <cstring>
 #include <utility>
+#include <vector>
 
 namespace vkref::detail {
 namespace {
@@ -31,7 +33,7 @@ softraster::Result<HostImages> createHostImages(const Device& device, const Targ
   host.colourFormat = colourFormat;
   host.depthFormat = depthFormat;
   const VkDeviceSize pixels = VkDeviceSize{targets.width} * targets.height;
-  auto colour = Buffer::create(device, pixels * 4, VK_BUFFER_USAGE_TRANSFER_DST_BIT);
+  auto colour = Buffer::create(device, pixels * softraster::colourBytes(colourFormat), VK_BUFFER_USAGE_TRANSFER_DST_BIT);
   if (!colour) return colour.status();
   host.colour = std::move(*colour);
   auto depth = Buffer::create(device, pixels * depthTexelBytes(depthFormat), VK_BUFFER_USAGE_TRANSFER_DST_BIT);
@@ -75,11 +77,7 @@ FrameImages unpack(const HostImages& host, std::uint32_t width, std::uint32_t he
   const std::size_t pixels = std::size_t{width} * height;
   out.width = width;
   out.height = height;
-  out.rgba.resize(pixels * 4);
-  std::memcpy(out.rgba.data(), host.colour.mapped(), pixels * 4);
-  if (softraster::swapsRedBlue(host.colourFormat)) {
-    for (std::size_t i = 0; i < pixels; ++i) std::swap(out.rgba[4 * i], out.rgba[4 * i + 2]);
-  }
+  colourFromStorage(host.colourFormat, host.colour.mapped(), pixels, out.rgba, out.colourWords);
   out.depth.resize(pixels);
   out.depthStorage.resize(pixels);
   const std::uint32_t texelBytes = depthTexelBytes(host.depthFormat);
@@ -103,6 +101,22 @@ FrameImages unpack(const HostImages& host, std::uint32_t width, std::uint32_t he
     std::memcpy(out.stencil.data(), host.stencil.mapped(), pixels);
   }
   return out;
+}
+
+void colourFromStorage(softraster::ColourFormat format, const void* texels, std::size_t count,
+                       std::vector<std::uint8_t>& rgba, std::vector<std::uint32_t>& words) {
+  const std::size_t bytes = softraster::colourBytes(format);
+  const auto* in = static_cast<const std::uint8_t*>(texels);
+  rgba.resize(4 * count);
+  for (std::size_t i = 0; i < count; ++i) {
+    const std::array<std::uint8_t, 4> view = softraster::Framebuffer::viewBytes(format, in + bytes * i);
+    std::memcpy(&rgba[4 * i], view.data(), 4);
+  }
+  words.clear();
+  if (softraster::isTenBit(format) || softraster::isFloat(format)) {
+    words.resize(count * bytes / 4);
+    std::memcpy(words.data(), in, count * bytes);
+  }
 }
 
 }  // namespace vkref::detail

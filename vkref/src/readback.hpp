@@ -1,10 +1,12 @@
 // vkref readback: the copies of a frame's single-sample colour and depth images into host
-// buffers, and their unpacking into FrameImages: colour as RGBA8 bytes, depth as floats in [0, 1] and
+// buffers, and their unpacking into FrameImages: colour as RGBA8 bytes (and, for the 10-bit and
+// float formats, their stored words), depth as floats in [0, 1] and
 // as stored (D16 and X8_D24 as UNORM integers, D32_SFLOAT as the float's bits; a depth/stencil
 // format's depth aspect as its depth-only twin's) and the stencil aspect as bytes.
 // Deliberately no resolve (passes resolves MSAA while rendering; samples.hpp reads the samples), no layout changes (passes leaves
-// the images ready to copy) and no format conversion beyond depth's and colour's byte order
-// (B8G8R8A8 is read back with red and blue swapped into R, G, B, A).
+// the images ready to copy) and no format conversion beyond depth's and colour's byte view
+// (B8G8R8A8 is read back with red and blue swapped into R, G, B, A; wider formats as
+// softraster::Framebuffer::viewBytes shows them).
 #pragma once
 
 #include "device.hpp"
@@ -40,5 +42,11 @@ softraster::Status recordCopies(VkCommandBuffer cmd, const Targets& targets, con
 
 // The images in `host` after the copies have run, colour as R, G, B, A bytes whatever the format.
 FrameImages unpack(const HostImages& host, std::uint32_t width, std::uint32_t height);
+
+// `count` stored colour texels of `format` (colourBytes each) as FrameImages holds them: `rgba`
+// their R, G, B, A byte view, `words` the texels themselves for a format wider than 8 bits per
+// channel (left empty for the 8-bit formats, whose view is exact).
+void colourFromStorage(softraster::ColourFormat format, const void* texels, std::size_t count,
+                       std::vector<std::uint8_t>& rgba, std::vector<std::uint32_t>& words);
 
 }  // namespace vkref::detail

@@ -242,7 +242,7 @@ Result<FrameImages> Renderer::readBack(const PreparedFrame& frame) {
   if (Status s = f.commands->submitAndWait(f.commands->copy()); !s) return s;
   FrameImages images = detail::unpack(f.host, f.targets.width, f.targets.height);
   if (f.samples) {
-    if (Status s = f.samples->unpack(images, f.host.depthFormat); !s) return s;
+    if (Status s = f.samples->unpack(images, f.host.colourFormat, f.host.depthFormat); !s) return s;
   }
   return images;
 }

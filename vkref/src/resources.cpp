@@ -162,6 +162,7 @@ softraster::Result<Targets> createTargets(const Device& device, std::uint32_t wi
   Targets t;
   t.width = width;
   t.height = height;
+  t.colourFormat = colourFormat;
   t.depthFormat = depthFormat;
   t.samples = samples;
   constexpr VkImageUsageFlags colourUsage = VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT;
@@ -176,9 +177,10 @@ softraster::Result<Targets> createTargets(const Device& device, std::uint32_t wi
   t.depth = std::move(*depth);
   if (t.multisampled()) {
     // Sampled too: the per-sample read-back (samples.hpp) fetches every sample in a compute shader.
-    // An sRGB image is read through a UNORM view: its stored bytes, not their decoded values.
+    // Every colour format is read through an unsigned integer view of its texel's size: its
+    // stored bits, not their decoded values.
     auto msColour = Image::create(device, colourFormat, colourUsage | VK_IMAGE_USAGE_SAMPLED_BIT,
-                                  VK_IMAGE_ASPECT_COLOR_BIT, width, height, samples, 1, unormTwin(colourFormat));
+                                  VK_IMAGE_ASPECT_COLOR_BIT, width, height, samples, 1, colourBitsFormat(colourFormat));
     if (!msColour) return msColour.status();
     t.msColour = std::move(*msColour);
     auto msDepth = Image::create(device, depthFormat, depthUsage | VK_IMAGE_USAGE_SAMPLED_BIT, depthAspects(depthFormat),

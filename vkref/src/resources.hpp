@@ -47,7 +47,7 @@ class Buffer {
 class Image {
  public:
   // `bitsFormat`, if given and not `format`: the image is created mutable and gets a second view
-  // of that (compatible) format, bitsView(): an sRGB image read as UNORM, its bytes unconverted.
+  // of that (compatible) format, bitsView(): e.g. a colour image read as R32_UINT, its bits unconverted.
   static softraster::Result<Image> create(const Device& device, VkFormat format, VkImageUsageFlags usage,
                                           VkImageAspectFlags aspect, std::uint32_t width, std::uint32_t height,
                                           VkSampleCountFlagBits samples, std::uint32_t levels = 1,
@@ -76,6 +76,7 @@ class Image {
 // sampled by the per-sample read-back (samples.hpp).
 struct Targets {
   std::uint32_t width = 0, height = 0;
+  VkFormat colourFormat = VK_FORMAT_UNDEFINED;
   VkFormat depthFormat = VK_FORMAT_UNDEFINED;
   VkSampleCountFlagBits samples = VK_SAMPLE_COUNT_1_BIT;
   Image colour, depth;

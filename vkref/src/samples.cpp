@@ -4,6 +4,7 @@
 
 #include "errors.hpp"
 #include "passes.hpp"
+#include "readback.hpp"
 
 #include <read_samples_comp.spv.h>
 #include <read_samples_stencil_comp.spv.h>
@@ -25,6 +26,7 @@ constexpr VkDescriptorType kSampled = VK_DESCRIPTOR_TYPE_SAMPLED_IMAGE;
 
 struct PushConstants {
   std::uint32_t width, height, samples;
+  std::uint32_t colourWords;  // per sample: 1, 2 or 4
 };
 
 // Every stage the render pass wrote the multisampled images in (a depth resolve reads depth in
@@ -129,7 +131,8 @@ softraster::Result<std::unique_ptr<FrameSamples>> FrameSamples::create(const Dev
   }
   const VkDeviceSize pixels = VkDeviceSize{targets.width} * targets.height;
   const VkDeviceSize samples = pixels * static_cast<VkDeviceSize>(targets.samples);
-  auto buffer = Buffer::create(device, (2 * samples + pixels) * 4, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT);
+  auto buffer =
+      Buffer::create(device, ((colourWords(targets.colourFormat) + 1) * samples + pixels) * 4, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT);
   if (!buffer) return buffer.status();
   f->buffer_ = std::move(*buffer);
 
@@ -194,7 +197,7 @@ void FrameSamples::record(VkCommandBuffer cmd) const {
   barrier(cmd, toRead);
   vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, variant_.pipeline);
   vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, variant_.layout, 0, 1, &set_, 0, nullptr);
-  const PushConstants push{t.width, t.height, static_cast<std::uint32_t>(t.samples)};
+  const PushConstants push{t.width, t.height, static_cast<std::uint32_t>(t.samples), colourWords(t.colourFormat)};
   vkCmdPushConstants(cmd, variant_.layout, VK_SHADER_STAGE_COMPUTE_BIT, 0, sizeof push, &push);
   vkCmdDispatch(cmd, (t.width + kGroupSize - 1) / kGroupSize, (t.height + kGroupSize - 1) / kGroupSize, 1);
   const VkImageMemoryBarrier2 back[2] = {
@@ -213,20 +216,21 @@ void FrameSamples::record(VkCommandBuffer cmd) const {
   barrier(cmd, back, &toHost);
 }
 
-Status FrameSamples::unpack(FrameImages& out, softraster::DepthFormat format) const {
+Status FrameSamples::unpack(FrameImages& out, softraster::ColourFormat colourFormat,
+                            softraster::DepthFormat format) const {
   const Targets& t = targets_;
   const std::size_t samples = static_cast<std::size_t>(t.samples);
   const std::size_t pixels = std::size_t{t.width} * t.height;
   const std::size_t n = pixels * samples;
   const auto* words = static_cast<const std::uint32_t*>(buffer_.mapped());
   out.samples = static_cast<std::uint32_t>(samples);
-  out.sampleRgba.resize(4 * n);
-  std::memcpy(out.sampleRgba.data(), words, 4 * n);  // RGBA8 packed R in the low byte, little-endian
+  colourFromStorage(colourFormat, words, n, out.sampleRgba, out.sampleColourWords);
+  words += n * colourWords(t.colourFormat);  // depth and stencil follow the colour
   out.sampleDepth.resize(n);
   out.sampleDepthStorage.resize(n);
   const int bits = softraster::unormDepthBits(format);
   for (std::size_t i = 0; i < n; ++i) {
-    const std::uint32_t word = words[n + i];
+    const std::uint32_t word = words[i];
     float value;
     std::memcpy(&value, &word, 4);
     const std::uint32_t stored = bits != 0 ? unormFromSampled(value, bits) : word;
@@ -239,7 +243,7 @@ Status FrameSamples::unpack(FrameImages& out, softraster::DepthFormat format) co
     out.sampleStencil.resize(n);
     for (std::size_t p = 0; p < pixels; ++p) {
       for (std::size_t s = 0; s < samples; ++s)
-        out.sampleStencil[p * samples + s] = static_cast<std::uint8_t>(words[2 * n + p] >> (8 * s));
+        out.sampleStencil[p * samples + s] = static_cast<std::uint8_t>(words[n + p] >> (8 * s));
     }
   }
   // Sample 0 of depth and stencil is also what the resolve copied out: they must agree (a UNORM

@@ -6,9 +6,9 @@
 // Vulkan's sample order). Recorded into the frame's copy command buffer, so it runs in
 // readBack() and never in the timed submit().
 // Deliberately no resolve and no single-sample path (frames with one sample need none of this),
-// and no format but the frame's own: R8G8B8A8 or B8G8R8A8 colour, UNORM or sRGB (texelFetch
-// returns R, G, B, A for either order, so the samples come back in that order; an sRGB image is
-// fetched through its UNORM view, so its bytes come back as stored) and the five depth formats. The UNORM
+// and no conversion of colour: every colour format is fetched as its bits, through an unsigned
+// integer view of its texel's size (device.hpp's colourBitsFormat), and unpacked on the host as
+// the resolve is (readback.hpp's colourFromStorage); depth in the five depth formats. The UNORM
 // depth a sampled view returns as float(c) * float(1/(2^n - 1)) is turned back into c on the host;
 // that float is one-to-one but for D24's 16777214 and 16777215 (both 1.0), read as 16777215 in
 // samples 1..3 (sample 0 is the resolve's exact value).
@@ -68,7 +68,7 @@ class FrameSamples {
   // Fills out's samples, sampleRgba, sampleDepth, sampleDepthStorage and sampleStencil from the
   // buffer after the commands ran. An error when sample 0 of depth or stencil differs from the
   // sample-0 resolve already in `out` (the read-back would be wrong, not the renderer).
-  softraster::Status unpack(FrameImages& out, softraster::DepthFormat format) const;
+  softraster::Status unpack(FrameImages& out, softraster::ColourFormat colourFormat, softraster::DepthFormat format) const;
 
  private:
   FrameSamples(VkDevice device, const SampleReader::Variant& variant, const Targets& targets)

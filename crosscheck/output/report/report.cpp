@@ -686,8 +686,8 @@ std::string reportHtml(const RunResults& run, const std::filesystem::path& repor
           "<th data-type=\"text\" data-first=\"ascending\">scene</th>"
           "<th data-type=\"number\" title=\"pixels covered by one renderer only\">coverage mismatches</th>"
           "<th data-type=\"number\" title=\"pixels with a channel over the colour threshold\">colour pixels over</th>"
-          "<th data-type=\"number\" title=\"largest over R, G, B, A (8-bit steps)\">colour max |\xCE\x94|</th>"
-          "<th data-type=\"number\" title=\"largest channel mean (8-bit steps)\">colour mean |\xCE\x94|</th>"
+          "<th data-type=\"number\" title=\"largest over R, G, B, A (in the format's steps: 8-bit; 10-bit for A2B10G10R10)\">colour max |\xCE\x94|</th>"
+          "<th data-type=\"number\" title=\"largest channel mean (in the format's steps)\">colour mean |\xCE\x94|</th>"
           "<th data-type=\"number\" data-first=\"ascending\" title=\"RGB, dB; lowest first\">PSNR</th>"
           "<th data-type=\"number\" title=\"pixels with depth over the depth threshold\">depth pixels over</th>"
           "<th data-type=\"number\">depth max |\xCE\x94|</th>"
@@ -705,7 +705,7 @@ std::string reportHtml(const RunResults& run, const std::filesystem::path& repor
   html += stabilitySection(run);
   html += deviationsSection(run);
   html += "<h2>Difference heatmaps</h2>\n" + colourLegend("T") +
-          "<p class=\"run\">T is the scene's colour threshold (8-bit steps); each scene's section shows its own. "
+          "<p class=\"run\">T is the scene's colour threshold (in the format's steps: 8-bit; 10-bit for A2B10G10R10); each scene's section shows its own. "
           "Depth differences use the same colours against the depth threshold.</p>\n";
 
   html += "<h2>Scenes</h2>\n";

@@ -1,11 +1,13 @@
 // Framebuffer: a colour image (R8G8B8A8_UNORM, or B8G8R8A8_UNORM: the same four bytes per sample
-// with red and blue swapped; or either as sRGB) and a depth image (formats.hpp), row 0 at the top,
+// with red and blue swapped; or either as sRGB; or A2B10G10R10_UNORM_PACK32, one word per sample;
+// or R16G16B16A16_SFLOAT / R32G32B32A32_SFLOAT, four halves / floats per sample) and a depth image
+// (formats.hpp), row 0 at the top,
 // with 1 or 4 samples per pixel (samples of a pixel are adjacent, in Vulkan's sample order).
 // Depth is kept as the format stores it: UNORM depth as its integer, D32_SFLOAT as its float's
 // bits; depthValues() reads it back as floats. A depth/stencil format also has a stencil image,
 // one byte per sample in the same order. resolve() averages colour samples as lavapipe's
-// resolve blit does (sRGB ones decoded to linear and encoded again) and keeps depth and stencil
-// sample 0.
+// resolve blit does (sRGB ones decoded to linear and encoded again, 10-bit and float ones averaged
+// as floats and stored as a fragment stores them) and keeps depth and stencil sample 0.
 // Made by Framebuffer::create, which checks the size, format and sample count and returns the
 // error as a Result (a default-constructed Framebuffer has no pixels and no draw accepts it).
 // clear() is deferred: it remembers the values, and the next draw that runs in the Context's
@@ -32,6 +34,11 @@ namespace softraster {
 // The largest width and height create() accepts: lavapipe's maxFramebufferWidth and Height.
 inline constexpr std::uint32_t kMaxFramebufferSize = 16384;
 
+// A colour clear value as the format stores it: the colourBytes(format) bytes of a sample as
+// little-endian words (one, two for halves, four for floats; the rest 0). clear() below says how
+// each format converts it.
+std::array<std::uint32_t, 4> colourClearValue(ColourFormat format, Vec4 colour);
+
 class Framebuffer {
  public:
   Framebuffer() = default;  // no pixels: only a target for assignment
@@ -52,19 +59,25 @@ class Framebuffer {
 
   // A single-sample framebuffer: colour = average of the samples (float sum in sample order,
   // times 0.25, stored as UNORM8; sRGB red, green and blue summed as linear values and encoded as
-  // the fragment stage stores sRGB), depth = sample 0. A single-sample framebuffer resolves to a copy.
+  // the fragment stage stores sRGB; A2B10G10R10 channels summed as v * float(1/1023) (alpha
+  // float(1/3)) and stored as a fragment stores them; float channels summed from +0 and multiplied
+  // with the resolve shader's FTZ and DAZ, halves stored toward zero), depth = sample 0. A
+  // single-sample framebuffer resolves to a copy.
   Framebuffer resolve() const;
   // The same resolve into `out`, reusing its storage when it already has this framebuffer's size
   // and formats with one sample (no allocation per frame).
   void resolveInto(Framebuffer& out) const;
 
   // Clears colour (converted as a UNORM8 store converts; sRGB red, green and blue as lavapipe's
-  // clear encodes them, srgb.hpp's linearToSrgbClearByte), depth (as a depth clear converts:
+  // clear encodes them, srgb.hpp's linearToSrgbClearByte; A2B10G10R10 as Mesa's format packer
+  // does, round(clamp(v) * 1023), alpha round(clamp(a) * 3); halves toward zero, floats as given),
+  // depth (as a depth clear converts:
   // lrint(depth * (2^n - 1)) for UNORM formats) and stencil, if the format has it. Deferred, as
   // the top of this file says.
   void clear(Vec4 colour, float depth, std::uint8_t stencil = 0);
 
-  // 4 bytes per sample in the colour format's order (RGBA, or BGRA); samples() samples per pixel.
+  // colourBytes(colourFormat()) bytes per sample in the colour format's order (RGBA, or BGRA;
+  // A2B10G10R10's little-endian word; four halves or floats, red first); samples() samples per pixel.
   std::vector<std::uint8_t>& colour() { return settled().colour_; }
   const std::vector<std::uint8_t>& colour() const { return settled().colour_; }
 
@@ -82,24 +95,27 @@ class Framebuffer {
   std::vector<float> depthValues() const;
   void depthValuesInto(std::vector<float>& out) const;
 
-  // Index of sample `sample` of pixel (x, y) in depthStorage(), and times 4 in colour().
+  // Index of sample `sample` of pixel (x, y) in depthStorage(), and times colourBytes in colour().
   std::size_t sampleIndex(std::uint32_t x, std::uint32_t y, std::uint32_t sample = 0) const {
     assert(x < width_ && y < height_ && sample < samples_);
     return (static_cast<std::size_t>(y) * width_ + x) * samples_ + sample;
   }
   // The R, G, B and A bytes of one sample of pixel (x, y), in that order whatever the format
-  // stores; (0, 0) is the top-left pixel.
+  // stores; (0, 0) is the top-left pixel. The 10-bit and float formats are scaled to bytes
+  // (viewBytes: a view; their exact bits are in colour()).
   std::array<std::uint8_t, 4> colourAt(std::uint32_t x, std::uint32_t y, std::uint32_t sample = 0) const {
-    const std::uint8_t* p = colour().data() + 4 * sampleIndex(x, y, sample);
-    if (swapsRedBlue(colourFormat_)) return {p[2], p[1], p[0], p[3]};
-    return {p[0], p[1], p[2], p[3]};
+    return viewBytes(colourFormat_, colour().data() + colourBytes(colourFormat_) * sampleIndex(x, y, sample));
   }
+  // One stored sample of `format` as R, G, B, A bytes: 8-bit formats as stored (B8G8R8A8's red and
+  // blue swapped back); a 10-bit v as (v * 255 + 511) / 1023 (the nearest byte), the 2-bit alpha a
+  // as a * 85; halves and floats clamped to [0, 1] (NaN to 0) and rounded as a UNORM8 store.
+  static std::array<std::uint8_t, 4> viewBytes(ColourFormat format, const std::uint8_t* sample);
   // One sample's depth as depth() converts it.
   float depthAt(std::uint32_t x, std::uint32_t y, std::uint32_t sample = 0) const { return depth(sampleIndex(x, y, sample)); }
 
   // For the draw loop's bands: a clear's values, one word per sample each.
   struct PendingClear {
-    std::uint32_t colour;  // as stored (RGBA8 or BGRA8)
+    std::array<std::uint32_t, 4> colour;  // as stored (colourClearValue)
     std::uint32_t depth;   // as stored
     std::uint8_t stencil;  // written only where the format has stencil
   };

@@ -281,9 +281,11 @@ class Context {
     }
 #if SOFTRASTER_HAS_FAST_PATH
     if constexpr (ShadesBatches<Shader>) {
-      // sRGB targets blend in float per pixel (fragment/colour.hpp): the scalar fragment stage.
+      // The fast path blends UNORM8 targets; sRGB, A2B10G10R10 and float targets have their own
+      // arithmetic per pixel (fragment/colour.hpp): the scalar fragment stage.
+      const ColourFormat colour = framebuffer.colourFormat();
       if (options_.method == Method::Exact && options_.fusedMultiplyAdd && detail::fast::cpuRunsFastPath() &&
-          !isSrgb(framebuffer.colourFormat())) {
+          (colour == ColourFormat::R8G8B8A8Unorm || colour == ColourFormat::B8G8R8A8Unorm)) {
         drawFast<Shader, Format>(state, uniforms, vertices, indices, framebuffer, scratch);
         return;
       }

@@ -87,6 +87,10 @@ struct FrameRequest {
 struct FrameImages {
   std::uint32_t width = 0, height = 0;
   std::vector<std::uint8_t> rgba;          // width*height*4, R, G, B, A whatever the format; row 0 at the top
+  // A2B10G10R10 and the float formats: each pixel's stored texel as words (one, two for four
+  // halves, four for four floats; rgba is then its view, Framebuffer::viewBytes); empty for the
+  // 8-bit formats, whose rgba is exact.
+  std::vector<std::uint32_t> colourWords;
   std::vector<float> depth;                // width*height, as floats in [0, 1]
   std::vector<std::uint32_t> depthStorage; // width*height, as stored: UNORM integer or the float's bits
   std::vector<std::uint8_t> stencil;       // width*height with a depth/stencil format, else empty
@@ -96,6 +100,7 @@ struct FrameImages {
   // sample `samples` is 1 and these stay empty.
   std::uint32_t samples = 1;
   std::vector<std::uint8_t> sampleRgba;           // 4 bytes per sample
+  std::vector<std::uint32_t> sampleColourWords;   // as `colourWords`
   std::vector<float> sampleDepth;                 // as `depth`
   std::vector<std::uint32_t> sampleDepthStorage;  // as `depthStorage`
   std::vector<std::uint8_t> sampleStencil;        // with a depth/stencil format, else empty

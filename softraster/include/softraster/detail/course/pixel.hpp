@@ -184,7 +184,7 @@ class CourseFragments {
     for (unsigned s = 0; s < samples_; ++s) {
       if (!(passed & (1u << s))) continue;
       const std::size_t sample = pixel * samples_ + s;
-      blendColour(target_.colour + 4 * sample, c, target_.blend);
+      blendColour(target_.colour + target_.colourBytes * sample, c, target_.blend);
       if (target_.depth.testEnable && target_.depth.writeEnable) target_.depthStorage[sample] = stored;
     }
   }

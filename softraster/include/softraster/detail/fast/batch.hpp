@@ -202,7 +202,7 @@ struct BlendInputs {
 // 255 - v in every byte.
 [[SOFTRASTER_FAST_TARGET]] inline __m256i inverse(__m256i v) { return _mm256_xor_si256(v, _mm256_set1_epi8(-1)); }
 
-// blendFactor8 on bytes: the factor for the colour channels (alpha = false) or for alpha.
+// blendFactorUnorm<255> on bytes: the factor for the colour channels (alpha = false) or for alpha.
 [[SOFTRASTER_FAST_TARGET]] inline __m256i factorBytes(BlendFactor f, bool alpha, const BlendInputs& in) {
   const __m256i ones = _mm256_set1_epi8(-1);
   switch (f) {

@@ -68,6 +68,7 @@ struct FragmentTarget {
   DepthRange depthRange;
   bool inverseZ;
   std::uint32_t width;
+  std::uint32_t colourBytes;  // per sample: colourBytes(the framebuffer's format)
   std::uint8_t* colour;
   std::uint32_t* depthStorage;
   std::uint8_t* stencilStorage;  // null without a stencil aspect
@@ -89,6 +90,7 @@ inline FragmentTarget fragmentTarget(const PipelineState& state, Framebuffer& fr
           fragmentDepthRange(viewport, state.rasterization.depthClampEnable),
           inverseZ,
           framebuffer.width(),
+          colourBytes(framebuffer.colourFormat()),
           framebuffer.colour().data(),
           framebuffer.depthStorage().data(),
           hasStencil(framebuffer.depthFormat()) ? framebuffer.stencilStorage().data() : nullptr};
@@ -162,7 +164,7 @@ class FragmentStage {
         if (!shadedFirst) colour = shadeAt(t, px, py, 0.0f, varyings.data());
       }
       if (target_.coverage.alphaToOne) colour.w = 1.0f;
-      blendColour(target_.colour + 4 * pixel, colour, target_.blend);
+      blendColour(target_.colour + target_.colourBytes * pixel, colour, target_.blend);
       if (target_.depth.testEnable && target_.depth.writeEnable) target_.depthStorage[pixel] = stored;
     });
   }
@@ -222,7 +224,7 @@ class FragmentStage {
       for (int s = 0; s < 4; ++s) {
         if (!(passed & (1u << s))) continue;
         const std::size_t sample = pixel * 4 + static_cast<std::size_t>(s);
-        blendColour(target_.colour + 4 * sample, c, target_.blend);
+        blendColour(target_.colour + target_.colourBytes * sample, c, target_.blend);
         if (target_.depth.testEnable && target_.depth.writeEnable) target_.depthStorage[sample] = stored[s];
       }
     });
@@ -284,7 +286,7 @@ class FragmentStage {
       for (int s = 0; s < 4; ++s) {
         const unsigned bit = 1u << s;
         const std::size_t sample = pixel * 4 + static_cast<std::size_t>(s);
-        if (written & bit) blendColour(target_.colour + 4 * sample, colour, target_.blend);
+        if (written & bit) blendColour(target_.colour + target_.colourBytes * sample, colour, target_.blend);
         if ((passed & bit) && target_.depth.testEnable && target_.depth.writeEnable) target_.depthStorage[sample] = stored;
       }
     });
@@ -323,7 +325,7 @@ class FragmentStage {
       if (target_.stencil.enable && !stencilTestAndUpdate(t.frontFacing, sample, passes)) continue;
       if (!passes) continue;
       if (target_.coverage.alphaToOne) c.w = 1.0f;
-      blendColour(target_.colour + 4 * sample, c, target_.blend);
+      blendColour(target_.colour + target_.colourBytes * sample, c, target_.blend);
       if (target_.depth.testEnable && target_.depth.writeEnable) target_.depthStorage[sample] = stored;
     }
   }
