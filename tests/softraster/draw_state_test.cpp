@@ -225,7 +225,9 @@ TEST(DrawState, SampleMaskAndSampleShadingRules) {
 
 // 4x MSAA lines are drawn (rectangular, Bresenham, polygon mode line); a sample mask leaves
 // Bresenham lines whole (lavapipe draws them with multisampling off, so only a mask of 0 drops
-// them) and narrows rectangular ones; the course's 1/z buffer with 4 samples is refused.
+// them) and narrows rectangular ones; alpha to coverage, alpha to one and sample shading with
+// Bresenham lines are refused (Vulkan forbids them); the course's 1/z buffer with 4 samples is
+// refused.
 TEST(DrawState, MsaaLineRules) {
   const auto drawMsaa = [](softraster::PipelineState state, softraster::DepthMode depthMode = softraster::DepthMode::Vulkan) {
     softraster::Framebuffer framebuffer =
@@ -269,6 +271,23 @@ TEST(DrawState, MsaaLineRules) {
   EXPECT_TRUE(rectangularStatus.ok());
   masked.multisample.sampleMask = 0xf;
   EXPECT_LT(rectangularMasked, drawMsaa(masked).second);
+  // Alpha to coverage, alpha to one and sample shading are invalid with Bresenham lines in Vulkan
+  // (VUID-...-02766), whatever the topology or sample count: refused, not drawn by guesswork.
+  for (int which = 0; which < 3; ++which) {
+    softraster::PipelineState bresenham = lines(1.0f);
+    bresenham.rasterization.lineRasterization = softraster::LineRasterization::Bresenham;
+    bresenham.multisample.alphaToCoverageEnable = which == 0;
+    bresenham.multisample.alphaToOneEnable = which == 1;
+    bresenham.multisample.sampleShadingEnable = which == 2;
+    const softraster::Status refused = drawMsaa(bresenham).first;
+    ASSERT_FALSE(refused.ok());
+    EXPECT_NE(refused.message().find("lineRasterizationMode-02766"), std::string::npos) << refused.message();
+    bresenham.rasterization.lineRasterization = softraster::LineRasterization::Rectangular;
+    EXPECT_TRUE(drawMsaa(bresenham).first.ok());
+  }
+  softraster::PipelineState unknownMode = lines(1.0f);
+  unknownMode.rasterization.lineRasterization = static_cast<softraster::LineRasterization>(7);
+  EXPECT_EQ(drawMsaa(unknownMode).first.message(), "unknown line rasterization mode");
   const softraster::Status inverseZ = drawMsaa(lines(1.0f), softraster::DepthMode::InverseZ).first;
   ASSERT_FALSE(inverseZ.ok());
   EXPECT_NE(inverseZ.message().find("the 1/z depth buffer takes one sample per pixel"), std::string::npos)

@@ -171,10 +171,16 @@ class Context {
     if (b.colorBlendOp > BlendOp::Max || b.alphaBlendOp > BlendOp::Max) return Status::error("unknown blend op");
     if (b.colorWriteMask > kColourRGBA) return Status::error("colour write mask has bits other than R, G, B and A");
     if (b.logicOp > LogicOp::Set) return Status::error("unknown logic op");
-    const float minSampleShading = state.multisample.minSampleShading;
-    if (state.multisample.sampleShadingEnable && !(minSampleShading >= 0.0f && minSampleShading <= 1.0f)) {
+    const MultisampleState& ms = state.multisample;
+    if (ms.sampleShadingEnable && !(ms.minSampleShading >= 0.0f && ms.minSampleShading <= 1.0f)) {
       return Status::error("minSampleShading must be in [0, 1] (VUID-VkPipelineMultisampleStateCreateInfo-"
                            "minSampleShading-00786)");
+    }
+    if (rs.lineRasterization > LineRasterization::Bresenham) return Status::error("unknown line rasterization mode");
+    if (rs.lineRasterization == LineRasterization::Bresenham &&
+        (ms.alphaToCoverageEnable || ms.alphaToOneEnable || ms.sampleShadingEnable)) {
+      return Status::error("alpha to coverage, alpha to one and sample shading need rectangular lines "
+                           "(VUID-VkGraphicsPipelineCreateInfo-lineRasterizationMode-02766)");
     }
     const DepthState& ds = state.depth;
     if (ds.compareOp > CompareOp::Always) return Status::error("unknown depth compare op");

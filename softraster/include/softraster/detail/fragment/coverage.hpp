@@ -12,9 +12,8 @@
 //   - alpha to one then replaces the alpha of the colour with 1.0 before blending;
 //   - 4x MSAA Bresenham lines of a line topology are drawn with multisampling off (lvp_execute.c):
 //     no sample mask applies (only a mask of 0 discards the draw). Vulkan forbids alpha to
-//     coverage, alpha to one and sample shading there (VUID-VkGraphicsPipelineCreateInfo-
-//     lineRasterizationMode-02766, refused by crosscheck's loader); a library caller who sets
-//     them gets lavapipe's multisampling-off rules (fragment/shade.hpp), which are not measured;
+//     coverage, alpha to one and sample shading with Bresenham lines (VUID-VkGraphicsPipeline
+//     CreateInfo-lineRasterizationMode-02766): Context refuses them, as crosscheck's loader does;
 //   - sample shading: lavapipe's min_samples = ceil(samples * minSampleShading); above 1 the
 //     fragment shader runs once for every covered sample (not only min_samples of them). Each
 //     invocation's gl_FragCoord.xy is the sample's position (px + its offset) and .z the depth

@@ -14,7 +14,7 @@
 //     for them, so coverage, depth and the shader are the single-sample ones, depth and stencil
 //     are tested and written at sample 0 only, and the colour goes to all four samples, the draw
 //     region cut exactly (single-sample scissor planes); the sample mask does not apply (alpha to
-//     coverage, invalid there in Vulkan, keeps or drops the whole fragment: not measured); with
+//     coverage, alpha to one and sample shading are invalid there, Context refuses them); with
 //     Deviations::Spec every sample the mask keeps is covered and tested with the centre's depth;
 //   - depth is tested and written only with the depth test on (Vulkan); the course's 1/z buffer
 //     (DepthMode::InverseZ) compares the other way round, larger being nearer.
@@ -245,15 +245,11 @@ class FragmentStage {
       [[maybe_unused]] float fragDepth = 0.0f;
       unsigned kept = tested;
       const bool shadedFirst = kBuiltins || target_.coverage.shadesFirst();
-      if (shadedFirst) {  // a discarded fragment, or one its alpha does not cover, tests and writes nothing
+      if (shadedFirst) {  // a discarded fragment tests and writes nothing
         // Multisampling off (lavapipe): gl_SampleMaskIn is 1 and bit 0 of gl_SampleMask decides.
         unsigned maskOut = ~0u;
         if (!shadeFirst(t, px, py, 0.0f, varyings.data(), colour, fragDepth, spec ? tested : 1u, maskOut)) return;
         kept &= spec ? maskOut : ((maskOut & 1u) ? 0xfu : 0u);
-        if (target_.coverage.alphaToCoverage) {
-          // lavapipe: the single-sample rule (alpha > 0.5) keeps or drops the whole fragment.
-          kept &= spec ? alphaToCoverageSamples<4>(colour.w) : (alphaToCoverageSamples<1>(colour.w) ? 0xfu : 0u);
-        }
         if (kept == 0) return;
       }
       std::uint32_t stored = 0;
@@ -281,7 +277,6 @@ class FragmentStage {
       if constexpr (!kBuiltins) {
         if (!shadedFirst) colour = shadeAt(t, px, py, 0.0f, varyings.data());
       }
-      if (target_.coverage.alphaToOne) colour.w = 1.0f;
       const unsigned written = spec ? passed : 0xfu;  // lavapipe: sample 0 passing writes every colour sample
       for (int s = 0; s < 4; ++s) {
         const unsigned bit = 1u << s;
