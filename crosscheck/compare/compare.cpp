@@ -178,6 +178,21 @@ std::uint64_t coveredPixels(const Frame& frame, const Scene& scene) {
   return count;
 }
 
+std::uint64_t colourDifferingPixels(const Frame& a, const Frame& b) {
+  if (a.rgba.size() != b.rgba.size() || a.colourWords.size() != b.colourWords.size()) {
+    return std::max(a.rgba.size(), b.rgba.size()) / 4;
+  }
+  const std::size_t pixels = a.rgba.size() / 4, words = pixels == 0 ? 0 : a.colourWords.size() / pixels;
+  std::uint64_t n = 0;
+  for (std::size_t i = 0; i < pixels; ++i) {
+    const bool bytes = !std::equal(a.rgba.begin() + 4 * i, a.rgba.begin() + 4 * i + 4, b.rgba.begin() + 4 * i);
+    const bool stored = words != 0 && !std::equal(a.colourWords.begin() + words * i, a.colourWords.begin() + words * (i + 1),
+                                                  b.colourWords.begin() + words * i);
+    n += bytes || stored;
+  }
+  return n;
+}
+
 std::vector<std::uint8_t> diffHeatmap(const Frame& a, const Frame& b, const Scene& scene) {
   const std::size_t pixels = static_cast<std::size_t>(a.width) * a.height;
   std::vector<std::uint8_t> out(4 * pixels, 0);

@@ -29,6 +29,10 @@ Comparison compareFrames(const Frame& result, const Frame& reference, const Scen
 // Pixels covered in a frame (in any sample, colour, depth or stencil differs from the scene's clear values).
 std::uint64_t coveredPixels(const Frame& frame, const Scene& scene);
 
+// Pixels whose (resolved) colour differs between two frames at all: any byte, or for a wider format
+// any stored bit. Frames of different sizes differ in every pixel of the larger.
+std::uint64_t colourDifferingPixels(const Frame& a, const Frame& b);
+
 // RGBA8 heatmap of the difference: black where equal, blue up to the colour threshold, red to
 // yellow above it by magnitude, magenta where coverage differs.
 std::vector<std::uint8_t> diffHeatmap(const Frame& result, const Frame& reference, const Scene& scene);

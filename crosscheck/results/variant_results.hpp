@@ -36,7 +36,7 @@ struct VariantRun {
   // Against lavapipe's frame; absent when either failed.
   std::optional<std::uint64_t> coverageMismatches;
   std::optional<int> colourMaxDelta;  // the largest |Δ| of any channel, 8-bit steps
-  std::optional<std::uint64_t> differingPixels;  // pixels whose RGBA differs at all
+  std::optional<std::uint64_t> differingPixels;  // pixels whose colour differs at all (colourDifferingPixels)
   std::optional<bool> withinTolerance;  // the scene's limits (compareFrames) held
   std::optional<HitCounts> hits;      // when counted
   std::string error;                  // one line when the variant failed

@@ -56,16 +56,6 @@ double memsetGigabytesPerSecond() {
   return s > 0 ? static_cast<double>(bytes) / s / 1e9 : 0;
 }
 
-// Pixels whose RGBA bytes differ at all (frames of one size).
-std::uint64_t pixelsDiffering(const Frame& a, const Frame& b) {
-  std::uint64_t count = 0;
-  for (std::size_t i = 0; i + 3 < a.rgba.size() && i + 3 < b.rgba.size(); i += 4) {
-    count += !std::equal(a.rgba.begin() + static_cast<std::ptrdiff_t>(i), a.rgba.begin() + static_cast<std::ptrdiff_t>(i + 4),
-                         b.rgba.begin() + static_cast<std::ptrdiff_t>(i));
-  }
-  return count;
-}
-
 std::uint64_t depthBytes(softraster::DepthFormat format) {
   return format == softraster::DepthFormat::D16Unorm ? 2 : 4;
 }
@@ -214,7 +204,7 @@ BenchScene benchScene(const Scene& scene, const BenchOptions& options, const Ben
       continue;
     }
     run.agreement = compareFrames(*frame, *reference, scene);
-    run.pixelsDiffering = pixelsDiffering(*frame, *reference);
+    run.pixelsDiffering = colourDifferingPixels(*frame, *reference);
   }
   if (lavapipe.run.ok()) lavapipe.run.ratioVsLavapipe = 1;
   for (auto& contender : contenders) out.runs.push_back(std::move(contender->run));

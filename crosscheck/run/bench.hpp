@@ -80,7 +80,7 @@ struct BenchRun {
   // softraster only: this method's last frame against lavapipe's (empty for lavapipe itself or
   // when either failed).
   std::optional<Comparison> agreement;
-  std::uint64_t pixelsDiffering = 0;  // with agreement: pixels whose RGBA bytes differ from lavapipe's at all
+  std::uint64_t pixelsDiffering = 0;  // with agreement: pixels whose colour differs from lavapipe's at all (compare.hpp)
   double ratioVsLavapipe = 0;      // lavapipe median / this median (> 1: softraster faster); 0 when unknown
   std::string error;               // one line when this renderer failed (its numbers are then partial)
   bool ok() const { return error.empty(); }

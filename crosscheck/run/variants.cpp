@@ -17,15 +17,6 @@ using timing::Clock;
 using timing::millisecondsSince;
 using timing::median;
 
-std::uint64_t differingPixels(const Frame& a, const Frame& b) {
-  if (a.rgba.size() != b.rgba.size()) return std::max(a.rgba.size(), b.rgba.size()) / 4;
-  std::uint64_t n = 0;
-  for (std::size_t i = 0; i + 3 < a.rgba.size(); i += 4) {
-    n += !std::equal(a.rgba.begin() + i, a.rgba.begin() + i + 4, b.rgba.begin() + i);
-  }
-  return n;
-}
-
 // A 1/z frame's depth cleared to 0 (infinitely far) where it was not drawn: stored as the scene's
 // clear depth instead, so compareFrames sees the same coverage as in a z/w frame (its depth
 // values stay 1/z: they are not comparable with Vulkan's and are not charted).
@@ -187,7 +178,7 @@ VariantResults runVariants(const Scene& scene, const std::vector<Variant>& varia
         const Comparison c = compareFrames(*frame, *reference.frame, scene);
         run.coverageMismatches = c.coverageMismatches;
         run.colourMaxDelta = *std::max_element(c.colourMaxDelta.begin(), c.colourMaxDelta.end());
-        run.differingPixels = differingPixels(*frame, *reference.frame);
+        run.differingPixels = colourDifferingPixels(*frame, *reference.frame);
         run.withinTolerance = c.passed();
       }
       if (frame && counting && referenceHits) {

@@ -185,6 +185,57 @@ TEST(ColourFormat, BlendingScenesAgreeOnFloatTargets) {
   }
 }
 
+// The comparison sees the stored bits of a wider format, not its byte view: one 10-bit step in one
+// sample (not 0), one unit in the last place of a half or a float, and the sign of a zero are each
+// caught, though the bytes of the view stay the same.
+TEST(ColourFormat, ADifferenceBelowTheByteViewIsCaught) {
+  for (const std::string format : {"a2b10g10r10_unorm", "r16g16b16a16_sfloat", "r32g32b32a32_sfloat"}) {
+    SCOPED_TRACE(format);
+    const std::string file = format == "a2b10g10r10_unorm" ? "colour_format_10bit.json" : "colour_format_float.json";
+    auto scene = crosscheck::loadScene(agreement::kScenes / file, {"framebuffer.colour_format=" + format,
+                                                                    "draws.1.colours=[[0.5, 0.25, 0.75, 1], "
+                                                                    "[0.5, 0.25, 0.75, 1], [0.5, 0.25, 0.75, 1]]"});
+    ASSERT_TRUE(scene) << scene.error();
+    auto frame = crosscheck::renderSoftraster(*scene);
+    ASSERT_TRUE(frame) << frame.error();
+    const crosscheck::Frame& a = *frame;
+    ASSERT_FALSE(a.sampleColourWords.empty());
+    const std::size_t words = a.colourWords.size() / (std::size_t{a.width} * a.height);
+    // A pixel inside draw 1's triangle (cell 0, a plain store of one colour), every sample alike.
+    std::size_t pixel = 0;
+    while (pixel < a.colourWords.size() / words &&
+           !(a.rgba[4 * pixel] == 128 && a.rgba[4 * pixel + 1] == 64 && a.rgba[4 * pixel + 2] == 191)) {
+      ++pixel;
+    }
+    ASSERT_LT(pixel, a.colourWords.size() / words) << "no pixel of draw 1 found";
+    crosscheck::Frame b = a;
+    b.sampleColourWords[(pixel * 4 + 2) * words] ^= 1u;  // sample 2: red's lowest bit
+    crosscheck::Comparison c = crosscheck::compareFrames(a, b, *scene);
+    EXPECT_EQ(c.colourMaxDelta[0], 1);
+    EXPECT_EQ(c.resolvedColourMaxDelta[0], 0);
+    EXPECT_EQ(c.coverageMismatches, 0u);
+    EXPECT_EQ(b.sampleRgba, a.sampleRgba) << "the byte view does not show it";
+    b = a;
+    b.colourWords[pixel * words] ^= 1u;  // the resolve
+    EXPECT_EQ(crosscheck::colourDifferingPixels(a, b), 1u);
+    EXPECT_EQ(crosscheck::compareFrames(a, b, *scene).resolvedColourMaxDelta[0], 1);
+    EXPECT_EQ(crosscheck::colourDifferingPixels(a, a), 0u);
+  }
+  // -0 and +0 differ by one step.
+  crosscheck::Frame zero;
+  zero.width = zero.height = 1;
+  zero.rgba = {0, 0, 0, 0};
+  zero.colourFormat = softraster::ColourFormat::R32G32B32A32Sfloat;
+  zero.colourWords = {0u, 0u, 0u, 0u};
+  zero.depthStorage = {0u};
+  zero.depth = {0.0f};
+  crosscheck::Frame negative = zero;
+  negative.colourWords[1] = 0x80000000u;
+  auto scene = crosscheck::loadScene(agreement::kScenes / "colour_format_float.json", {});
+  ASSERT_TRUE(scene);
+  EXPECT_EQ(crosscheck::compareFrames(zero, negative, *scene).colourMaxDelta[1], 1);
+}
+
 // Colours beyond [0, 1] are refused for targets that clamp, and non-finite ones for any.
 TEST(ColourFormat, ColourRangeFollowsTheTarget) {
   expectSceneError({"framebuffer.colour_format=r8g8b8a8_unorm", "framebuffer.clear_colour=[2, 0, 0, 1]"},
