@@ -23,6 +23,20 @@ import sys
 sys.path.insert(0, os.path.dirname(__file__))
 from clip_layout import clip, dump, quad, BACKGROUND  # noqa: E402
 
+
+def cell_draws(states, rng, w, h, cell_w, cell_h, columns, jitter, margin, colours_of):
+    """One triangle per (name, blend) state, cell by cell (left to right, top to bottom): three
+    points jittered around the cell's centre (+-jitter in x, +-28 in y; the centre `margin`
+    pixels right of the cell's), coloured by colours_of(rng)."""
+    draws = []
+    for i, (name, blend) in enumerate(states):
+        cx, cy = (i % columns) * cell_w + cell_w / 2 + margin, (i // columns) * cell_h + cell_h / 2
+        points = [[cx + rng.uniform(-jitter, jitter), cy + rng.uniform(-28, 28)] for _ in range(3)]
+        draws.append({"name": f"cell {i} ({name})", "positions": [clip(x, y, w, h) for x, y in points],
+                      "colours": colours_of(rng), "cull": "none", "depth_test": False, "blend": blend})
+    return draws
+
+
 W, H = 192, 136
 CELL_W, CELL_H = 48, 60
 STATES = [
@@ -41,17 +55,19 @@ STATES = [
 
 rng = random.Random(71)
 draws = [quad("background", 0, 0, W, 2 * CELL_H, BACKGROUND, W, H, depth_test=False)]
-for i, (name, blend) in enumerate(STATES):
-    cx, cy = (i % 4) * CELL_W + CELL_W / 2, (i // 4) * CELL_H + CELL_H / 2
-    points = [[cx + rng.uniform(-22, 22), cy + rng.uniform(-28, 28)] for _ in range(3)]
-    # Red high and blue low or the other way round, alpha anywhere: a swap shows in every byte.
+
+
+def red_blue_apart(rng):
+    """Red high and blue low or the other way round, alpha anywhere: a swap shows in every byte."""
     colours = []
     for k in range(3):
         high, low = round(rng.uniform(0.7, 0.97), 3), round(rng.uniform(0.03, 0.3), 3)
         red, blue = (high, low) if k % 2 == 0 else (low, high)
         colours.append([red, round(rng.uniform(0.1, 0.9), 3), blue, round(rng.uniform(0.1, 0.95), 3)])
-    draws.append({"name": f"cell {i} ({name})", "positions": [clip(x, y, W, H) for x, y in points],
-                  "colours": colours, "cull": "none", "depth_test": False, "blend": blend})
+    return colours
+
+
+draws += cell_draws(STATES, rng, W, H, CELL_W, CELL_H, columns=4, jitter=22, margin=0, colours_of=red_blue_apart)
 
 dump("colour_format_bgra.json", {
     "description": "A B8G8R8A8_UNORM colour target with 4x MSAA: eight triangles over a background whose colour and "
@@ -92,15 +108,16 @@ SRGB_STATES = [
 ]
 rng = random.Random(83)
 draws = [quad("background", 0, 0, W, 2 * CELL_H, BACKGROUND, W, H, depth_test=False)]
-for i, (name, blend) in enumerate(SRGB_STATES):
-    cx, cy = (i % 6) * CELL_W + CELL_W / 2 + 1, (i // 6) * CELL_H + CELL_H / 2
-    points = [[cx + rng.uniform(-20, 20), cy + rng.uniform(-28, 28)] for _ in range(3)]
-    # One vertex dark (linear values near the sRGB curve's linear segment), one bright, one anywhere.
-    colours = [[round(rng.uniform(0.0, 0.006), 4) for _ in range(3)] + [round(rng.uniform(0.1, 0.9), 3)],
-               [round(rng.uniform(0.75, 1.0), 3) for _ in range(3)] + [round(rng.uniform(0.1, 0.9), 3)],
-               [round(rng.uniform(0.0, 1.0), 3) for _ in range(4)]]
-    draws.append({"name": f"cell {i} ({name})", "positions": [clip(x, y, W, H) for x, y in points],
-                  "colours": colours, "cull": "none", "depth_test": False, "blend": blend})
+
+
+def dark_bright_any(rng):
+    """One vertex dark (linear values near the sRGB curve's linear segment), one bright, one anywhere."""
+    return [[round(rng.uniform(0.0, 0.006), 4) for _ in range(3)] + [round(rng.uniform(0.1, 0.9), 3)],
+            [round(rng.uniform(0.75, 1.0), 3) for _ in range(3)] + [round(rng.uniform(0.1, 0.9), 3)],
+            [round(rng.uniform(0.0, 1.0), 3) for _ in range(4)]]
+
+
+draws += cell_draws(SRGB_STATES, rng, W, H, CELL_W, CELL_H, columns=6, jitter=20, margin=1, colours_of=dark_bright_any)
 
 dump("colour_format_srgb.json", {
     "description": "An R8G8B8A8_SRGB colour target with 4x MSAA: twelve triangles over a background whose colour and "
@@ -141,15 +158,16 @@ TEN_BIT_STATES = [
 ]
 rng = random.Random(97)
 draws = [quad("background", 0, 0, W, 2 * CELL_H, BACKGROUND, W, H, depth_test=False)]
-for i, (name, blend) in enumerate(TEN_BIT_STATES):
-    cx, cy = (i % 6) * CELL_W + CELL_W / 2 + 1, (i // 6) * CELL_H + CELL_H / 2
-    points = [[cx + rng.uniform(-20, 20), cy + rng.uniform(-28, 28)] for _ in range(3)]
-    # Two vertices anywhere in [0, 1], one at its ends (0 and 1: the conversion's extremes).
-    colours = [[round(rng.uniform(0.0, 1.0), 4) for _ in range(4)],
-               [round(rng.uniform(0.0, 1.0), 4) for _ in range(4)],
-               [float(rng.choice([0, 1])) for _ in range(4)]]
-    draws.append({"name": f"cell {i} ({name})", "positions": [clip(x, y, W, H) for x, y in points],
-                  "colours": colours, "cull": "none", "depth_test": False, "blend": blend})
+
+
+def any_any_ends(rng):
+    """Two vertices anywhere in [0, 1], one at its ends (0 and 1: the conversion's extremes)."""
+    return [[round(rng.uniform(0.0, 1.0), 4) for _ in range(4)],
+            [round(rng.uniform(0.0, 1.0), 4) for _ in range(4)],
+            [float(rng.choice([0, 1])) for _ in range(4)]]
+
+
+draws += cell_draws(TEN_BIT_STATES, rng, W, H, CELL_W, CELL_H, columns=6, jitter=20, margin=1, colours_of=any_any_ends)
 
 dump("colour_format_10bit.json", {
     "description": "An A2B10G10R10_UNORM_PACK32 colour target with 4x MSAA: twelve triangles over a background whose "
@@ -192,15 +210,17 @@ rng = random.Random(101)
 # A background beyond [0, 1]: bright, negative, and past the largest half (65504) in one corner.
 background = [[2.5, -0.75, 0.3, 1.5], [0.25, 3.0, -1.5, 0.5], [70000.0, 0.5, 0.002, -0.25], [0.00001, 0.8, 1.25, 2.0]]
 draws = [quad("background", 0, 0, W, 2 * CELL_H, background, W, H, depth_test=False)]
-for i, (name, blend) in enumerate(FLOAT_STATES):
-    cx, cy = (i % 6) * CELL_W + CELL_W / 2 + 1, (i // 6) * CELL_H + CELL_H / 2
-    points = [[cx + rng.uniform(-20, 20), cy + rng.uniform(-28, 28)] for _ in range(3)]
-    # One vertex in [0, 1], one beyond it both ways, one tiny (half denormals, below 2^-14).
-    colours = [[round(rng.uniform(0.0, 1.0), 4) for _ in range(4)],
-               [round(rng.uniform(-3.0, 40.0), 3) for _ in range(4)],
-               [round(rng.uniform(0.0, 0.00004), 9) for _ in range(3)] + [round(rng.uniform(0.1, 0.9), 3)]]
-    draws.append({"name": f"cell {i} ({name})", "positions": [clip(x, y, W, H) for x, y in points],
-                  "colours": colours, "cull": "none", "depth_test": False, "blend": blend})
+
+
+def unit_beyond_tiny(rng):
+    """One vertex in [0, 1], one beyond it both ways, one tiny (half denormals, below 2^-14)."""
+    return [[round(rng.uniform(0.0, 1.0), 4) for _ in range(4)],
+            [round(rng.uniform(-3.0, 40.0), 3) for _ in range(4)],
+            [round(rng.uniform(0.0, 0.00004), 9) for _ in range(3)] + [round(rng.uniform(0.1, 0.9), 3)]]
+
+
+draws += cell_draws(FLOAT_STATES, rng, W, H, CELL_W, CELL_H, columns=6, jitter=20, margin=1,
+                    colours_of=unit_beyond_tiny)
 # In the bottom strip's right end, a quad whose every value is a half denormal (below 2^-14).
 draws.append(quad("half denormals", 180, 2 * CELL_H + 3, 70, 12,
                   [[0.00006, 0.0000001, 0.00003, 0.00005], [0.000001, 0.00004, 0.00006, 0.00002],

@@ -84,9 +84,12 @@ void Framebuffer::resolveInto(Framebuffer& out) const {
   const float average = 1.0f / static_cast<float>(samples_);
   const bool srgb = isSrgb(colourFormat_);
   std::size_t p = 0;
-  if (isFloat(colourFormat_)) {  // the resolve shader's sum and product under FTZ and DAZ, then a fragment store
+  if (isTenBit(colourFormat_) || isFloat(colourFormat_)) {
+    // lavapipe's resolve shader: each sample fetched as floats, summed from +0 in sample order and
+    // multiplied under FTZ and DAZ (the 10-bit values are never denormal), stored as a fragment.
     const std::uint32_t bytes = colourBytes(colourFormat_);
     const detail::ColourBlend store = detail::colourBlend(BlendState{}, colourFormat_);
+    const float toFloat10 = static_cast<float>(1.0 / 1023.0), toFloat2 = static_cast<float>(1.0 / 3.0);
     for (; p < pixels; ++p) {
       std::uint8_t* pixel = out.colour_.data() + bytes * p;
       const std::uint8_t* first = colour_.data() + bytes * p * samples_;
@@ -95,8 +98,14 @@ void Framebuffer::resolveInto(Framebuffer& out) const {
       } else {
         float sum[4] = {0.0f, 0.0f, 0.0f, 0.0f};
         for (std::uint32_t s = 0; s < samples_; ++s) {
-          float values[4];  // the texel fetch's floats: halves widened exactly
-          if (bytes == 8) {
+          float values[4];  // the texel fetch's floats: 10-bit v * float(1/1023), halves widened exactly
+          if (bytes == 4) {
+            std::uint32_t word;
+            std::memcpy(&word, first + 4 * s, sizeof word);
+            for (int c = 0; c < 4; ++c) {
+              values[c] = static_cast<float>(tenBitChannel(word, c)) * (c < 3 ? toFloat10 : toFloat2);
+            }
+          } else if (bytes == 8) {
             std::uint16_t halves[4];
             std::memcpy(halves, first + 8 * s, sizeof halves);
             for (int c = 0; c < 4; ++c) values[c] = detail::floatFromHalf(halves[c]);
@@ -108,28 +117,6 @@ void Framebuffer::resolveInto(Framebuffer& out) const {
         const Vec4 mean{detail::flushDenormal(sum[0] * average), detail::flushDenormal(sum[1] * average),
                         detail::flushDenormal(sum[2] * average), detail::flushDenormal(sum[3] * average)};
         detail::blendColour(pixel, mean, store);
-      }
-      out.depth_[p] = depth_[p * samples_];
-    }
-  }
-  if (isTenBit(colourFormat_)) {  // lavapipe's resolve: sample texels as floats, averaged, stored as a fragment
-    const float toFloat10 = static_cast<float>(1.0 / 1023.0), toFloat2 = static_cast<float>(1.0 / 3.0);
-    for (; p < pixels; ++p) {
-      std::uint32_t words[4];
-      std::memcpy(words, colour_.data() + 4 * p * samples_, 4 * samples_);
-      Vec4 sum{0.0f, 0.0f, 0.0f, 0.0f};
-      for (std::uint32_t s = 0; s < samples_; ++s) {
-        sum.x = sum.x + static_cast<float>(tenBitChannel(words[s], 0)) * toFloat10;
-        sum.y = sum.y + static_cast<float>(tenBitChannel(words[s], 1)) * toFloat10;
-        sum.z = sum.z + static_cast<float>(tenBitChannel(words[s], 2)) * toFloat10;
-        sum.w = sum.w + static_cast<float>(tenBitChannel(words[s], 3)) * toFloat2;
-      }
-      std::uint8_t* pixel = out.colour_.data() + 4 * p;
-      if (samples_ == 1) {
-        std::memcpy(pixel, words, 4);
-      } else {
-        const Vec4 mean{sum.x * average, sum.y * average, sum.z * average, sum.w * average};
-        detail::blendColour(pixel, mean, detail::colourBlend(BlendState{}, colourFormat_));
       }
       out.depth_[p] = depth_[p * samples_];
     }
