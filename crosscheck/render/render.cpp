@@ -152,7 +152,8 @@ Frame frameFrom(const Scene& scene, softraster::Framebuffer& framebuffer, const 
     if (softraster::swapsRedBlue(format)) {
       for (std::size_t i = 0; i + 3 < bytes->size(); i += 4) std::swap((*bytes)[i], (*bytes)[i + 2]);
     }
-    if (!softraster::isTenBit(format) && !softraster::isFloat(format)) continue;
+    // An empty image (no samples in a single-sample frame) has no data() to copy from.
+    if (bytes->empty() || (!softraster::isTenBit(format) && !softraster::isFloat(format))) continue;
     const std::size_t texelBytes = softraster::colourBytes(format), texels = bytes->size() / texelBytes;
     words->resize(bytes->size() / 4);
     std::memcpy(words->data(), bytes->data(), bytes->size());

@@ -113,7 +113,7 @@ void colourFromStorage(softraster::ColourFormat format, const void* texels, std:
     std::memcpy(&rgba[4 * i], view.data(), 4);
   }
   words.clear();
-  if (softraster::isTenBit(format) || softraster::isFloat(format)) {
+  if (count > 0 && (softraster::isTenBit(format) || softraster::isFloat(format))) {
     words.resize(count * bytes / 4);
     std::memcpy(words.data(), in, count * bytes);
   }
