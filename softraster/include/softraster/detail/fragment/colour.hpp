@@ -23,7 +23,9 @@
 // A2B10G10R10 targets: the same integer arithmetic in 16 bits, see blendColourTenBit. Float
 // targets (R16G16B16A16_SFLOAT, R32G32B32A32_SFLOAT): see blendColourFloat.
 // Deliberately absent: dual-source factors, and the SIMD form of the sRGB, 10-bit and float paths
-// (the fast path draws those targets with the scalar fragment stage).
+// (the fast path draws those targets with the scalar fragment stage). Those three paths are out
+// of line (noinline: built with the translation unit's flags, unfused, never an FMA): inlined they
+// made every draw-loop instantiation larger (models_vertex_color.cpp: 288 s to compile, 233 s without).
 #pragma once
 
 #include <softraster/detail/fragment/half.hpp>
@@ -249,7 +251,7 @@ inline float blendFunctionFloat(BlendOp op, float a, float b) {
   return 0.0f;
 }
 
-inline void blendColourSrgb(std::uint8_t* pixel, Vec4 c, const ColourBlend& blend) {
+[[gnu::noinline]] inline void blendColourSrgb(std::uint8_t* pixel, Vec4 c, const ColourBlend& blend) {
   const BlendState& b = blend.state;
   float s[4] = {c.x, c.y, c.z, c.w};
   for (float& v : s) {
@@ -311,7 +313,7 @@ inline int widenTwoBit(std::uint32_t a) { return static_cast<int>(a * 0x5555u); 
 inline std::uint32_t narrowToTenBit(int v) { return static_cast<std::uint32_t>(v) >> 6; }
 inline std::uint32_t narrowToTwoBit(int v) { return ((static_cast<std::uint32_t>(v) >> 2) * 3u + (1u << 13)) >> 14; }
 
-inline void blendColourTenBit(std::uint8_t* pixel, Vec4 c, const ColourBlend& blend) {
+[[gnu::noinline]] inline void blendColourTenBit(std::uint8_t* pixel, Vec4 c, const ColourBlend& blend) {
   const BlendState& b = blend.state;
   int out[4] = {unorm16FromFloat(c.x), unorm16FromFloat(c.y), unorm16FromFloat(c.z), unorm16FromFloat(c.w)};
   if (blend.readsDestination) {
@@ -358,7 +360,7 @@ struct FloatTerm {
   bool constantZero = false;
 };
 
-inline void blendColourFloat(std::uint8_t* pixel, Vec4 c, const ColourBlend& blend) {
+[[gnu::noinline]] inline void blendColourFloat(std::uint8_t* pixel, Vec4 c, const ColourBlend& blend) {
   const BlendState& b = blend.state;
   const bool half = blend.floatFormat == ColourFormat::R16G16B16A16Sfloat;
   auto in = [half](float x) { return half ? x : flushDenormal(x); };  // DAZ for R32G32B32A32
