@@ -113,6 +113,12 @@ double depthDelta(std::uint32_t a, std::uint32_t b, softraster::DepthFormat form
 
 }  // namespace
 
+std::string colourDeltaUnit(softraster::ColourFormat format) {
+  if (softraster::isTenBit(format)) return "10-bit steps (alpha 2-bit)";
+  if (softraster::isFloat(format)) return softraster::colourBytes(format) == 8 ? "half ULPs" : "float ULPs";
+  return "8-bit steps";
+}
+
 Comparison compareFrames(const Frame& a, const Frame& b, const Scene& scene) {
   Comparison c;
   if (a.width != b.width || a.height != b.height || a.depthFormat != b.depthFormat || a.stencil.size() != b.stencil.size()) {
@@ -130,6 +136,7 @@ Comparison compareFrames(const Frame& a, const Frame& b, const Scene& scene) {
   }
   const Samples sa = samplesOf(a), sb = samplesOf(b), ra = resolvedOf(a), rb = resolvedOf(b);
   const std::uint32_t samples = sa.samples;
+  c.colourUnit = colourDeltaUnit(a.colourFormat);
   c.samples = samples;
   const Tolerance& tol = scene.tolerance;
   const ClearValues clear = clearValues(scene);

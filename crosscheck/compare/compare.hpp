@@ -19,12 +19,17 @@
 #include "scene/scene.hpp"
 
 #include <cstdint>
+#include <string>
 #include <vector>
 
 namespace crosscheck {
 
 // Measures the differences and checks them against scene.tolerance (limitFailures).
 Comparison compareFrames(const Frame& result, const Frame& reference, const Scene& scene);
+
+// What one step of a colour delta is for a target format, as the outputs print it: "8-bit
+// steps", "10-bit steps (alpha 2-bit)", "half ULPs" or "float ULPs".
+std::string colourDeltaUnit(softraster::ColourFormat format);
 
 // Pixels covered in a frame (in any sample, colour, depth or stencil differs from the scene's clear values).
 std::uint64_t coveredPixels(const Frame& frame, const Scene& scene);

@@ -23,6 +23,7 @@ struct Comparison {
   // Colour differences are in the format's own steps: 8-bit; of A2B10G10R10 10-bit (alpha 2-bit);
   // of the float formats units in the last place (at most INT_MAX). PSNR is of the byte view.
   std::array<int, 4> colourMaxDelta{};       // per channel R, G, B, A
+  std::string colourUnit = "8-bit steps";    // what one step of colourMaxDelta is (colourDeltaUnit, compare.hpp)
   std::array<int, 4> resolvedColourMaxDelta{};  // per channel, of the resolved colour alone (= colourMaxDelta with 1 sample)
   std::array<double, 4> colourMeanDelta{};   // per channel, over all pixels (resolved colour)
   std::uint64_t colourPixelsOver = 0;        // any channel over the colour threshold

@@ -28,6 +28,7 @@ json runJson(const BenchRun& run) {
     j["coverage_mismatches"] = c.coverageMismatches;
     j["pixels_differing"] = run.pixelsDiffering;
     j["colour_max_delta"] = *std::max_element(c.colourMaxDelta.begin(), c.colourMaxDelta.end());
+    j["colour_unit"] = c.colourUnit;
     j["colour_mean_delta"] = finite((c.colourMeanDelta[0] + c.colourMeanDelta[1] + c.colourMeanDelta[2] + c.colourMeanDelta[3]) / 4);
     j["depth_max_delta"] = finite(c.depthMaxDelta);
     j["agrees"] = c.passed();
@@ -35,6 +36,7 @@ json runJson(const BenchRun& run) {
     j["coverage_mismatches"] = nullptr;
     j["pixels_differing"] = nullptr;
     j["colour_max_delta"] = nullptr;
+    j["colour_unit"] = nullptr;
     j["colour_mean_delta"] = nullptr;
     j["depth_max_delta"] = nullptr;
     j["agrees"] = nullptr;

@@ -19,6 +19,7 @@ nlohmann::json sceneJson(const SceneResult& r) {
                       {"samples_compared", c.samples},
                       {"coverage_mismatches", c.coverageMismatches},
                       {"colour_max_delta", c.colourMaxDelta},
+                      {"colour_unit", c.colourUnit},
                       {"resolved_colour_max_delta", c.resolvedColourMaxDelta},
                       {"colour_mean_delta", c.colourMeanDelta},
                       {"colour_pixels_over", c.colourPixelsOver},

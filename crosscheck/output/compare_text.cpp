@@ -34,8 +34,8 @@ void appendScene(std::string& out, const SceneResult& r) {
     append(out, "  samples compared     %u per pixel (every sample; colour also resolved)\n", c.samples);
   }
   append(out, "  coverage mismatches  %llu (allowed %llu)\n", count(c.coverageMismatches), count(t.maxCoverageMismatches));
-  append(out, "  colour max %s RGBA  %d %d %d %d (threshold %d)\n", kAbsDelta, c.colourMaxDelta[0], c.colourMaxDelta[1],
-         c.colourMaxDelta[2], c.colourMaxDelta[3], t.colourThreshold);
+  append(out, "  colour max %s RGBA  %d %d %d %d (threshold %d; %s)\n", kAbsDelta, c.colourMaxDelta[0], c.colourMaxDelta[1],
+         c.colourMaxDelta[2], c.colourMaxDelta[3], t.colourThreshold, c.colourUnit.c_str());
   if (c.samples > 1) {
     append(out, "  resolved max %s RGBA %d %d %d %d\n", kAbsDelta, c.resolvedColourMaxDelta[0], c.resolvedColourMaxDelta[1],
            c.resolvedColourMaxDelta[2], c.resolvedColourMaxDelta[3]);

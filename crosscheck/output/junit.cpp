@@ -37,7 +37,7 @@ std::string systemOut(const SceneResult& r) {
     out += "coverage_mismatches: " + std::to_string(c.coverageMismatches) + " (allowed " + std::to_string(t.maxCoverageMismatches) + ")\n";
     out += "colour_max_delta_rgba: " + std::to_string(c.colourMaxDelta[0]) + " " + std::to_string(c.colourMaxDelta[1]) + " " +
            std::to_string(c.colourMaxDelta[2]) + " " + std::to_string(c.colourMaxDelta[3]) + " (threshold " +
-           std::to_string(t.colourThreshold) + ")\n";
+           std::to_string(t.colourThreshold) + "; " + c.colourUnit + ")\n";
     if (c.samples > 1) {
       out += "resolved_colour_max_delta_rgba: " + std::to_string(c.resolvedColourMaxDelta[0]) + " " +
              std::to_string(c.resolvedColourMaxDelta[1]) + " " + std::to_string(c.resolvedColourMaxDelta[2]) + " " +

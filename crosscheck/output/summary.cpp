@@ -44,7 +44,7 @@ std::string explainFailure(const std::string& failure, const SceneResult& r) {
   const Comparison& c = *r.comparison;
   if (failure.rfind("colour_pixels_over", 0) == 0) {
     const int worst = *std::max_element(c.colourMaxDelta.begin(), c.colourMaxDelta.end());
-    return failure + " (colour max " + kAbsDelta + " " + std::to_string(worst) + ", threshold " +
+    return failure + " (colour max " + kAbsDelta + " " + std::to_string(worst) + " " + c.colourUnit + ", threshold " +
            std::to_string(r.tolerance.colourThreshold) + ")";
   }
   if (failure.rfind("depth_pixels_over", 0) == 0) {

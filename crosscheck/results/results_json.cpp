@@ -39,6 +39,7 @@ json comparisonJson(const Comparison& c) {
           {"samples_compared", c.samples},
           {"coverage_mismatches", c.coverageMismatches},
           {"colour_max_delta", c.colourMaxDelta},
+          {"colour_unit", c.colourUnit},
           {"resolved_colour_max_delta", c.resolvedColourMaxDelta},
           {"colour_mean_delta", mean},
           {"colour_pixels_over", c.colourPixelsOver},
@@ -152,6 +153,8 @@ Comparison readComparison(const json& j, const std::string& place) {
   c.psnr = readNumber(field(j, place, "psnr"), place + "/psnr");
   c.depthMaxDelta = readNumber(field(j, place, "depth_max_delta"), place + "/depth_max_delta");
   c.depthPixelsOver = readInteger<std::uint64_t>(field(j, place, "depth_pixels_over"), place + "/depth_pixels_over");
+  // Absent from files written before wider colour formats: every target was 8-bit then.
+  if (j.contains("colour_unit")) c.colourUnit = readString(j["colour_unit"], place + "/colour_unit");
   // Absent from files written before stencil was compared: none could mismatch then.
   if (j.contains("stencil_mismatches")) {
     c.stencilMismatches = readInteger<std::uint64_t>(j["stencil_mismatches"], place + "/stencil_mismatches");

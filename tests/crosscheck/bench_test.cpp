@@ -107,6 +107,7 @@ TEST(Bench, JsonHasTheDocumentedFields) {
       EXPECT_TRUE(r["method"] == "exact" || r["method"] == "exact-scalar");
       EXPECT_EQ(r["coverage_mismatches"], 0);
       EXPECT_EQ(r["colour_max_delta"], 0);
+      EXPECT_EQ(r["colour_unit"], "8-bit steps");
       EXPECT_EQ(r["depth_max_delta"], 0.0);
     } else {
       EXPECT_EQ(r["renderer"], "lavapipe");

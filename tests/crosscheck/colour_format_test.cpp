@@ -6,9 +6,13 @@
 // from the UNORM frames (the blending is in linear values); their clear uses the clear's own
 // encoding. A2B10G10R10, R16G16B16A16_SFLOAT and R32G32B32A32_SFLOAT targets agree on every
 // stored bit, on their scenes and the blending scenes. Then the loader's errors: colours out of
-// the target's range, an unknown format. (softraster's BGRA byte order:
+// the target's range, an unknown format; and the outputs name the unit of a colour delta (8-bit
+// steps, 10-bit steps, half or float ULPs). (softraster's BGRA byte order:
 // tests/softraster/api_test.cpp.)
 #include "agreement.hpp"
+#include "output/compare_text.hpp"
+#include "output/junit.hpp"
+#include "output/summary.hpp"
 
 #include <gtest/gtest.h>
 
@@ -212,6 +216,9 @@ TEST(ColourFormat, ADifferenceBelowTheByteViewIsCaught) {
     b.sampleColourWords[(pixel * 4 + 2) * words] ^= 1u;  // sample 2: red's lowest bit
     crosscheck::Comparison c = crosscheck::compareFrames(a, b, *scene);
     EXPECT_EQ(c.colourMaxDelta[0], 1);
+    EXPECT_EQ(c.colourUnit, format == "a2b10g10r10_unorm"     ? "10-bit steps (alpha 2-bit)"
+                            : format == "r16g16b16a16_sfloat" ? "half ULPs"
+                                                              : "float ULPs");
     EXPECT_EQ(c.resolvedColourMaxDelta[0], 0);
     EXPECT_EQ(c.coverageMismatches, 0u);
     EXPECT_EQ(b.sampleRgba, a.sampleRgba) << "the byte view does not show it";
@@ -234,6 +241,32 @@ TEST(ColourFormat, ADifferenceBelowTheByteViewIsCaught) {
   auto scene = crosscheck::loadScene(agreement::kScenes / "colour_format_float.json", {});
   ASSERT_TRUE(scene);
   EXPECT_EQ(crosscheck::compareFrames(zero, negative, *scene).colourMaxDelta[1], 1);
+}
+
+// Every output that prints a colour delta names its unit with it.
+TEST(ColourFormat, ColourDeltasNameTheirUnit) {
+  using softraster::ColourFormat;
+  EXPECT_EQ(crosscheck::colourDeltaUnit(ColourFormat::R8G8B8A8Unorm), "8-bit steps");
+  EXPECT_EQ(crosscheck::colourDeltaUnit(ColourFormat::B8G8R8A8Srgb), "8-bit steps");
+  EXPECT_EQ(crosscheck::colourDeltaUnit(ColourFormat::A2B10G10R10Unorm), "10-bit steps (alpha 2-bit)");
+  EXPECT_EQ(crosscheck::colourDeltaUnit(ColourFormat::R16G16B16A16Sfloat), "half ULPs");
+  EXPECT_EQ(crosscheck::colourDeltaUnit(ColourFormat::R32G32B32A32Sfloat), "float ULPs");
+  crosscheck::SceneResult r;
+  r.entry = {"colour_format_float", "scenes/colour_format_float.json"};
+  r.outcome = r.actual = crosscheck::Outcome::Fail;
+  r.tolerance.colourThreshold = 0;
+  r.comparison = crosscheck::Comparison{};
+  r.comparison->colourMaxDelta = {3, 0, 0, 0};
+  r.comparison->colourPixelsOver = 1;
+  r.comparison->colourUnit = "float ULPs";
+  r.comparison->failures = {"colour_pixels_over 1 > 0"};
+  crosscheck::RunResults run;
+  run.scenes = {r};
+  EXPECT_NE(crosscheck::compareText(run).find("colour max |\xCE\x94| RGBA  3 0 0 0 (threshold 0; float ULPs)"),
+            std::string::npos)
+      << crosscheck::compareText(run);
+  EXPECT_EQ(crosscheck::resultDetail(r), "colour_pixels_over 1 > 0 (colour max |\xCE\x94| 3 float ULPs, threshold 0)");
+  EXPECT_NE(crosscheck::junitXml(run).find("colour_max_delta_rgba: 3 0 0 0 (threshold 0; float ULPs)"), std::string::npos);
 }
 
 // Colours beyond [0, 1] are refused for targets that clamp, and non-finite ones for any.

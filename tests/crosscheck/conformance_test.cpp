@@ -214,7 +214,7 @@ TEST(Conformance, PassFailAndCrashFromLoading) {
   ASSERT_TRUE(failed[0].comparison);
   EXPECT_EQ(failed[0].comparison->coverageMismatches, 1u);
   EXPECT_EQ(failed[0].comparison->failures.front(), "coverage_mismatches 1 > 0");
-  EXPECT_EQ(resultDetail(failed[0]), "coverage_mismatches 1 > 0; colour_pixels_over 1 > 0 (colour max |Δ| 255, threshold 1)");
+  EXPECT_EQ(resultDetail(failed[0]), "coverage_mismatches 1 > 0; colour_pixels_over 1 > 0 (colour max |Δ| 255 8-bit steps, threshold 1)");
 }
 
 TEST(Conformance, RendererErrorAndExceptionAreCrashAndTheRunGoesOn) {

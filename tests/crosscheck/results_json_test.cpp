@@ -36,6 +36,7 @@ SceneResult everyFieldSet() {
   c.samples = 4;
   c.colourMaxDelta = {1, 2, 3, 255};
   c.resolvedColourMaxDelta = {1, 0, 3, 7};
+  c.colourUnit = "half ULPs";
   c.colourMeanDelta = {0.1, 1.0 / 3.0, 0.0, 1e-300};
   c.colourPixelsOver = 9;
   c.psnr = std::numeric_limits<double>::infinity();
@@ -108,6 +109,7 @@ void expectSame(const SceneResult& a, const SceneResult& b) {
     EXPECT_EQ(x.samples, y.samples);
     EXPECT_EQ(x.colourMaxDelta, y.colourMaxDelta);
     EXPECT_EQ(x.resolvedColourMaxDelta, y.resolvedColourMaxDelta);
+    EXPECT_EQ(x.colourUnit, y.colourUnit);
     for (int i = 0; i < 4; ++i) EXPECT_TRUE(same(x.colourMeanDelta[i], y.colourMeanDelta[i])) << i;
     EXPECT_EQ(x.colourPixelsOver, y.colourPixelsOver);
     EXPECT_TRUE(same(x.psnr, y.psnr)) << x.psnr << " " << y.psnr;
@@ -210,6 +212,22 @@ TEST(ResultsJson, FieldsAddedWithEverySampleAreOptional) {
   ASSERT_TRUE(back->comparison);
   EXPECT_EQ(back->comparison->samples, 1u);
   EXPECT_EQ(back->comparison->resolvedColourMaxDelta, back->comparison->colourMaxDelta);
+}
+
+// A file written before the wider colour formats: its deltas are 8-bit steps; a unit that is not
+// a string is named.
+TEST(ResultsJson, ColourUnitIsOptional) {
+  json value = sceneResultToJson(everyFieldSet());
+  EXPECT_EQ(value["comparison"]["colour_unit"], "half ULPs");
+  value["comparison"].erase("colour_unit");
+  const auto back = sceneResultFromJson(value);
+  ASSERT_TRUE(back) << back.error();
+  ASSERT_TRUE(back->comparison);
+  EXPECT_EQ(back->comparison->colourUnit, "8-bit steps");
+  value["comparison"]["colour_unit"] = 8;
+  const auto bad = sceneResultFromJson(value);
+  ASSERT_FALSE(bad);
+  EXPECT_NE(bad.error().find("/comparison/colour_unit: expected a string"), std::string::npos) << bad.error();
 }
 
 TEST(ResultsJson, DefaultsCrashesTimeoutsAndNonFiniteNumbers) {

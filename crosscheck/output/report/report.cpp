@@ -226,7 +226,8 @@ std::string summaryRow(const SceneResult& r, std::size_t rank, const SceneVersus
                           "; allowed " + std::to_string(t.maxColourPixelsOver),
                       changeOf(versus, "colour pixels over"));
     row += numberCell(colourMax, std::to_string(colourMax), colourMax > t.colourThreshold,
-                      "RGBA " + rgbaText(c.colourMaxDelta) + "; threshold " + std::to_string(t.colourThreshold),
+                      "RGBA " + rgbaText(c.colourMaxDelta) + "; threshold " + std::to_string(t.colourThreshold) + "; " +
+                          c.colourUnit,
                       changeOf(versus, "colour max |\xCE\x94|"));
     row += numberCell(colourMean, fixed("%.4f", colourMean), false, "RGBA " + meanText(c.colourMeanDelta),
                       changeOf(versus, "colour mean |\xCE\x94|"));
@@ -291,7 +292,8 @@ std::string metricsTable(const SceneResult& r) {
                       "\xE2\x89\xA4 " + std::to_string(t.maxCoverageMismatches), c.coverageMismatches > t.maxCoverageMismatches);
     rows += metricRow("colour pixels over threshold", std::to_string(c.colourPixelsOver),
                       "\xE2\x89\xA4 " + std::to_string(t.maxColourPixelsOver), c.colourPixelsOver > t.maxColourPixelsOver);
-    rows += metricRow("colour max |\xCE\x94| RGBA", rgbaText(c.colourMaxDelta), "threshold " + std::to_string(t.colourThreshold),
+    rows += metricRow("colour max |\xCE\x94| RGBA (" + c.colourUnit + ")", rgbaText(c.colourMaxDelta),
+                      "threshold " + std::to_string(t.colourThreshold),
                       *std::max_element(c.colourMaxDelta.begin(), c.colourMaxDelta.end()) > t.colourThreshold);
     if (c.samples > 1) rows += metricRow("resolved colour max |\xCE\x94| RGBA", rgbaText(c.resolvedColourMaxDelta), "", false);
     rows += metricRow("colour mean |\xCE\x94| RGBA", meanText(c.colourMeanDelta), "", false);
