@@ -6,12 +6,15 @@
 // where alpha > s / 4 with 4x MSAA and a fragment where alpha > 0.5 with one sample; alpha to one
 // writes alpha 255; the single-sample mask deviation, in driver and spec mode; and 4x MSAA lines
 // as lavapipe bins them (and as the spec draws them); Bresenham lines, drawn by lavapipe with
-// multisampling off, whole whatever the sample mask.
+// multisampling off, whole whatever the sample mask; a NaN alpha keeps every sample (an unordered
+// compare).
 #include "agreement.hpp"
 
 #include <gtest/gtest.h>
 
 #include <array>
+#include <cmath>
+#include <cstring>
 #include <cstdint>
 #include <string>
 #include <vector>
@@ -107,6 +110,39 @@ TEST(Multisample, AlphaToCoverageKeepsSampleSWhereAlphaExceedsSQuarters) {
     }
   }
   EXPECT_GT(opaque, 40u);
+}
+
+// alpha_to_coverage_nan: lavapipe's alpha > t is an unordered compare, so where the left quad's
+// alpha is NaN (inf - inf from vertex alphas of +-3e38) every sample is kept and stores the NaN,
+// with four samples and with one; the control quad keeps samples by threshold as usual.
+TEST(Multisample, AlphaToCoverageKeepsEverySampleOfANanAlpha) {
+  for (const std::uint32_t samples : {4u, 1u}) {
+    SCOPED_TRACE(samples);
+    const crosscheck::Frame f =
+        renderAgreeing("alpha_to_coverage_nan", {"framebuffer.samples=" + std::to_string(samples)});
+    ASSERT_EQ(f.samples, samples);
+    const std::vector<std::uint32_t>& words = samples == 4 ? f.sampleColourWords : f.colourWords;
+    ASSERT_EQ(words.size(), std::size_t{f.width} * f.height * samples * 4);
+    const auto word = [&](std::uint32_t x, std::uint32_t y, std::uint32_t s, int channel) {
+      float v;
+      const std::uint32_t w = words[((std::size_t{y} * f.width + x) * samples + s) * 4 + channel];
+      std::memcpy(&v, &w, sizeof v);
+      return v;
+    };
+    std::size_t nanPixels = 0;
+    for (std::uint32_t y = 0; y < f.height; ++y) {
+      for (std::uint32_t x = 0; x < f.width / 2; ++x) {
+        bool allNan = true;
+        for (std::uint32_t s = 0; s < samples; ++s) allNan = allNan && std::isnan(word(x, y, s, 3));
+        if (!allNan) continue;
+        ++nanPixels;
+        for (std::uint32_t s = 0; s < samples; ++s) {
+          EXPECT_EQ(word(x, y, s, 0), 0.9f) << x << "," << y << " sample " << s;
+        }
+      }
+    }
+    EXPECT_GT(nanPixels, std::size_t{f.width / 2} * f.height / 2) << "most of the left quad has a NaN alpha, kept";
+  }
 }
 
 // alpha_to_coverage (one sample): the quads of alpha 0, 0.49, 0.5, 0.51 and 1 are drawn iff

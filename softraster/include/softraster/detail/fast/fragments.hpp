@@ -611,16 +611,16 @@ class FastFragmentStage {
   }
 
   // alphaToCoverageSamples (fragment/coverage.hpp) on the lanes: bit per lane with one sample,
-  // bit 4 * lane + s with four.
+  // bit 4 * lane + s with four; unordered like it (~(alpha <= t): a NaN alpha keeps every sample).
   template <int Samples>
   [[SOFTRASTER_FAST_TARGET]] static std::uint32_t alphaToCoverageBits(Floats alpha) {
     if constexpr (Samples == 1) {
-      return maskBits(alpha > broadcast(0.5f));
+      return maskBits(~(alpha <= broadcast(0.5f)));
     } else {
       std::uint32_t bits = 0;
       for (unsigned s = 0; s < 4; ++s) {
         const float threshold = 0.25f * static_cast<float>(s);  // 0, 0.25, 0.5, 0.75, as alphaToCoverageSamples
-        bits |= kSpreadToSamples[maskBits(alpha > broadcast(threshold))] & (0x11111111u << s);
+        bits |= kSpreadToSamples[maskBits(~(alpha <= broadcast(threshold)))] & (0x11111111u << s);
       }
       return bits;
     }

@@ -6,7 +6,7 @@
 //     (Deviations::Spec follows the spec);
 //   - alpha to coverage takes the shader's alpha as it returns it (not clamped) and keeps, with
 //     4x MSAA, sample s where alpha > s * 0.25 (0, 0.25, 0.5, 0.75: no dither), with one sample
-//     the fragment where alpha > 0.5 (an ordered compare: a NaN alpha keeps nothing); the
+//     the fragment where alpha > 0.5 (an unordered compare, lp_build_cmp: a NaN alpha keeps all); the
 //     samples it drops are neither tested nor written (lavapipe tests depth early and defers the
 //     write to the final mask, or tests late when the stencil is written: the same samples);
 //   - alpha to one then replaces the alpha of the colour with 1.0 before blending;
@@ -57,14 +57,16 @@ inline SampleCoverage sampleCoverage(const MultisampleState& m, std::uint32_t sa
   return c;
 }
 
-// The samples (bit s) alpha to coverage keeps of a fragment with this alpha.
+// The samples (bit s) alpha to coverage keeps of a fragment with this alpha. lavapipe's
+// `alpha > t` is an unordered compare (LLVMRealUGT), true for a NaN alpha: `!(alpha <= t)` here.
 template <std::uint32_t Samples>
 constexpr unsigned alphaToCoverageSamples(float alpha) {
   if constexpr (Samples == 1) {
-    return alpha > 0.5f ? 1u : 0u;
+    return !(alpha <= 0.5f) ? 1u : 0u;
   } else {
     static_assert(Samples == 4);
-    return (alpha > 0.0f ? 1u : 0u) | (alpha > 0.25f ? 2u : 0u) | (alpha > 0.5f ? 4u : 0u) | (alpha > 0.75f ? 8u : 0u);
+    return (!(alpha <= 0.0f) ? 1u : 0u) | (!(alpha <= 0.25f) ? 2u : 0u) | (!(alpha <= 0.5f) ? 4u : 0u) |
+           (!(alpha <= 0.75f) ? 8u : 0u);
   }
 }
 
