@@ -120,6 +120,7 @@ constexpr ShadingModel model(std::string_view name, const std::uint32_t (&vertex
           texturesOf<Shader>(),
           shadowMapOf<Shader>(),
           depthPassOnlyOf<Shader>(),
+          static_cast<std::uint32_t>(softraster::colourOutputsOf<Shader>()),
           &vertexBytes<Shader>,
           &uniformBytes<Shader>,
           &prepareSoftraster<Shader>};

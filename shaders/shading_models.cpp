@@ -15,6 +15,7 @@ std::span<const ShadingModel> texturedModels();
 std::span<const ShadingModel> shadowedModels();
 std::span<const ShadingModel> depthModels();
 std::span<const ShadingModel> builtinsModels();
+std::span<const ShadingModel> colourOutputsModels();
 }  // namespace rows
 
 std::span<const ShadingModel> shadingModels() {
@@ -22,7 +23,7 @@ std::span<const ShadingModel> shadingModels() {
     std::vector<ShadingModel> all;
     for (auto family : {rows::vertexColorModels(), rows::courseLightModels(), rows::phongModels(),
                         rows::blinnPhongModels(), rows::texturedModels(), rows::shadowedModels(),
-                        rows::depthModels(), rows::builtinsModels()}) {
+                        rows::depthModels(), rows::builtinsModels(), rows::colourOutputsModels()}) {
       all.insert(all.end(), family.begin(), family.end());
     }
     return all;

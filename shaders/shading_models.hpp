@@ -70,6 +70,7 @@ struct ShadingModel {
   unsigned textures = 0;       // textures it samples: DrawParameters::textures[0..n-1], set 1 bindings 0..n-1
   ShadowMapSampler shadowMap = ShadowMapSampler::None;  // its one texture is a depth pass's depth, not an image file
   bool depthPassOnly = false;      // writes no colour: drawn only in depth passes (depth_only)
+  std::uint32_t colourOutputs = 1;  // fragment output locations 0..n-1: colour attachments it can fill
   // Vulkan: the mesh as twin::Vertex, vertexStride bytes per vertex; the uniforms as twin::Uniforms.
   std::vector<std::byte> (*vertexBytes)(const Mesh& mesh) = nullptr;
   std::vector<std::byte> (*uniformBytes)(const DrawParameters& draw) = nullptr;

@@ -1,4 +1,4 @@
-// Framebuffer creation (the checks create() documents), storage, clears (deferred: see
+// Framebuffer creation (the checks create() documents), storage of each colour attachment, clears (deferred: see
 // framebuffer.hpp; the colour swizzled to the format's byte order), the MSAA resolve (SSE2 where
 // the build has it, the same operations per channel, so blind to the channels' order;
 // A2B10G10R10 and the float formats per channel in float, stored as a fragment stores them;
@@ -29,6 +29,11 @@ std::uint32_t depthClearValue(DepthFormat format, float depth) {
 
 Result<Framebuffer> Framebuffer::create(std::uint32_t width, std::uint32_t height, DepthFormat depthFormat,
                                         std::uint32_t samples, ColourFormat colourFormat) {
+  return create(width, height, depthFormat, samples, std::span<const ColourFormat>(&colourFormat, 1));
+}
+
+Result<Framebuffer> Framebuffer::create(std::uint32_t width, std::uint32_t height, DepthFormat depthFormat,
+                                        std::uint32_t samples, std::span<const ColourFormat> colourFormats) {
   if (width == 0 || height == 0 || width > kMaxFramebufferSize || height > kMaxFramebufferSize) {
     return Status::error("framebuffer size " + std::to_string(width) + "x" + std::to_string(height) +
                          ": width and height must be 1.." + std::to_string(kMaxFramebufferSize));
@@ -41,94 +46,98 @@ Result<Framebuffer> Framebuffer::create(std::uint32_t width, std::uint32_t heigh
       depthFormat != DepthFormat::D32SfloatS8Uint) {
     return Status::error("unknown depth format");
   }
-  if (colourFormat != ColourFormat::R8G8B8A8Unorm && colourFormat != ColourFormat::B8G8R8A8Unorm &&
-      colourFormat != ColourFormat::R8G8B8A8Srgb && colourFormat != ColourFormat::B8G8R8A8Srgb &&
-      colourFormat != ColourFormat::A2B10G10R10Unorm && colourFormat != ColourFormat::R16G16B16A16Sfloat &&
-      colourFormat != ColourFormat::R32G32B32A32Sfloat) {
-    return Status::error("unknown colour format");
+  if (colourFormats.empty() || colourFormats.size() > kMaxColourAttachments) {
+    return Status::error("framebuffer colour attachments " + std::to_string(colourFormats.size()) + ": must be 1.." +
+                         std::to_string(kMaxColourAttachments));
   }
-  return Framebuffer(width, height, depthFormat, samples, colourFormat);
+  for (const ColourFormat colourFormat : colourFormats) {
+    if (colourFormat != ColourFormat::R8G8B8A8Unorm && colourFormat != ColourFormat::B8G8R8A8Unorm &&
+        colourFormat != ColourFormat::R8G8B8A8Srgb && colourFormat != ColourFormat::B8G8R8A8Srgb &&
+        colourFormat != ColourFormat::A2B10G10R10Unorm && colourFormat != ColourFormat::R16G16B16A16Sfloat &&
+        colourFormat != ColourFormat::R32G32B32A32Sfloat) {
+      return Status::error("unknown colour format");
+    }
+  }
+  return Framebuffer(width, height, depthFormat, samples, colourFormats);
 }
 
 Framebuffer::Framebuffer(std::uint32_t width, std::uint32_t height, DepthFormat depthFormat, std::uint32_t samples,
-                         ColourFormat colourFormat)
+                         std::span<const ColourFormat> colourFormats)
     : width_(width),
       height_(height),
       samples_(samples),
       depthFormat_(depthFormat),
-      colourFormat_(colourFormat),
-      colour_(static_cast<std::size_t>(width) * height * samples * colourBytes(colourFormat), 0),
+      colourFormat_(colourFormats[0]),
+      moreFormats_(colourFormats.begin() + 1, colourFormats.end()),
+      colour_(static_cast<std::size_t>(width) * height * samples * colourBytes(colourFormats[0]), 0),
       depth_(static_cast<std::size_t>(width) * height * samples, 0),
-      stencil_(hasStencil(depthFormat) ? static_cast<std::size_t>(width) * height * samples : 0, 0) {}
+      stencil_(hasStencil(depthFormat) ? static_cast<std::size_t>(width) * height * samples : 0, 0) {
+  for (const ColourFormat format : moreFormats_) {
+    moreColour_.emplace_back(static_cast<std::size_t>(width) * height * samples * colourBytes(format), 0);
+  }
+}
 
 Framebuffer Framebuffer::resolve() const {
-  Framebuffer out(width_, height_, depthFormat_, 1, colourFormat_);
+  Framebuffer out;
   resolveInto(out);
   return out;
 }
 
-void Framebuffer::resolveInto(Framebuffer& out) const {
-  settled();
-  if (&out == this) {  // resolving in place: a single-sample framebuffer is its own resolve
-    if (samples_ != 1) out = resolve();
+namespace {
+
+// `pixels` pixels of `samples` samples each of `format` in `in` averaged into one sample each in
+// `out`, as framebuffer.hpp's resolve() says.
+void resolveColour(ColourFormat format, std::uint32_t samples, std::size_t pixels, const std::uint8_t* in,
+                   std::uint8_t* out) {
+  const float toFloat = static_cast<float>(1.0 / 255.0);  // how lavapipe's texel fetch converts UNORM8
+  const float average = 1.0f / static_cast<float>(samples);
+  const bool srgb = isSrgb(format);
+  const std::uint32_t bytes = colourBytes(format);
+  if (samples == 1) {
+    if (pixels != 0) std::memcpy(out, in, pixels * bytes);
     return;
   }
-  if (out.width_ != width_ || out.height_ != height_ || out.depthFormat_ != depthFormat_ || out.samples_ != 1 ||
-      out.colourFormat_ != colourFormat_) {
-    out = Framebuffer(width_, height_, depthFormat_, 1, colourFormat_);
-  }
-  out.pending_.reset();  // every sample of `out` is written here
-  const std::size_t pixels = static_cast<std::size_t>(width_) * height_;
-  for (std::size_t q = 0; q < out.stencil_.size(); ++q) out.stencil_[q] = stencil_[q * samples_];
-  const float toFloat = static_cast<float>(1.0 / 255.0);  // how lavapipe's texel fetch converts UNORM8
-  const float average = 1.0f / static_cast<float>(samples_);
-  const bool srgb = isSrgb(colourFormat_);
   std::size_t p = 0;
-  if (isTenBit(colourFormat_) || isFloat(colourFormat_)) {
+  if (isTenBit(format) || isFloat(format)) {
     // lavapipe's resolve shader: each sample fetched as floats, summed from +0 in sample order and
     // multiplied under FTZ and DAZ (the 10-bit values are never denormal), stored as a fragment.
-    const std::uint32_t bytes = colourBytes(colourFormat_);
-    const detail::ColourBlend store = detail::colourBlend(BlendState{}, colourFormat_);
+    const detail::ColourBlend store = detail::colourBlend(BlendState{}, format);
     const float toFloat10 = static_cast<float>(1.0 / 1023.0), toFloat2 = static_cast<float>(1.0 / 3.0);
     for (; p < pixels; ++p) {
-      std::uint8_t* pixel = out.colour_.data() + bytes * p;
-      const std::uint8_t* first = colour_.data() + bytes * p * samples_;
-      if (samples_ == 1) {
-        std::memcpy(pixel, first, bytes);
-      } else {
-        float sum[4] = {0.0f, 0.0f, 0.0f, 0.0f};
-        for (std::uint32_t s = 0; s < samples_; ++s) {
-          float values[4];  // the texel fetch's floats: 10-bit v * float(1/1023), halves widened exactly
-          if (bytes == 4) {
-            std::uint32_t word;
-            std::memcpy(&word, first + 4 * s, sizeof word);
-            for (int c = 0; c < 4; ++c) {
-              values[c] = static_cast<float>(tenBitChannel(word, c)) * (c < 3 ? toFloat10 : toFloat2);
-            }
-          } else if (bytes == 8) {
-            std::uint16_t halves[4];
-            std::memcpy(halves, first + 8 * s, sizeof halves);
-            for (int c = 0; c < 4; ++c) values[c] = detail::floatFromHalf(halves[c]);
-          } else {
-            std::memcpy(values, first + 16 * s, sizeof values);
+      std::uint8_t* pixel = out + bytes * p;
+      const std::uint8_t* first = in + bytes * p * samples;
+      float sum[4] = {0.0f, 0.0f, 0.0f, 0.0f};
+      for (std::uint32_t s = 0; s < samples; ++s) {
+        float values[4];  // the texel fetch's floats: 10-bit v * float(1/1023), halves widened exactly
+        if (bytes == 4) {
+          std::uint32_t word;
+          std::memcpy(&word, first + 4 * s, sizeof word);
+          for (int c = 0; c < 4; ++c) {
+            values[c] = static_cast<float>(tenBitChannel(word, c)) * (c < 3 ? toFloat10 : toFloat2);
           }
-          for (int c = 0; c < 4; ++c) sum[c] = detail::flushDenormal(sum[c] + detail::flushDenormal(values[c]));
+        } else if (bytes == 8) {
+          std::uint16_t halves[4];
+          std::memcpy(halves, first + 8 * s, sizeof halves);
+          for (int c = 0; c < 4; ++c) values[c] = detail::floatFromHalf(halves[c]);
+        } else {
+          std::memcpy(values, first + 16 * s, sizeof values);
         }
-        const Vec4 mean{detail::flushDenormal(sum[0] * average), detail::flushDenormal(sum[1] * average),
-                        detail::flushDenormal(sum[2] * average), detail::flushDenormal(sum[3] * average)};
-        detail::blendColour(pixel, mean, store);
+        for (int c = 0; c < 4; ++c) sum[c] = detail::flushDenormal(sum[c] + detail::flushDenormal(values[c]));
       }
-      out.depth_[p] = depth_[p * samples_];
+      const Vec4 mean{detail::flushDenormal(sum[0] * average), detail::flushDenormal(sum[1] * average),
+                      detail::flushDenormal(sum[2] * average), detail::flushDenormal(sum[3] * average)};
+      detail::blendColour(pixel, mean, store);
     }
+    return;
   }
 #if defined(__SSE2__)
-  if (samples_ == 4 && !srgb) {  // the loop below with the four channels of a pixel in four lanes
+  if (samples == 4 && !srgb) {  // the loop below with the four channels of a pixel in four lanes
     const __m128i zero = _mm_setzero_si128();
     const __m128 scale = _mm_set1_ps(toFloat), quarter = _mm_set1_ps(average);
     const __m128 magic = _mm_set1_ps(8388608.0f), max = _mm_set1_ps(255.0f);
     for (; p < pixels; ++p) {
-      const __m128i bytes = _mm_loadu_si128(reinterpret_cast<const __m128i*>(colour_.data() + 16 * p));
-      const __m128i low = _mm_unpacklo_epi8(bytes, zero), high = _mm_unpackhi_epi8(bytes, zero);
+      const __m128i texels = _mm_loadu_si128(reinterpret_cast<const __m128i*>(in + 16 * p));
+      const __m128i low = _mm_unpacklo_epi8(texels, zero), high = _mm_unpackhi_epi8(texels, zero);
       const __m128 s0 = _mm_mul_ps(_mm_cvtepi32_ps(_mm_unpacklo_epi16(low, zero)), scale);
       const __m128 s1 = _mm_mul_ps(_mm_cvtepi32_ps(_mm_unpackhi_epi16(low, zero)), scale);
       const __m128 s2 = _mm_mul_ps(_mm_cvtepi32_ps(_mm_unpacklo_epi16(high, zero)), scale);
@@ -139,8 +148,7 @@ void Framebuffer::resolveInto(Framebuffer& out) const {
       const __m128 rounded = _mm_sub_ps(_mm_add_ps(_mm_mul_ps(clamped, max), magic), magic);
       const __m128i words = _mm_cvttps_epi32(rounded);
       const int rgba = _mm_cvtsi128_si32(_mm_packus_epi16(_mm_packs_epi32(words, zero), zero));
-      std::memcpy(out.colour_.data() + 4 * p, &rgba, sizeof rgba);
-      out.depth_[p] = depth_[p * 4];
+      std::memcpy(out + 4 * p, &rgba, sizeof rgba);
     }
   }
 #endif
@@ -148,15 +156,36 @@ void Framebuffer::resolveInto(Framebuffer& out) const {
     for (int c = 0; c < 4; ++c) {
       const bool linear = srgb && c < 3;  // sRGB red, green, blue: averaged as linear values
       float sum = 0.0f;
-      for (std::uint32_t s = 0; s < samples_; ++s) {
-        const std::uint8_t byte = colour_[(p * samples_ + s) * 4 + c];
+      for (std::uint32_t s = 0; s < samples; ++s) {
+        const std::uint8_t byte = in[(p * samples + s) * 4 + c];
         sum = sum + (linear ? detail::srgbToLinear(byte) : static_cast<float>(byte) * toFloat);
       }
-      out.colour_[p * 4 + c] = samples_ == 1 ? colour_[p * 4 + c]
-                               : linear     ? detail::linearToSrgbByte(sum * average)
-                                            : detail::unorm8FromFloat(sum * average);
+      out[p * 4 + c] = linear ? detail::linearToSrgbByte(sum * average) : detail::unorm8FromFloat(sum * average);
     }
-    out.depth_[p] = depth_[p * samples_];
+  }
+}
+
+}  // namespace
+
+void Framebuffer::resolveInto(Framebuffer& out) const {
+  settled();
+  if (&out == this) {  // resolving in place: a single-sample framebuffer is its own resolve
+    if (samples_ != 1) out = resolve();
+    return;
+  }
+  if (out.width_ != width_ || out.height_ != height_ || out.depthFormat_ != depthFormat_ || out.samples_ != 1 ||
+      out.colourFormat_ != colourFormat_ || out.moreFormats_ != moreFormats_) {
+    std::vector<ColourFormat> formats{colourFormat_};
+    formats.insert(formats.end(), moreFormats_.begin(), moreFormats_.end());
+    out = Framebuffer(width_, height_, depthFormat_, 1, formats);
+  }
+  out.pending_.reset();  // every sample of `out` is written here
+  const std::size_t pixels = static_cast<std::size_t>(width_) * height_;
+  for (std::size_t q = 0; q < out.stencil_.size(); ++q) out.stencil_[q] = stencil_[q * samples_];
+  for (std::size_t p = 0; p < pixels; ++p) out.depth_[p] = depth_[p * samples_];
+  resolveColour(colourFormat_, samples_, pixels, colour_.data(), out.colour_.data());
+  for (std::size_t a = 0; a < moreFormats_.size(); ++a) {
+    resolveColour(moreFormats_[a], samples_, pixels, moreColour_[a].data(), out.moreColour_[a].data());
   }
 }
 
@@ -226,8 +255,15 @@ std::array<std::uint8_t, 4> Framebuffer::viewBytes(ColourFormat format, const st
 }
 
 void Framebuffer::clear(Vec4 colour, float depth, std::uint8_t stencil) {
-  PendingClear clear;
-  clear.colour = colourClearValue(colourFormat_, colour);
+  clear(std::span<const Vec4>(&colour, 1), depth, stencil);
+}
+
+void Framebuffer::clear(std::span<const Vec4> colours, float depth, std::uint8_t stencil) {
+  PendingClear clear{};
+  for (std::uint32_t a = 0; a < colourAttachments(); ++a) {
+    const Vec4 colour = a < colours.size() ? colours[a] : colours.empty() ? Vec4{} : colours.back();
+    clear.colour[a] = colourClearValue(colourFormat(a), colour);
+  }
   clear.depth = depthClearValue(depthFormat_, depth);
   clear.stencil = stencil;
   pending_ = clear;
@@ -255,8 +291,11 @@ void Framebuffer::fillRows(const PendingClear& clear, std::uint32_t y0, std::uin
   y1 = std::min(y1, height_ - 1);
   const std::size_t perRow = static_cast<std::size_t>(width_) * samples_;
   const std::size_t first = y0 * perRow, count = (y1 - y0 + 1) * perRow;
-  const std::size_t period = colourBytes(colourFormat_) / 4;
-  fillWords(colour_.data() + 4 * period * first, count, clear.colour, period);
+  for (std::uint32_t a = 0; a < colourAttachments(); ++a) {
+    const std::size_t period = colourBytes(colourFormat(a)) / 4;
+    std::uint8_t* colour = a == 0 ? colour_.data() : moreColour_[a - 1].data();
+    fillWords(colour + 4 * period * first, count, clear.colour[a], period);
+  }
   fillWords(reinterpret_cast<std::uint8_t*>(depth_.data() + first), count, {clear.depth, 0, 0, 0});
   if (!stencil_.empty()) std::memset(stencil_.data() + first, clear.stencil, count);
 }

@@ -19,6 +19,7 @@ std::span<const ShadingModel> shadingModels() {
       row.textures = m.textures;
       row.shadowMap = m.shadowMap;
       row.depthPassOnly = m.depthPassOnly;
+      row.colourOutputs = m.colourOutputs;
       rows.push_back(row);
     }
     return rows;

@@ -1,5 +1,5 @@
-// The shading models' names, mesh inputs, texture counts and depth-pass roles as the fuzz build's stand-in for the real table
-// (shaders/shading_models.cpp), whose rows instantiate every twin's draw code and take minutes
+// The shading models' names, mesh inputs, texture counts, depth-pass roles and colour outputs as
+// the fuzz build's stand-in for the real table (shaders/shading_models.cpp), whose rows instantiate every twin's draw code and take minutes
 // to compile: the scene loader only looks a model up by name and asks what its mesh must hold.
 // shading_model_names_test.cpp checks in the default build that this list is the real table's.
 // Deliberately no SPIR-V and no draw functions: nothing in the fuzz build renders a scene.
@@ -17,6 +17,7 @@ struct ShadingModelName {
   unsigned textures = 0;  // the textures the model samples ("texture", then "normal_map")
   shaders::ShadowMapSampler shadowMap = shaders::ShadowMapSampler::None;  // samples a depth pass ("shadow_map")
   bool depthPassOnly = false;                                              // depth_only: no colour
+  unsigned colourOutputs = 1;                                              // colour_outputs: 4
 };
 
 inline constexpr ShadingModelName kShadingModelNames[] = {
@@ -42,6 +43,7 @@ inline constexpr ShadingModelName kShadingModelNames[] = {
     {"builtins_sample", 0},
     {"builtins_sample_mask", 0},
     {"varyings_64", 0},
+    {"colour_outputs", 0, 0, shaders::ShadowMapSampler::None, false, 4},
 };
 
 }  // namespace fuzz

@@ -17,5 +17,6 @@ TEST(FuzzShadingModelNames, AreTheRealTable) {
     EXPECT_EQ(real[i].textures, fuzz::kShadingModelNames[i].textures) << real[i].name;
     EXPECT_EQ(real[i].shadowMap, fuzz::kShadingModelNames[i].shadowMap) << real[i].name;
     EXPECT_EQ(real[i].depthPassOnly, fuzz::kShadingModelNames[i].depthPassOnly) << real[i].name;
+    EXPECT_EQ(real[i].colourOutputs, fuzz::kShadingModelNames[i].colourOutputs) << real[i].name;
   }
 }

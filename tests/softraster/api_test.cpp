@@ -12,6 +12,7 @@
 #include <array>
 #include <iterator>
 #include <limits>
+#include <span>
 #include <bit>
 #include <cmath>
 #include <cstdint>
@@ -323,6 +324,88 @@ TEST(FramebufferCreate, FloatTargetsClearStoreAndResolve) {
   std::memcpy(values, f32->colour().data(), sizeof values);
   EXPECT_EQ((std::array<float, 4>{values[0], values[1], values[2], values[3]}),
             (std::array<float, 4>{100000.0f, -2.5f, 0.3f, 3.0f}));
+}
+
+// A shader with two colour outputs: Gradient's colour, and its complement.
+struct TwoOutputs {
+  using Vertex = Gradient::Vertex;
+  using Uniforms = Gradient::Uniforms;
+  static constexpr int kVaryings = 4;
+  static softraster::Vec4 vertex(const Uniforms& u, const Vertex& v, float* out) { return Gradient::vertex(u, v, out); }
+  template <class F>
+  static softraster::ColourOutputs<F, 2> fragment(const Uniforms& u, const F* in) {
+    const softraster::Vec4T<F> c = Gradient::fragment(u, in);
+    return {{c, {F(1.0f) - c.x, F(1.0f) - c.y, F(1.0f) - c.z, c.w}}};
+  }
+};
+static_assert(softraster::ShaderInterface<TwoOutputs>);
+static_assert(softraster::colourOutputsOf<TwoOutputs>() == 2);
+static_assert(!softraster::ShadesBatches<TwoOutputs>, "several outputs are shaded on the scalar path");
+
+TEST(FramebufferCreate, SeveralColourAttachments) {
+  using softraster::ColourFormat;
+  EXPECT_EQ(Framebuffer::create(4, 4, DepthFormat::D32Sfloat, 1, std::span<const ColourFormat>{}).error(),
+            "framebuffer colour attachments 0: must be 1..8");
+  const std::vector<ColourFormat> nine(9, ColourFormat::R8G8B8A8Unorm);
+  EXPECT_EQ(Framebuffer::create(4, 4, DepthFormat::D32Sfloat, 1, nine).error(),
+            "framebuffer colour attachments 9: must be 1..8");
+  const std::vector<ColourFormat> formats = {ColourFormat::R8G8B8A8Unorm, ColourFormat::R32G32B32A32Sfloat,
+                                             ColourFormat::B8G8R8A8Unorm};
+  auto fb = Framebuffer::create(3, 2, DepthFormat::D16Unorm, 4, formats);
+  ASSERT_TRUE(fb) << fb.error();
+  EXPECT_EQ(fb->colourAttachments(), 3u);
+  EXPECT_EQ(fb->colourFormat(1), ColourFormat::R32G32B32A32Sfloat);
+  EXPECT_EQ(fb->colour(1).size(), std::size_t{3} * 2 * 4 * 16);
+  // Each attachment cleared to its own colour, converted by its own format; a missing one takes the last.
+  const softraster::Vec4 clears[] = {{1, 0, 0, 1}, {-2.5f, 0.5f, 7, 1}};
+  fb->clear(clears, 1.0f);
+  EXPECT_EQ(fb->colourAt(2, 1, 3, 0), (std::array<std::uint8_t, 4>{255, 0, 0, 255}));
+  float stored[4];
+  std::memcpy(stored, fb->colour(1).data() + 16 * fb->sampleIndex(2, 1, 3), sizeof stored);
+  EXPECT_EQ(stored[0], -2.5f);
+  EXPECT_EQ(stored[2], 7.0f);
+  EXPECT_EQ(fb->colourAt(0, 0, 0, 2), (std::array<std::uint8_t, 4>{0, 128, 255, 255}));  // -2.5 and 7 clamped
+  const Framebuffer resolved = fb->resolve();
+  EXPECT_EQ(resolved.colourAttachments(), 3u);
+  EXPECT_EQ(resolved.samples(), 1u);
+  std::memcpy(stored, resolved.colour(1).data(), sizeof stored);
+  EXPECT_EQ(stored[1], 0.5f);
+}
+
+TEST(Context, WritesEachOutputToItsAttachment) {
+  using softraster::ColourFormat;
+  const softraster::Context context;
+  const std::vector<ColourFormat> formats = {ColourFormat::R8G8B8A8Unorm, ColourFormat::R8G8B8A8Unorm};
+  auto fb = Framebuffer::create(32, 32, DepthFormat::D32Sfloat, 1, formats);
+  ASSERT_TRUE(fb);
+  fb->clear({0, 0, 0, 0}, 1.0f);
+  const std::vector<Gradient::Vertex> vertices = fan();
+  softraster::PipelineState state;
+  state.topology = softraster::Topology::TriangleStrip;
+  state.rasterization.cullMode = softraster::CullMode::None;
+  ASSERT_TRUE(context.draw<TwoOutputs>(state, TwoOutputs::Uniforms{}, vertices, *fb));
+  std::size_t covered = 0;
+  for (std::uint32_t y = 0; y < 32; ++y) {
+    for (std::uint32_t x = 0; x < 32; ++x) {
+      const auto a = fb->colourAt(x, y, 0, 0), b = fb->colourAt(x, y, 0, 1);
+      if (a[3] == 0) continue;
+      ++covered;
+      for (int c = 0; c < 3; ++c) EXPECT_NEAR(int{a[static_cast<std::size_t>(c)]} + b[static_cast<std::size_t>(c)], 255, 1);
+    }
+  }
+  EXPECT_GT(covered, 100u);
+  // A one-output shader leaves attachment 1 undefined in Vulkan: refused, unless its writes are masked.
+  const softraster::Status refused = context.draw<Gradient>(state, Gradient::Uniforms{}, vertices, *fb);
+  ASSERT_FALSE(refused);
+  EXPECT_EQ(refused.message(), "colour attachment 1 has no fragment output (the shader writes 1), so Vulkan leaves its "
+                               "colour undefined: give the shader an output for it or set its colorWriteMask to 0");
+  state.moreBlend[0].colorWriteMask = 0;
+  const std::vector<std::uint8_t> before = fb->colour(1);
+  ASSERT_TRUE(context.draw<Gradient>(state, Gradient::Uniforms{}, vertices, *fb));
+  EXPECT_EQ(fb->colour(1), before);
+  state.moreBlend[0].colorBlendOp = static_cast<softraster::BlendOp>(9);
+  EXPECT_EQ(context.draw<TwoOutputs>(state, TwoOutputs::Uniforms{}, vertices, *fb).message(),
+            "unknown blend op (colour attachment 1)");
 }
 
 TEST(Context, RefusesAFramebufferWithoutPixels) {

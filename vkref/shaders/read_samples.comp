@@ -7,6 +7,9 @@
 //                          a UNORM depth back into its stored integer)
 //   words[c + n, c + n + pixels) stencil, the samples of a pixel one byte each (sample s in byte s)
 // with n = width * height * samples and c = n * colourWords.
+// With COLOUR_ONLY=1 (a colour attachment after the first, dispatched once per attachment into a
+// buffer of its own) only the colour is read and written, at the same place: no depth or
+// stencil binding, and the buffer holds words[0, c) alone.
 // Deliberately no conversion: colour is copied as bits, whatever its format; depth is left for
 // the host, where the inverse of the driver's UNORM conversion is checked against sample 0 of
 // the depth resolve.
@@ -16,7 +19,9 @@
 layout(local_size_x = 8, local_size_y = 8) in;
 
 layout(set = 0, binding = 0) uniform utexture2DMS colourSamples;
+#if !COLOUR_ONLY
 layout(set = 0, binding = 1) uniform texture2DMS depthSamples;
+#endif
 #if STENCIL
 layout(set = 0, binding = 2) uniform utexture2DMS stencilSamples;
 #endif
@@ -40,10 +45,14 @@ void main() {
     const uint i = pixel * samples + s;
     const uvec4 colour = texelFetch(colourSamples, ivec2(p), int(s));
     for (uint k = 0u; k < colourWords; ++k) words[i * colourWords + k] = colour[k];
+#if !COLOUR_ONLY
     words[c + i] = floatBitsToUint(texelFetch(depthSamples, ivec2(p), int(s)).r);
+#endif
 #if STENCIL
     stencilWord |= (texelFetch(stencilSamples, ivec2(p), int(s)).r & 255u) << (8u * s);
 #endif
   }
+#if !COLOUR_ONLY
   words[c + n + pixel] = stencilWord;
+#endif
 }

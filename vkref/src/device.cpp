@@ -181,6 +181,9 @@ Status Device::createDevice() {
   features.largePoints = features2.features.largePoints;
   features.geometryShader = features2.features.geometryShader;  // the adjacency topologies need it
   features.logicOp = features2.features.logicOp;
+  // Several colour attachments blended differently (PipelineState::moreBlend) need it
+  // (VUID-VkPipelineColorBlendStateCreateInfo-pAttachments-00605; lavapipe has it).
+  features.independentBlend = features2.features.independentBlend;
   features.alphaToOne = features2.features.alphaToOne;
   features.sampleRateShading = features2.features.sampleRateShading;
 

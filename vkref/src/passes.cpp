@@ -23,7 +23,12 @@ constexpr VkAccessFlags2 kDepthWriteAccess =
 // submission) are discarded, as the clear replaces them anyway.
 void toAttachments(VkCommandBuffer cmd, const Targets& t) {
   std::vector<VkImageMemoryBarrier2> barriers;
-  for (const Image* image : {&t.colour, &t.msColour}) {
+  std::vector<const Image*> colourImages = {&t.colour, &t.msColour};
+  for (const ColourTarget& more : t.moreColour) {
+    colourImages.push_back(&more.image);
+    colourImages.push_back(&more.msImage);
+  }
+  for (const Image* image : colourImages) {
     if (*image)
       barriers.push_back(imageBarrier(image->handle(), VK_IMAGE_ASPECT_COLOR_BIT, VK_PIPELINE_STAGE_2_NONE,
                                       VK_ACCESS_2_NONE, VK_PIPELINE_STAGE_2_COLOR_ATTACHMENT_OUTPUT_BIT,
@@ -41,20 +46,27 @@ void toAttachments(VkCommandBuffer cmd, const Targets& t) {
 }
 
 // Clears, then with MSAA resolves at the end: colour averaged, depth (and stencil) from sample 0.
+// Every colour attachment is cleared to its own colour (given as floats: Vulkan converts them to
+// the attachment's format) and resolved alike; colour attachment i is fragment output location i.
 // A depth/stencil format is also the stencil attachment (the same view), cleared to clearStencil.
 void beginRendering(VkCommandBuffer cmd, const FramePass& pass) {
   const Targets& t = *pass.targets;
   const bool ms = t.multisampled();
-  const auto& c = pass.clearColour;
-  const VkRenderingAttachmentInfo colour{.sType = VK_STRUCTURE_TYPE_RENDERING_ATTACHMENT_INFO,
-                                         .imageView = ms ? t.msColour.view() : t.colour.view(),
-                                         .imageLayout = VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL,
-                                         .resolveMode = ms ? VK_RESOLVE_MODE_AVERAGE_BIT : VK_RESOLVE_MODE_NONE,
-                                         .resolveImageView = ms ? t.colour.view() : VK_NULL_HANDLE,
-                                         .resolveImageLayout = VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL,
-                                         .loadOp = VK_ATTACHMENT_LOAD_OP_CLEAR,
-                                         .storeOp = VK_ATTACHMENT_STORE_OP_STORE,
-                                         .clearValue = {.color = {.float32 = {c[0], c[1], c[2], c[3]}}}};
+  const auto attachment = [&](const Image& single, const Image& multi, const std::array<float, 4>& c) {
+    return VkRenderingAttachmentInfo{.sType = VK_STRUCTURE_TYPE_RENDERING_ATTACHMENT_INFO,
+                                     .imageView = ms ? multi.view() : single.view(),
+                                     .imageLayout = VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL,
+                                     .resolveMode = ms ? VK_RESOLVE_MODE_AVERAGE_BIT : VK_RESOLVE_MODE_NONE,
+                                     .resolveImageView = ms ? single.view() : VK_NULL_HANDLE,
+                                     .resolveImageLayout = VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL,
+                                     .loadOp = VK_ATTACHMENT_LOAD_OP_CLEAR,
+                                     .storeOp = VK_ATTACHMENT_STORE_OP_STORE,
+                                     .clearValue = {.color = {.float32 = {c[0], c[1], c[2], c[3]}}}};
+  };
+  std::vector<VkRenderingAttachmentInfo> colour;
+  colour.push_back(attachment(t.colour, t.msColour, pass.clearColour));
+  for (std::size_t i = 0; i < t.moreColour.size(); ++i)
+    colour.push_back(attachment(t.moreColour[i].image, t.moreColour[i].msImage, pass.moreColour[i].clearColour));
   const VkRenderingAttachmentInfo depth{.sType = VK_STRUCTURE_TYPE_RENDERING_ATTACHMENT_INFO,
                                         .imageView = ms ? t.msDepth.view() : t.depth.view(),
                                         .imageLayout = VK_IMAGE_LAYOUT_DEPTH_STENCIL_ATTACHMENT_OPTIMAL,
@@ -67,8 +79,8 @@ void beginRendering(VkCommandBuffer cmd, const FramePass& pass) {
   const VkRenderingInfo info{.sType = VK_STRUCTURE_TYPE_RENDERING_INFO,
                              .renderArea = {{0, 0}, {t.width, t.height}},
                              .layerCount = 1,
-                             .colorAttachmentCount = 1,
-                             .pColorAttachments = &colour,
+                             .colorAttachmentCount = static_cast<std::uint32_t>(colour.size()),
+                             .pColorAttachments = colour.data(),
                              .pDepthAttachment = &depth,
                              .pStencilAttachment = t.hasStencil() ? &depth : nullptr};
   vkCmdBeginRendering(cmd, &info);
@@ -145,13 +157,18 @@ void recordDepthPass(VkCommandBuffer cmd, const FramePass& frame, const DepthPas
 
 // The single-sample images (rendered to, or resolved into) ready to be copied out.
 void toTransferSource(VkCommandBuffer cmd, const Targets& t) {
-  const VkImageMemoryBarrier2 barriers[2] = {
-      imageBarrier(t.colour.handle(), VK_IMAGE_ASPECT_COLOR_BIT, VK_PIPELINE_STAGE_2_COLOR_ATTACHMENT_OUTPUT_BIT,
-                   VK_ACCESS_2_COLOR_ATTACHMENT_WRITE_BIT, VK_PIPELINE_STAGE_2_COPY_BIT, VK_ACCESS_2_TRANSFER_READ_BIT,
-                   VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL),
+  const auto colour = [](const Image& image) {
+    return imageBarrier(image.handle(), VK_IMAGE_ASPECT_COLOR_BIT, VK_PIPELINE_STAGE_2_COLOR_ATTACHMENT_OUTPUT_BIT,
+                        VK_ACCESS_2_COLOR_ATTACHMENT_WRITE_BIT, VK_PIPELINE_STAGE_2_COPY_BIT,
+                        VK_ACCESS_2_TRANSFER_READ_BIT, VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL,
+                        VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL);
+  };
+  std::vector<VkImageMemoryBarrier2> barriers = {
+      colour(t.colour),
       imageBarrier(t.depth.handle(), depthAspects(t.depthFormat), kDepthWriteStages, kDepthWriteAccess,
                    VK_PIPELINE_STAGE_2_COPY_BIT, VK_ACCESS_2_TRANSFER_READ_BIT,
                    VK_IMAGE_LAYOUT_DEPTH_STENCIL_ATTACHMENT_OPTIMAL, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL)};
+  for (const ColourTarget& more : t.moreColour) barriers.push_back(colour(more.image));
   barrier(cmd, barriers);
 }
 

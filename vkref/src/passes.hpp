@@ -1,9 +1,10 @@
 // vkref passes: command recording. The render pass of a frame: its depth passes first (each
 // rendering depth alone into its image, then a barrier that makes the image a sampled texture
 // for the fragment stage), its images moved to attachment
-// layouts, dynamic rendering that clears colour and depth, the draws (each binding only what
-// differs from the draw before it), the MSAA resolve at the end of rendering, and the barrier
-// that leaves the single-sample images ready to be copied. Also the command buffers and the fence
+// layouts, dynamic rendering that clears every colour attachment (each to its own colour) and
+// depth, the draws (each binding only what differs from the draw before it), the MSAA resolve of
+// every attachment at the end of rendering, and the barrier that leaves the single-sample images
+// ready to be copied. Also the command buffers and the fence
 // a prepared frame owns, and their submission.
 // Deliberately no pipeline building (pipelines), no buffers or images (resources), no copies to
 // the host (readback), and no pass reads another's colour: only depth passes feed later ones.
@@ -11,6 +12,8 @@
 
 #include "device.hpp"
 #include "resources.hpp"
+
+#include <vkref/frame.hpp>
 
 #include <softraster/status.hpp>
 
@@ -52,6 +55,7 @@ struct DepthPassRecord {
 struct FramePass {
   const Targets* targets = nullptr;
   std::array<float, 4> clearColour{};
+  std::span<const ColourAttachment> moreColour;  // clear colours of targets->moreColour, in order
   float clearDepth = 1.0f;
   std::uint32_t clearStencil = 0;  // with a depth/stencil format
   VkPipelineLayout layout = VK_NULL_HANDLE;

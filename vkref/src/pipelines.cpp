@@ -3,6 +3,7 @@
 
 #include "errors.hpp"
 
+#include <algorithm>
 #include <array>
 #include <bit>
 #include <cmath>
@@ -36,7 +37,15 @@ static_assert(static_cast<int>(softraster::BlendFactor::SrcAlphaSaturate) == VK_
               "softraster's blend enums are Vulkan's values");
 // A tripwire: a field added to PipelineState must also join PipelineCache::Key (and compile()),
 // or draws differing only in it would share a pipeline.
-static_assert(sizeof(softraster::PipelineState) == 160, "PipelineState changed: update PipelineCache::Key");
+static_assert(sizeof(softraster::PipelineState) == 216, "PipelineState changed: update PipelineCache::Key");
+
+// Whether two attachments' blend states are the same VkPipelineColorBlendAttachmentState.
+bool sameBlend(const softraster::AttachmentBlend& a, const softraster::AttachmentBlend& b) {
+  return a.enable == b.enable && a.srcColorBlendFactor == b.srcColorBlendFactor &&
+         a.dstColorBlendFactor == b.dstColorBlendFactor && a.colorBlendOp == b.colorBlendOp &&
+         a.srcAlphaBlendFactor == b.srcAlphaBlendFactor && a.dstAlphaBlendFactor == b.dstAlphaBlendFactor &&
+         a.alphaBlendOp == b.alphaBlendOp && a.colorWriteMask == b.colorWriteMask;
+}
 
 // The viewport a draw uses: a zero width or height means the whole framebuffer.
 VkViewport viewportFor(const softraster::Viewport& v, std::uint32_t width, std::uint32_t height) {
@@ -83,10 +92,23 @@ Status checkFrame(const FrameRequest& request, const Device& device) {
   if (depthIndex >= std::size(kDepthFormats) || !device.depthFormatUsable[depthIndex])
     return Status::error("depth format " + std::to_string(depthIndex) +
                          " cannot be rendered to and copied on this device");
-  const auto colourIndex = static_cast<std::size_t>(request.colourFormat);
-  if (colourIndex >= std::size(kColourFormats) || !device.colourFormatUsable[colourIndex])
-    return Status::error("colour format " + std::to_string(colourIndex) +
-                         " cannot be rendered to, blended, sampled and copied on this device");
+  const auto colourUsable = [&](softraster::ColourFormat format, const std::string& what) -> Status {
+    const auto index = static_cast<std::size_t>(format);
+    if (index >= std::size(kColourFormats) || !device.colourFormatUsable[index])
+      return Status::error(what + "colour format " + std::to_string(index) +
+                           " cannot be rendered to, blended, sampled and copied on this device");
+    return {};
+  };
+  if (Status s = colourUsable(request.colourFormat, ""); !s) return s;
+  const std::size_t attachments = 1 + request.moreColour.size();
+  if (attachments > softraster::kMaxColourAttachments || attachments > limits.maxColorAttachments)
+    return Status::error(std::to_string(attachments) + " colour attachments (at most " +
+                         std::to_string(std::min<std::uint32_t>(softraster::kMaxColourAttachments,
+                                                                limits.maxColorAttachments)) +
+                         ")");
+  for (std::size_t i = 0; i < request.moreColour.size(); ++i)
+    if (Status s = colourUsable(request.moreColour[i].format, "colour attachment " + std::to_string(i + 1) + ": "); !s)
+      return s;
   if (request.samples != 1 && request.samples != 4) return Status::error("sample count must be 1 or 4");
   if (request.samples == 4 && (!(limits.framebufferColorSampleCounts & VK_SAMPLE_COUNT_4_BIT) ||
                                !(limits.framebufferDepthSampleCounts & VK_SAMPLE_COUNT_4_BIT)))
@@ -94,7 +116,8 @@ Status checkFrame(const FrameRequest& request, const Device& device) {
   return {};
 }
 
-Status checkDraw(const DrawCall& d, std::uint32_t width, std::uint32_t height, const Device& device) {
+Status checkDraw(const DrawCall& d, std::uint32_t width, std::uint32_t height, std::uint32_t colourAttachments,
+                 const Device& device) {
   const VkPhysicalDeviceLimits& limits = device.limits;
   const VkPhysicalDeviceFeatures& features = device.features;
   const ShaderProgram* p = d.program;
@@ -155,6 +178,19 @@ Status checkDraw(const DrawCall& d, std::uint32_t width, std::uint32_t height, c
   if (s.blend.logicOpEnable && !features.logicOp)
     return Status::error("logic ops are not supported by the device (the logicOp feature)");
   if (s.blend.logicOp > softraster::LogicOp::Set) return Status::error("unknown logic op");
+  for (std::uint32_t a = 0; a < colourAttachments; ++a) {
+    const softraster::AttachmentBlend b = softraster::attachmentBlend(s, a);
+    for (softraster::BlendFactor f :
+         {b.srcColorBlendFactor, b.dstColorBlendFactor, b.srcAlphaBlendFactor, b.dstAlphaBlendFactor})
+      if (f > softraster::BlendFactor::SrcAlphaSaturate)
+        return Status::error("colour attachment " + std::to_string(a) + ": unknown blend factor");
+    if (b.colorBlendOp > softraster::BlendOp::Max || b.alphaBlendOp > softraster::BlendOp::Max)
+      return Status::error("colour attachment " + std::to_string(a) + ": unknown blend op");
+    if (a > 0 && !features.independentBlend && !sameBlend(b, s.blend))
+      return Status::error("colour attachment " + std::to_string(a) +
+                           " blends unlike attachment 0, which needs the independentBlend feature the device lacks "
+                           "(VUID-VkPipelineColorBlendStateCreateInfo-pAttachments-00605)");
+  }
   if (s.multisample.sampleShadingEnable && !features.sampleRateShading)
     return Status::error("sample shading is not supported by the device (the sampleRateShading feature)");
   if (s.multisample.sampleShadingEnable && !(s.multisample.minSampleShading >= 0.0f && s.multisample.minSampleShading <= 1.0f))
@@ -304,8 +340,19 @@ softraster::Result<VkPipeline> PipelineCache::get(const DrawCall& d, const Targe
   key.program = programIndex(*d.program, memo);
   key.depthFormat = target.depthFormat;
   key.samples = target.samples;
-  key.colour = target.colour;
-  key.colourFormat = target.colourFormat;
+  key.colourCount = target.colourCount;
+  for (std::uint32_t a = 0; a < target.colourCount; ++a) {
+    key.colourFormats[a] = target.colourFormats[a];
+    const softraster::AttachmentBlend b = softraster::attachmentBlend(s, a);
+    key.blends[a] = {.enable = b.enable,
+                     .srcColorFactor = byte(b.srcColorBlendFactor),
+                     .dstColorFactor = byte(b.dstColorBlendFactor),
+                     .colorOp = byte(b.colorBlendOp),
+                     .srcAlphaFactor = byte(b.srcAlphaBlendFactor),
+                     .dstAlphaFactor = byte(b.dstAlphaBlendFactor),
+                     .alphaOp = byte(b.alphaBlendOp),
+                     .writeMask = b.colorWriteMask};
+  }
   key.topology = byte(s.topology);
   key.polygonMode = byte(r.polygonMode);
   key.cullMode = byte(r.cullMode);
@@ -343,15 +390,7 @@ softraster::Result<VkPipeline> PipelineCache::get(const DrawCall& d, const Targe
       key.stencilValues[3 * f + 2] = faces[f]->reference;
     }
   }
-  const softraster::BlendState& b = s.blend;
-  key.blend = b.enable;
-  key.srcColorFactor = byte(b.srcColorBlendFactor);
-  key.dstColorFactor = byte(b.dstColorBlendFactor);
-  key.colorOp = byte(b.colorBlendOp);
-  key.srcAlphaFactor = byte(b.srcAlphaBlendFactor);
-  key.dstAlphaFactor = byte(b.dstAlphaBlendFactor);
-  key.alphaOp = byte(b.alphaBlendOp);
-  key.writeMask = b.colorWriteMask;
+  const softraster::BlendState& b = s.blend;  // the logic op and constants every attachment shares
   key.logicOp = b.logicOpEnable ? byte(b.logicOp) : 0xff;
   key.sampleMask = s.multisample.sampleMask;
   key.alphaToCoverage = s.multisample.alphaToCoverageEnable;
@@ -474,28 +513,32 @@ softraster::Result<VkPipeline> PipelineCache::compile(const Program& p, const so
         .front = stencilFace(state.depth.front),
         .back = stencilFace(state.depth.back)};
     // softraster's blend enums are VkBlendFactor / VkBlendOp values, its mask VkColorComponentFlags.
+    // One state per colour attachment (blend, then moreBlend); the constants and logic op are shared.
     const softraster::BlendState& b = state.blend;
     const auto factor = [](softraster::BlendFactor f) { return static_cast<VkBlendFactor>(f); };
     const auto op = [](softraster::BlendOp o) { return static_cast<VkBlendOp>(o); };
-    const VkPipelineColorBlendAttachmentState blendAttachment{
-        .blendEnable = b.enable ? VK_TRUE : VK_FALSE,
-        .srcColorBlendFactor = factor(b.srcColorBlendFactor),
-        .dstColorBlendFactor = factor(b.dstColorBlendFactor),
-        .colorBlendOp = op(b.colorBlendOp),
-        .srcAlphaBlendFactor = factor(b.srcAlphaBlendFactor),
-        .dstAlphaBlendFactor = factor(b.dstAlphaBlendFactor),
-        .alphaBlendOp = op(b.alphaBlendOp),
-        .colorWriteMask = static_cast<VkColorComponentFlags>(b.colorWriteMask)};
+    std::array<VkPipelineColorBlendAttachmentState, softraster::kMaxColourAttachments> blendAttachments{};
+    for (std::uint32_t a = 0; a < target.colourCount; ++a) {
+      const softraster::AttachmentBlend ab = softraster::attachmentBlend(state, a);
+      blendAttachments[a] = {.blendEnable = ab.enable ? VK_TRUE : VK_FALSE,
+                             .srcColorBlendFactor = factor(ab.srcColorBlendFactor),
+                             .dstColorBlendFactor = factor(ab.dstColorBlendFactor),
+                             .colorBlendOp = op(ab.colorBlendOp),
+                             .srcAlphaBlendFactor = factor(ab.srcAlphaBlendFactor),
+                             .dstAlphaBlendFactor = factor(ab.dstAlphaBlendFactor),
+                             .alphaBlendOp = op(ab.alphaBlendOp),
+                             .colorWriteMask = static_cast<VkColorComponentFlags>(ab.colorWriteMask)};
+    }
     VkPipelineColorBlendStateCreateInfo blend{.sType = VK_STRUCTURE_TYPE_PIPELINE_COLOR_BLEND_STATE_CREATE_INFO,
-                                              .attachmentCount = target.colour ? 1u : 0u,
-                                              .pAttachments = &blendAttachment};
+                                              .attachmentCount = target.colourCount,
+                                              .pAttachments = blendAttachments.data()};
     for (int i = 0; i < 4; ++i) blend.blendConstants[i] = b.blendConstants[i];
     // softraster's LogicOp is VkLogicOp's values.
     blend.logicOpEnable = b.logicOpEnable ? VK_TRUE : VK_FALSE;
     blend.logicOp = static_cast<VkLogicOp>(b.logicOp);
     const VkPipelineRenderingCreateInfo rendering{.sType = VK_STRUCTURE_TYPE_PIPELINE_RENDERING_CREATE_INFO,
-                                                  .colorAttachmentCount = target.colour ? 1u : 0u,
-                                                  .pColorAttachmentFormats = &target.colourFormat,
+                                                  .colorAttachmentCount = target.colourCount,
+                                                  .pColorAttachmentFormats = target.colourFormats.data(),
                                                   .depthAttachmentFormat = target.depthFormat,
                                                   .stencilAttachmentFormat =
                                                       (depthAspects(target.depthFormat) & VK_IMAGE_ASPECT_STENCIL_BIT)

@@ -1,7 +1,9 @@
 // vkref pipelines: softraster::PipelineState translated into a Vulkan graphics pipeline, the
 // checks of what Vulkan on this device cannot express (each an error, never a silent default),
 // and the cache that compiles each pipeline once per Renderer, keyed by (program, state, target
-// formats, samples), and keeps it for every later draw and frame.
+// formats, samples), and keeps it for every later draw and frame. A pipeline writes every colour
+// attachment of its frame (fragment output location i to attachment i), each blended by its own
+// AttachmentBlend (PipelineState::blend, then moreBlend), or none in a depth pass.
 // Deliberately no dynamic state (viewport and scissor are baked, as the state gives them), no
 // eviction (a Renderer sees a few dozen distinct pipelines) and no VkPipelineCache (nothing is
 // written to disk). Recording the draws is passes' job.
@@ -34,20 +36,23 @@ std::uint32_t vertexCount(const DrawCall& draw);
 // A draw with nothing to assemble: skipped, and so not checked either.
 bool isEmpty(const DrawCall& draw);
 
-// What about the frame (size, clear depth, depth format, samples) the device cannot honour.
+// What about the frame (size, clear depth, colour attachments and their formats, depth format,
+// samples) the device cannot honour.
 softraster::Status checkFrame(const FrameRequest& request, const Device& device);
-// What about a draw into a width x height frame Vulkan (or this renderer) cannot honour.
-softraster::Status checkDraw(const DrawCall& draw, std::uint32_t width, std::uint32_t height, const Device& device);
+// What about a draw into a width x height frame with `colourAttachments` colour attachments
+// (0 in a depth pass) Vulkan (or this renderer) cannot honour.
+softraster::Status checkDraw(const DrawCall& draw, std::uint32_t width, std::uint32_t height,
+                             std::uint32_t colourAttachments, const Device& device);
 
 // What a pipeline is compiled for besides its draw: the frame's size (a zero viewport or scissor
-// means the whole frame), depth format and sample count, and whether there is a colour attachment
-// (of colourFormat; a depth pass has none).
+// means the whole frame), its colour attachments (colourFormats[0, colourCount); a depth pass has
+// none), depth format and sample count.
 struct TargetFormat {
   std::uint32_t width = 0, height = 0;
-  VkFormat colourFormat = VK_FORMAT_R8G8B8A8_UNORM;
+  std::uint32_t colourCount = 1;
+  std::array<VkFormat, softraster::kMaxColourAttachments> colourFormats{VK_FORMAT_R8G8B8A8_UNORM};
   VkFormat depthFormat = VK_FORMAT_UNDEFINED;
   VkSampleCountFlagBits samples = VK_SAMPLE_COUNT_1_BIT;
-  bool colour = true;
 };
 
 class PipelineCache {
@@ -97,8 +102,8 @@ class PipelineCache {
     std::uint32_t program = 0;  // index into programs_
     VkFormat depthFormat = VK_FORMAT_UNDEFINED;
     VkSampleCountFlagBits samples = VK_SAMPLE_COUNT_1_BIT;
-    bool colour = true;
-    VkFormat colourFormat = VK_FORMAT_R8G8B8A8_UNORM;
+    std::uint32_t colourCount = 1;
+    std::array<VkFormat, softraster::kMaxColourAttachments> colourFormats{};  // UNDEFINED past colourCount
     std::uint8_t topology = 0, polygonMode = 0, cullMode = 0, frontFace = 0, lineRasterization = 0;
     bool primitiveRestart = false, lineStipple = false, provokingLast = false;
     std::uint16_t stipplePattern = 0;
@@ -114,9 +119,14 @@ class PipelineCache {
     // front then back: failOp, passOp, depthFailOp, compareOp; compareMask, writeMask, reference
     std::array<std::uint8_t, 8> stencilOps{};
     std::array<std::uint32_t, 6> stencilValues{};
-    bool blend = false;
-    std::uint8_t srcColorFactor = 0, dstColorFactor = 0, colorOp = 0, srcAlphaFactor = 0, dstAlphaFactor = 0,
-                 alphaOp = 0, writeMask = 0;
+    // One colour attachment's AttachmentBlend.
+    struct Blend {
+      bool enable = false;
+      std::uint8_t srcColorFactor = 0, dstColorFactor = 0, colorOp = 0, srcAlphaFactor = 0, dstAlphaFactor = 0,
+                   alphaOp = 0, writeMask = 0;
+      auto operator<=>(const Blend&) const = default;
+    };
+    std::array<Blend, softraster::kMaxColourAttachments> blends{};  // default past colourCount
     std::uint8_t logicOp = 0xff;  // VkLogicOp, 0xff: logicOpEnable off
     std::uint32_t sampleMask = 0;  // VkPipelineMultisampleStateCreateInfo
     bool alphaToCoverage = false, alphaToOne = false, sampleShading = false;

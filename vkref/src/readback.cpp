@@ -28,6 +28,7 @@ std::uint32_t depthTexelBytes(softraster::DepthFormat format) {
 
 softraster::Result<HostImages> createHostImages(const Device& device, const Targets& targets,
                                                 softraster::ColourFormat colourFormat,
+                                                std::span<const softraster::ColourFormat> moreColourFormats,
                                                 softraster::DepthFormat depthFormat) {
   HostImages host;
   host.colourFormat = colourFormat;
@@ -36,6 +37,12 @@ softraster::Result<HostImages> createHostImages(const Device& device, const Targ
   auto colour = Buffer::create(device, pixels * softraster::colourBytes(colourFormat), VK_BUFFER_USAGE_TRANSFER_DST_BIT);
   if (!colour) return colour.status();
   host.colour = std::move(*colour);
+  host.moreColourFormats.assign(moreColourFormats.begin(), moreColourFormats.end());
+  for (softraster::ColourFormat format : moreColourFormats) {
+    auto more = Buffer::create(device, pixels * softraster::colourBytes(format), VK_BUFFER_USAGE_TRANSFER_DST_BIT);
+    if (!more) return more.status();
+    host.moreColour.push_back(std::move(*more));
+  }
   auto depth = Buffer::create(device, pixels * depthTexelBytes(depthFormat), VK_BUFFER_USAGE_TRANSFER_DST_BIT);
   if (!depth) return depth.status();
   host.depth = std::move(*depth);
@@ -55,6 +62,9 @@ Status recordCopies(VkCommandBuffer cmd, const Targets& targets, const HostImage
   const VkBufferImageCopy depthRegion{.imageSubresource = {VK_IMAGE_ASPECT_DEPTH_BIT, 0, 0, 1}, .imageExtent = extent};
   vkCmdCopyImageToBuffer(cmd, targets.colour.handle(), VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, host.colour.handle(), 1,
                          &colourRegion);
+  for (std::size_t i = 0; i < targets.moreColour.size(); ++i)
+    vkCmdCopyImageToBuffer(cmd, targets.moreColour[i].image.handle(), VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL,
+                           host.moreColour[i].handle(), 1, &colourRegion);
   vkCmdCopyImageToBuffer(cmd, targets.depth.handle(), VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, host.depth.handle(), 1,
                          &depthRegion);
   if (targets.hasStencil()) {
@@ -78,6 +88,10 @@ FrameImages unpack(const HostImages& host, std::uint32_t width, std::uint32_t he
   out.width = width;
   out.height = height;
   colourFromStorage(host.colourFormat, host.colour.mapped(), pixels, out.rgba, out.colourWords);
+  out.moreColour.resize(host.moreColour.size());
+  for (std::size_t i = 0; i < host.moreColour.size(); ++i)
+    colourFromStorage(host.moreColourFormats[i], host.moreColour[i].mapped(), pixels, out.moreColour[i].rgba,
+                      out.moreColour[i].colourWords);
   out.depth.resize(pixels);
   out.depthStorage.resize(pixels);
   const std::uint32_t texelBytes = depthTexelBytes(host.depthFormat);

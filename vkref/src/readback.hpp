@@ -1,6 +1,7 @@
-// vkref readback: the copies of a frame's single-sample colour and depth images into host
-// buffers, and their unpacking into FrameImages: colour as RGBA8 bytes (and, for the 10-bit and
-// float formats, their stored words), depth as floats in [0, 1] and
+// vkref readback: the copies of a frame's single-sample colour (every attachment's) and depth
+// images into host buffers, and their unpacking into FrameImages: colour as RGBA8 bytes (and, for
+// the 10-bit and float formats, their stored words; attachments after the first in
+// FrameImages::moreColour), depth as floats in [0, 1] and
 // as stored (D16 and X8_D24 as UNORM integers, D32_SFLOAT as the float's bits; a depth/stencil
 // format's depth aspect as its depth-only twin's) and the stencil aspect as bytes.
 // Deliberately no resolve (passes resolves MSAA while rendering; samples.hpp reads the samples), no layout changes (passes leaves
@@ -20,6 +21,9 @@
 
 #include <vulkan/vulkan.h>
 
+#include <span>
+#include <vector>
+
 namespace vkref::detail {
 
 // Where a frame's images are copied to: tightly packed rows, row 0 at the top.
@@ -28,10 +32,15 @@ struct HostImages {
   softraster::DepthFormat depthFormat = softraster::DepthFormat::D32Sfloat;
   Buffer colour, depth;
   Buffer stencil;  // with a depth/stencil format: one byte per pixel
+  // Colour attachments 1.. (Targets::moreColour): their formats and buffers, in order.
+  std::vector<softraster::ColourFormat> moreColourFormats;
+  std::vector<Buffer> moreColour;
 };
 
+// `moreColourFormats`: the formats of targets.moreColour, in order.
 softraster::Result<HostImages> createHostImages(const Device& device, const Targets& targets,
                                                 softraster::ColourFormat colourFormat,
+                                                std::span<const softraster::ColourFormat> moreColourFormats,
                                                 softraster::DepthFormat depthFormat);
 
 // Records the copies of `targets` (in TRANSFER_SRC_OPTIMAL layout) into `host`, and the barrier

@@ -1,8 +1,8 @@
 // vkref::Renderer on the plain Vulkan C API (1.3: dynamic rendering, synchronization2): only the
 // orchestration. create() opens the device (device.cpp) and the pipeline cache (pipelines.cpp);
-// prepare() checks the request, creates its images (resources.cpp), uploads its vertices,
-// indices and uniform blocks into one buffer each, uploads its textures (textures.cpp), takes its
-// pipelines from the cache and records its two command
+// prepare() checks the request, creates its images (each colour attachment's and depth's:
+// resources.cpp), uploads its vertices, indices and uniform blocks into one buffer each, uploads
+// its textures (textures.cpp), takes its pipelines from the cache and records its two command
 // buffers: the render pass with any depth passes before it (passes.cpp) and the copies to the
 // host (readback.cpp), with MSAA also the per-sample read-back (samples.cpp); submit() runs
 // the first, readBack() the second and unpacks the images.
@@ -19,7 +19,9 @@
 #include "samples.hpp"
 #include "textures.hpp"
 
+#include <span>
 #include <utility>
+#include <vector>
 
 namespace vkref {
 
@@ -103,11 +105,12 @@ Result<PreparedFrame> Renderer::prepare(const FrameRequest& request) {
       if (detail::isEmpty(d)) continue;
       const std::string name = passName + " draw " + std::to_string(i);
       if (!d.textures.empty()) return Status::error(name + ": a depth pass's draws sample nothing");
-      if (Status s = detail::checkDraw(d, pass.width, pass.height, device); !s) return s.prefixed(name);
+      if (Status s = detail::checkDraw(d, pass.width, pass.height, 0, device); !s) return s.prefixed(name);
       drawn.push_back(&d);
       names.push_back(name);
     }
   }
+  const auto colourCount = static_cast<std::uint32_t>(1 + request.moreColour.size());  // checked by checkFrame
   const std::size_t firstOwn = drawn.size();
   passBegin.push_back(firstOwn);
   for (std::size_t i = 0; i < request.draws.size(); ++i) {
@@ -122,20 +125,28 @@ Result<PreparedFrame> Renderer::prepare(const FrameRequest& request) {
       if (pass >= 0 && d.textures[t].texture != nullptr)
         return Status::error(name + ": texture " + std::to_string(t) + " names a depth pass and a texture");
     }
-    if (Status s = detail::checkDraw(d, width, height, device); !s) return s.prefixed(name);
+    if (Status s = detail::checkDraw(d, width, height, colourCount, device); !s) return s.prefixed(name);
     drawn.push_back(&d);
     names.push_back(name);
   }
 
   auto frame = std::make_unique<PreparedFrame::Impl>();
   frame->device = &device;
-  const detail::TargetFormat format{
+  detail::TargetFormat format{
       .width = width,
       .height = height,
-      .colourFormat = detail::kColourFormats[static_cast<std::size_t>(request.colourFormat)],
+      .colourCount = colourCount,
+      .colourFormats = {detail::kColourFormats[static_cast<std::size_t>(request.colourFormat)]},
       .depthFormat = detail::kDepthFormats[static_cast<std::size_t>(request.depthFormat)],
       .samples = request.samples == 4 ? VK_SAMPLE_COUNT_4_BIT : VK_SAMPLE_COUNT_1_BIT};
-  auto targets = detail::createTargets(device, width, height, format.colourFormat, format.depthFormat, format.samples);
+  std::vector<softraster::ColourFormat> moreColourFormats;
+  for (std::size_t i = 0; i < request.moreColour.size(); ++i) {
+    moreColourFormats.push_back(request.moreColour[i].format);
+    format.colourFormats[i + 1] = detail::kColourFormats[static_cast<std::size_t>(request.moreColour[i].format)];
+  }
+  auto targets = detail::createTargets(device, width, height, format.colourFormats[0],
+                                       std::span(format.colourFormats).subspan(1, colourCount - 1), format.depthFormat,
+                                       format.samples);
   if (!targets) return targets.status();
   frame->targets = std::move(*targets);
   std::vector<VkImageView> passViews;
@@ -147,7 +158,8 @@ Result<PreparedFrame> Renderer::prepare(const FrameRequest& request) {
     passViews.push_back(image->view());
     frame->depthPassImages.push_back(std::move(*image));
   }
-  auto host = detail::createHostImages(device, frame->targets, request.colourFormat, request.depthFormat);
+  auto host =
+      detail::createHostImages(device, frame->targets, request.colourFormat, moreColourFormats, request.depthFormat);
   if (!host) return host.status();
   frame->host = std::move(*host);
   if (frame->targets.multisampled()) {
@@ -179,8 +191,8 @@ Result<PreparedFrame> Renderer::prepare(const FrameRequest& request) {
     detail::TargetFormat target = format;
     if (i < firstOwn) {
       const DepthPass& p = request.depthPasses[pass];
-      target = {.width = p.width, .height = p.height, .depthFormat = kShadowFormat, .samples = VK_SAMPLE_COUNT_1_BIT,
-                .colour = false};
+      target = {.width = p.width, .height = p.height, .colourCount = 0, .colourFormats = {},
+                .depthFormat = kShadowFormat, .samples = VK_SAMPLE_COUNT_1_BIT};
     }
     auto pipeline = impl_->pipelines->get(d, target, memo);
     if (!pipeline) return pipeline.status().prefixed(names[i] + " (program '" + d.program->name + "')");
@@ -212,6 +224,7 @@ Result<PreparedFrame> Renderer::prepare(const FrameRequest& request) {
   frame->commands = std::move(*commands);
   const detail::FramePass framePass{.targets = &frame->targets,
                                     .clearColour = request.clearColour,
+                                    .moreColour = request.moreColour,
                                     .clearDepth = request.clearDepth,
                                     .clearStencil = request.clearStencil,
                                     .layout = impl_->pipelines->layout(),
@@ -242,7 +255,8 @@ Result<FrameImages> Renderer::readBack(const PreparedFrame& frame) {
   if (Status s = f.commands->submitAndWait(f.commands->copy()); !s) return s;
   FrameImages images = detail::unpack(f.host, f.targets.width, f.targets.height);
   if (f.samples) {
-    if (Status s = f.samples->unpack(images, f.host.colourFormat, f.host.depthFormat); !s) return s;
+    if (Status s = f.samples->unpack(images, f.host.colourFormat, f.host.moreColourFormats, f.host.depthFormat); !s)
+      return s;
   }
   return images;
 }

@@ -158,7 +158,8 @@ void Image::destroy() {
 // ---- A frame's images and geometry -------------------------------------------------------------
 
 softraster::Result<Targets> createTargets(const Device& device, std::uint32_t width, std::uint32_t height,
-                                          VkFormat colourFormat, VkFormat depthFormat, VkSampleCountFlagBits samples) {
+                                          VkFormat colourFormat, std::span<const VkFormat> moreColourFormats,
+                                          VkFormat depthFormat, VkSampleCountFlagBits samples) {
   Targets t;
   t.width = width;
   t.height = height;
@@ -167,22 +168,34 @@ softraster::Result<Targets> createTargets(const Device& device, std::uint32_t wi
   t.samples = samples;
   constexpr VkImageUsageFlags colourUsage = VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT;
   constexpr VkImageUsageFlags depthUsage = VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT;
-  auto colour = Image::create(device, colourFormat, colourUsage | VK_IMAGE_USAGE_TRANSFER_SRC_BIT,
-                              VK_IMAGE_ASPECT_COLOR_BIT, width, height, VK_SAMPLE_COUNT_1_BIT);
-  if (!colour) return colour.status();
-  t.colour = std::move(*colour);
+  // A colour attachment's single-sample image (rendered to or resolved into, then copied out) and,
+  // with MSAA, its multisampled one, sampled too: the per-sample read-back (samples.hpp) fetches
+  // every sample in a compute shader. Every colour format is read through an unsigned integer
+  // view of its texel's size: its stored bits, not their decoded values.
+  const auto colourImages = [&](VkFormat format, Image& single, Image& multi) -> Status {
+    auto image = Image::create(device, format, colourUsage | VK_IMAGE_USAGE_TRANSFER_SRC_BIT, VK_IMAGE_ASPECT_COLOR_BIT,
+                               width, height, VK_SAMPLE_COUNT_1_BIT);
+    if (!image) return image.status();
+    single = std::move(*image);
+    if (!t.multisampled()) return {};
+    auto ms = Image::create(device, format, colourUsage | VK_IMAGE_USAGE_SAMPLED_BIT, VK_IMAGE_ASPECT_COLOR_BIT, width,
+                            height, samples, 1, colourBitsFormat(format));
+    if (!ms) return ms.status();
+    multi = std::move(*ms);
+    return {};
+  };
+  if (Status s = colourImages(colourFormat, t.colour, t.msColour); !s) return s;
+  t.moreColour.resize(moreColourFormats.size());
+  for (std::size_t i = 0; i < moreColourFormats.size(); ++i) {
+    t.moreColour[i].format = moreColourFormats[i];
+    if (Status s = colourImages(moreColourFormats[i], t.moreColour[i].image, t.moreColour[i].msImage); !s) return s;
+  }
   auto depth = Image::create(device, depthFormat, depthUsage | VK_IMAGE_USAGE_TRANSFER_SRC_BIT,
                              depthAspects(depthFormat), width, height, VK_SAMPLE_COUNT_1_BIT);
   if (!depth) return depth.status();
   t.depth = std::move(*depth);
   if (t.multisampled()) {
-    // Sampled too: the per-sample read-back (samples.hpp) fetches every sample in a compute shader.
-    // Every colour format is read through an unsigned integer view of its texel's size: its
-    // stored bits, not their decoded values.
-    auto msColour = Image::create(device, colourFormat, colourUsage | VK_IMAGE_USAGE_SAMPLED_BIT,
-                                  VK_IMAGE_ASPECT_COLOR_BIT, width, height, samples, 1, colourBitsFormat(colourFormat));
-    if (!msColour) return msColour.status();
-    t.msColour = std::move(*msColour);
+    // Sampled too, for the per-sample read-back.
     auto msDepth = Image::create(device, depthFormat, depthUsage | VK_IMAGE_USAGE_SAMPLED_BIT, depthAspects(depthFormat),
                                  width, height, samples);
     if (!msDepth) return msDepth.status();

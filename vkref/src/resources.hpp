@@ -71,9 +71,18 @@ class Image {
   VkImageView bitsView_ = VK_NULL_HANDLE;  // only with a bitsFormat
 };
 
+// A colour attachment after the first (FrameRequest::moreColour): made, resolved and read like
+// the first (Targets' colour and msColour).
+struct ColourTarget {
+  VkFormat format = VK_FORMAT_UNDEFINED;
+  Image image;    // single-sampled, copied out
+  Image msImage;  // empty unless samples > 1
+};
+
 // The images one frame renders into. `colour` and `depth` are single-sampled and copied out;
 // with MSAA the draws go to `msColour` and `msDepth`, which resolve into them and are also
-// sampled by the per-sample read-back (samples.hpp).
+// sampled by the per-sample read-back (samples.hpp). Colour attachments after the first are in
+// `moreColour`, each with the same usage as the first.
 struct Targets {
   std::uint32_t width = 0, height = 0;
   VkFormat colourFormat = VK_FORMAT_UNDEFINED;
@@ -81,13 +90,16 @@ struct Targets {
   VkSampleCountFlagBits samples = VK_SAMPLE_COUNT_1_BIT;
   Image colour, depth;
   Image msColour, msDepth;  // empty unless samples > 1
+  std::vector<ColourTarget> moreColour;  // attachments 1..
 
   bool multisampled() const { return samples != VK_SAMPLE_COUNT_1_BIT; }
   bool hasStencil() const { return (depthAspects(depthFormat) & VK_IMAGE_ASPECT_STENCIL_BIT) != 0; }
 };
 
+// `moreColourFormats`: the formats of colour attachments 1.., one ColourTarget each.
 softraster::Result<Targets> createTargets(const Device& device, std::uint32_t width, std::uint32_t height,
-                                          VkFormat colourFormat, VkFormat depthFormat, VkSampleCountFlagBits samples);
+                                          VkFormat colourFormat, std::span<const VkFormat> moreColourFormats,
+                                          VkFormat depthFormat, VkSampleCountFlagBits samples);
 
 // Every vertex, index and uniform block of a frame, in one vertex buffer, one index buffer and one
 // uniform buffer (each empty when no draw has any), and where each draw's share begins.

@@ -6,6 +6,7 @@
 #include "passes.hpp"
 #include "readback.hpp"
 
+#include <read_samples_colour_comp.spv.h>
 #include <read_samples_comp.spv.h>
 #include <read_samples_stencil_comp.spv.h>
 
@@ -15,6 +16,7 @@
 #include <cstring>
 #include <span>
 #include <string>
+#include <vector>
 
 namespace vkref::detail {
 namespace {
@@ -35,12 +37,14 @@ constexpr VkPipelineStageFlags2 kAttachmentStages = VK_PIPELINE_STAGE_2_EARLY_FR
                                                     VK_PIPELINE_STAGE_2_LATE_FRAGMENT_TESTS_BIT |
                                                     VK_PIPELINE_STAGE_2_COLOR_ATTACHMENT_OUTPUT_BIT;
 
-Status createVariant(VkDevice device, std::span<const std::uint32_t> spirv, bool stencil,
+// The variant's bindings: colour 0, depth 1, stencil 2 (with `stencil`), the buffer 3; with
+// `colourOnly` colour and the buffer alone.
+Status createVariant(VkDevice device, std::span<const std::uint32_t> spirv, bool stencil, bool colourOnly,
                      SampleReader::Variant& v) {
   std::array<VkDescriptorSetLayoutBinding, 4> bindings{};
   std::uint32_t count = 0;
   for (std::uint32_t b : {0u, 1u, 2u, 3u}) {
-    if (b == 2 && !stencil) continue;
+    if ((b == 2 && !stencil) || ((b == 1 || b == 2) && colourOnly)) continue;
     bindings[count++] = {b, b == 3 ? VK_DESCRIPTOR_TYPE_STORAGE_BUFFER : kSampled, 1, VK_SHADER_STAGE_COMPUTE_BIT,
                          nullptr};
   }
@@ -100,8 +104,11 @@ std::uint32_t unormFromSampled(float value, int bits) {
 
 softraster::Result<std::unique_ptr<SampleReader>> SampleReader::create(const Device& device) {
   std::unique_ptr<SampleReader> reader(new SampleReader(device.device));
-  if (Status s = createVariant(device.device, read_samples_comp_spirv, false, reader->variants_[0]); !s) return s;
-  if (Status s = createVariant(device.device, read_samples_stencil_comp_spirv, true, reader->variants_[1]); !s) return s;
+  if (Status s = createVariant(device.device, read_samples_comp_spirv, false, false, reader->variants_[0]); !s) return s;
+  if (Status s = createVariant(device.device, read_samples_stencil_comp_spirv, true, false, reader->variants_[1]); !s)
+    return s;
+  if (Status s = createVariant(device.device, read_samples_colour_comp_spirv, false, true, reader->variants_[2]); !s)
+    return s;
   return reader;
 }
 
@@ -116,7 +123,7 @@ SampleReader::~SampleReader() {
 softraster::Result<std::unique_ptr<FrameSamples>> FrameSamples::create(const Device& device, const SampleReader& reader,
                                                                        const Targets& targets) {
   const bool stencil = targets.hasStencil();
-  std::unique_ptr<FrameSamples> f(new FrameSamples(device.device, reader.variant(stencil), targets));
+  std::unique_ptr<FrameSamples> f(new FrameSamples(device.device, reader, targets));
   auto view = [&](VkImageAspectFlags aspect, VkImageView& out) {
     const VkImageViewCreateInfo info{.sType = VK_STRUCTURE_TYPE_IMAGE_VIEW_CREATE_INFO,
                                      .image = targets.msDepth.handle(),
@@ -135,10 +142,16 @@ softraster::Result<std::unique_ptr<FrameSamples>> FrameSamples::create(const Dev
       Buffer::create(device, ((colourWords(targets.colourFormat) + 1) * samples + pixels) * 4, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT);
   if (!buffer) return buffer.status();
   f->buffer_ = std::move(*buffer);
+  const auto more = static_cast<std::uint32_t>(targets.moreColour.size());
+  for (const ColourTarget& target : targets.moreColour) {
+    auto moreBuffer = Buffer::create(device, colourWords(target.format) * samples * 4, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT);
+    if (!moreBuffer) return moreBuffer.status();
+    f->moreBuffers_.push_back(std::move(*moreBuffer));
+  }
 
-  const VkDescriptorPoolSize sizes[2] = {{kSampled, 3}, {VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1}};
+  const VkDescriptorPoolSize sizes[2] = {{kSampled, 3 + more}, {VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1 + more}};
   const VkDescriptorPoolCreateInfo poolInfo{.sType = VK_STRUCTURE_TYPE_DESCRIPTOR_POOL_CREATE_INFO,
-                                            .maxSets = 1,
+                                            .maxSets = 1 + more,
                                             .poolSizeCount = 2,
                                             .pPoolSizes = sizes};
   if (Status s = check(vkCreateDescriptorPool(device.device, &poolInfo, nullptr, &f->pool_), "vkCreateDescriptorPool"); !s)
@@ -172,6 +185,37 @@ softraster::Result<std::unique_ptr<FrameSamples>> FrameSamples::create(const Dev
                      .descriptorType = VK_DESCRIPTOR_TYPE_STORAGE_BUFFER,
                      .pBufferInfo = &bufferInfo};
   vkUpdateDescriptorSets(device.device, count, writes.data(), 0, nullptr);
+
+  // Each colour attachment after the first: its multisampled image's bits and its own buffer.
+  if (more > 0) {
+    f->moreSets_.resize(more);
+    const std::vector<VkDescriptorSetLayout> layouts(more, f->colourOnly_.setLayout);
+    const VkDescriptorSetAllocateInfo moreInfo{.sType = VK_STRUCTURE_TYPE_DESCRIPTOR_SET_ALLOCATE_INFO,
+                                               .descriptorPool = f->pool_,
+                                               .descriptorSetCount = more,
+                                               .pSetLayouts = layouts.data()};
+    if (Status s = check(vkAllocateDescriptorSets(device.device, &moreInfo, f->moreSets_.data()), "vkAllocateDescriptorSets");
+        !s)
+      return s;
+  }
+  for (std::uint32_t i = 0; i < more; ++i) {
+    const VkDescriptorImageInfo image{VK_NULL_HANDLE, targets.moreColour[i].msImage.bitsView(),
+                                      VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL};
+    const VkDescriptorBufferInfo moreBuffer{f->moreBuffers_[i].handle(), 0, VK_WHOLE_SIZE};
+    const VkWriteDescriptorSet moreWrites[2] = {{.sType = VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET,
+                                                 .dstSet = f->moreSets_[i],
+                                                 .dstBinding = 0,
+                                                 .descriptorCount = 1,
+                                                 .descriptorType = kSampled,
+                                                 .pImageInfo = &image},
+                                                {.sType = VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET,
+                                                 .dstSet = f->moreSets_[i],
+                                                 .dstBinding = 3,
+                                                 .descriptorCount = 1,
+                                                 .descriptorType = VK_DESCRIPTOR_TYPE_STORAGE_BUFFER,
+                                                 .pBufferInfo = &moreBuffer}};
+    vkUpdateDescriptorSets(device.device, 2, moreWrites, 0, nullptr);
+  }
   return f;
 }
 
@@ -186,28 +230,45 @@ void FrameSamples::record(VkCommandBuffer cmd) const {
   const VkImageAspectFlags depth = depthAspects(t.depthFormat);
   constexpr VkAccessFlags2 kWrites =
       VK_ACCESS_2_COLOR_ATTACHMENT_WRITE_BIT | VK_ACCESS_2_DEPTH_STENCIL_ATTACHMENT_WRITE_BIT;
-  const VkImageMemoryBarrier2 toRead[2] = {
-      imageBarrier(t.msColour.handle(), VK_IMAGE_ASPECT_COLOR_BIT, VK_PIPELINE_STAGE_2_COLOR_ATTACHMENT_OUTPUT_BIT,
-                   VK_ACCESS_2_COLOR_ATTACHMENT_WRITE_BIT, VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT,
-                   VK_ACCESS_2_SHADER_SAMPLED_READ_BIT, VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL,
-                   VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL),
+  const auto colourToRead = [](const Image& image) {
+    return imageBarrier(image.handle(), VK_IMAGE_ASPECT_COLOR_BIT, VK_PIPELINE_STAGE_2_COLOR_ATTACHMENT_OUTPUT_BIT,
+                        VK_ACCESS_2_COLOR_ATTACHMENT_WRITE_BIT, VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT,
+                        VK_ACCESS_2_SHADER_SAMPLED_READ_BIT, VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL,
+                        VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL);
+  };
+  const auto colourBack = [](const Image& image) {
+    return imageBarrier(image.handle(), VK_IMAGE_ASPECT_COLOR_BIT, VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT,
+                        VK_ACCESS_2_NONE, VK_PIPELINE_STAGE_2_COLOR_ATTACHMENT_OUTPUT_BIT,
+                        VK_ACCESS_2_COLOR_ATTACHMENT_WRITE_BIT, VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL,
+                        VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL);
+  };
+  std::vector<VkImageMemoryBarrier2> toRead = {
+      colourToRead(t.msColour),
       imageBarrier(t.msDepth.handle(), depth, kAttachmentStages, kWrites, VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT,
                    VK_ACCESS_2_SHADER_SAMPLED_READ_BIT, VK_IMAGE_LAYOUT_DEPTH_STENCIL_ATTACHMENT_OPTIMAL,
                    VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL)};
+  for (const ColourTarget& more : t.moreColour) toRead.push_back(colourToRead(more.msImage));
   barrier(cmd, toRead);
+  const std::uint32_t groupsX = (t.width + kGroupSize - 1) / kGroupSize, groupsY = (t.height + kGroupSize - 1) / kGroupSize;
   vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, variant_.pipeline);
   vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, variant_.layout, 0, 1, &set_, 0, nullptr);
   const PushConstants push{t.width, t.height, static_cast<std::uint32_t>(t.samples), colourWords(t.colourFormat)};
   vkCmdPushConstants(cmd, variant_.layout, VK_SHADER_STAGE_COMPUTE_BIT, 0, sizeof push, &push);
-  vkCmdDispatch(cmd, (t.width + kGroupSize - 1) / kGroupSize, (t.height + kGroupSize - 1) / kGroupSize, 1);
-  const VkImageMemoryBarrier2 back[2] = {
-      imageBarrier(t.msColour.handle(), VK_IMAGE_ASPECT_COLOR_BIT, VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT,
-                   VK_ACCESS_2_NONE, VK_PIPELINE_STAGE_2_COLOR_ATTACHMENT_OUTPUT_BIT,
-                   VK_ACCESS_2_COLOR_ATTACHMENT_WRITE_BIT, VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL,
-                   VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL),
+  vkCmdDispatch(cmd, groupsX, groupsY, 1);
+  if (!t.moreColour.empty()) vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, colourOnly_.pipeline);
+  for (std::size_t i = 0; i < t.moreColour.size(); ++i) {
+    vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, colourOnly_.layout, 0, 1, &moreSets_[i], 0, nullptr);
+    const PushConstants morePush{t.width, t.height, static_cast<std::uint32_t>(t.samples),
+                                 colourWords(t.moreColour[i].format)};
+    vkCmdPushConstants(cmd, colourOnly_.layout, VK_SHADER_STAGE_COMPUTE_BIT, 0, sizeof morePush, &morePush);
+    vkCmdDispatch(cmd, groupsX, groupsY, 1);
+  }
+  std::vector<VkImageMemoryBarrier2> back = {
+      colourBack(t.msColour),
       imageBarrier(t.msDepth.handle(), depth, VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT, VK_ACCESS_2_NONE,
                    kAttachmentStages, kWrites, VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL,
                    VK_IMAGE_LAYOUT_DEPTH_STENCIL_ATTACHMENT_OPTIMAL)};
+  for (const ColourTarget& more : t.moreColour) back.push_back(colourBack(more.msImage));
   const VkMemoryBarrier2 toHost{.sType = VK_STRUCTURE_TYPE_MEMORY_BARRIER_2,
                                 .srcStageMask = VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT,
                                 .srcAccessMask = VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT,
@@ -217,6 +278,7 @@ void FrameSamples::record(VkCommandBuffer cmd) const {
 }
 
 Status FrameSamples::unpack(FrameImages& out, softraster::ColourFormat colourFormat,
+                            std::span<const softraster::ColourFormat> moreColourFormats,
                             softraster::DepthFormat format) const {
   const Targets& t = targets_;
   const std::size_t samples = static_cast<std::size_t>(t.samples);
@@ -225,6 +287,9 @@ Status FrameSamples::unpack(FrameImages& out, softraster::ColourFormat colourFor
   const auto* words = static_cast<const std::uint32_t*>(buffer_.mapped());
   out.samples = static_cast<std::uint32_t>(samples);
   colourFromStorage(colourFormat, words, n, out.sampleRgba, out.sampleColourWords);
+  for (std::size_t i = 0; i < moreBuffers_.size() && i < out.moreColour.size() && i < moreColourFormats.size(); ++i)
+    colourFromStorage(moreColourFormats[i], moreBuffers_[i].mapped(), n, out.moreColour[i].sampleRgba,
+                      out.moreColour[i].sampleColourWords);
   words += n * colourWords(t.colourFormat);  // depth and stencil follow the colour
   out.sampleDepth.resize(n);
   out.sampleDepthStorage.resize(n);

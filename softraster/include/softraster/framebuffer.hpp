@@ -1,4 +1,5 @@
-// Framebuffer: a colour image (R8G8B8A8_UNORM, or B8G8R8A8_UNORM: the same four bytes per sample
+// Framebuffer: one or several colour images (colour attachments 0.., each of its own format:
+// R8G8B8A8_UNORM, or B8G8R8A8_UNORM: the same four bytes per sample
 // with red and blue swapped; or either as sRGB; or A2B10G10R10_UNORM_PACK32, one word per sample;
 // or R16G16B16A16_SFLOAT / R32G32B32A32_SFLOAT, four halves / floats per sample) and a depth image
 // (formats.hpp), row 0 at the top,
@@ -8,6 +9,8 @@
 // one byte per sample in the same order. resolve() averages colour samples as lavapipe's
 // resolve blit does (sRGB ones decoded to linear and encoded again, 10-bit and float ones averaged
 // as floats and stored as a fragment stores them) and keeps depth and stencil sample 0.
+// Attachment 0 is the one the accessors without an attachment number read; a fragment shader's
+// output location i goes to attachment i.
 // Made by Framebuffer::create, which checks the size, format and sample count and returns the
 // error as a Result (a default-constructed Framebuffer has no pixels and no draw accepts it).
 // clear() is deferred: it remembers the values, and the next draw that runs in the Context's
@@ -20,6 +23,7 @@
 
 #include <softraster/formats.hpp>
 #include <softraster/math.hpp>
+#include <softraster/state.hpp>
 #include <softraster/status.hpp>
 
 #include <array>
@@ -27,6 +31,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <optional>
+#include <span>
 #include <vector>
 
 namespace softraster {
@@ -50,14 +55,22 @@ class Framebuffer {
   static Result<Framebuffer> create(std::uint32_t width, std::uint32_t height,
                                     DepthFormat depthFormat = DepthFormat::D32Sfloat, std::uint32_t samples = 1,
                                     ColourFormat colourFormat = ColourFormat::R8G8B8A8Unorm);
+  // The same with one colour attachment per format (1..kMaxColourAttachments of them), or the
+  // error above or "framebuffer colour attachments N: must be 1..8".
+  static Result<Framebuffer> create(std::uint32_t width, std::uint32_t height, DepthFormat depthFormat,
+                                    std::uint32_t samples, std::span<const ColourFormat> colourFormats);
 
   std::uint32_t width() const { return width_; }
   std::uint32_t height() const { return height_; }
   std::uint32_t samples() const { return samples_; }
   DepthFormat depthFormat() const { return depthFormat_; }
-  ColourFormat colourFormat() const { return colourFormat_; }
+  std::uint32_t colourAttachments() const { return 1 + static_cast<std::uint32_t>(moreFormats_.size()); }
+  ColourFormat colourFormat(std::uint32_t attachment = 0) const {
+    assert(attachment < colourAttachments());
+    return attachment == 0 ? colourFormat_ : moreFormats_[attachment - 1];
+  }
 
-  // A single-sample framebuffer: colour = average of the samples (float sum in sample order,
+  // A single-sample framebuffer: colour = average of the samples (every attachment) (float sum in sample order,
   // times 0.25, stored as UNORM8; sRGB red, green and blue summed as linear values and encoded as
   // the fragment stage stores sRGB; A2B10G10R10 channels summed as v * float(1/1023) (alpha
   // float(1/3)) and stored as a fragment stores them; float channels summed from +0 and multiplied
@@ -68,18 +81,28 @@ class Framebuffer {
   // and formats with one sample (no allocation per frame).
   void resolveInto(Framebuffer& out) const;
 
-  // Clears colour (converted as a UNORM8 store converts; sRGB red, green and blue as lavapipe's
+  // Clears every colour attachment to `colour` (converted as a UNORM8 store converts; sRGB red, green and blue as lavapipe's
   // clear encodes them, srgb.hpp's linearToSrgbClearByte; A2B10G10R10 as Mesa's format packer
   // does, round(clamp(v) * 1023), alpha round(clamp(a) * 3); halves toward zero, floats as given),
   // depth (as a depth clear converts:
   // lrint(depth * (2^n - 1)) for UNORM formats) and stencil, if the format has it. Deferred, as
   // the top of this file says.
   void clear(Vec4 colour, float depth, std::uint8_t stencil = 0);
+  // The same with attachment i cleared to colours[i] (one colour per attachment; a missing one is
+  // colours' last, or black without any).
+  void clear(std::span<const Vec4> colours, float depth, std::uint8_t stencil = 0);
 
-  // colourBytes(colourFormat()) bytes per sample in the colour format's order (RGBA, or BGRA;
-  // A2B10G10R10's little-endian word; four halves or floats, red first); samples() samples per pixel.
-  std::vector<std::uint8_t>& colour() { return settled().colour_; }
-  const std::vector<std::uint8_t>& colour() const { return settled().colour_; }
+  // colourBytes(colourFormat(attachment)) bytes per sample in the colour format's order (RGBA, or
+  // BGRA; A2B10G10R10's little-endian word; four halves or floats, red first); samples() samples
+  // per pixel.
+  std::vector<std::uint8_t>& colour(std::uint32_t attachment = 0) {
+    assert(attachment < colourAttachments());
+    return attachment == 0 ? settled().colour_ : settled().moreColour_[attachment - 1];
+  }
+  const std::vector<std::uint8_t>& colour(std::uint32_t attachment = 0) const {
+    assert(attachment < colourAttachments());
+    return attachment == 0 ? settled().colour_ : settled().moreColour_[attachment - 1];
+  }
 
   // Depth as stored, one value per sample (see the top of this file).
   std::vector<std::uint32_t>& depthStorage() { return settled().depth_; }
@@ -100,11 +123,13 @@ class Framebuffer {
     assert(x < width_ && y < height_ && sample < samples_);
     return (static_cast<std::size_t>(y) * width_ + x) * samples_ + sample;
   }
-  // The R, G, B and A bytes of one sample of pixel (x, y), in that order whatever the format
-  // stores; (0, 0) is the top-left pixel. The 10-bit and float formats are scaled to bytes
-  // (viewBytes: a view; their exact bits are in colour()).
-  std::array<std::uint8_t, 4> colourAt(std::uint32_t x, std::uint32_t y, std::uint32_t sample = 0) const {
-    return viewBytes(colourFormat_, colour().data() + colourBytes(colourFormat_) * sampleIndex(x, y, sample));
+  // The R, G, B and A bytes of one sample of pixel (x, y) of a colour attachment, in that order
+  // whatever the format stores; (0, 0) is the top-left pixel. The 10-bit and float formats are
+  // scaled to bytes (viewBytes: a view; their exact bits are in colour()).
+  std::array<std::uint8_t, 4> colourAt(std::uint32_t x, std::uint32_t y, std::uint32_t sample = 0,
+                                       std::uint32_t attachment = 0) const {
+    const ColourFormat format = colourFormat(attachment);
+    return viewBytes(format, colour(attachment).data() + colourBytes(format) * sampleIndex(x, y, sample));
   }
   // One stored sample of `format` as R, G, B, A bytes: 8-bit formats as stored (B8G8R8A8's red and
   // blue swapped back); a 10-bit v as (v * 255 + 511) / 1023 (the nearest byte), the 2-bit alpha a
@@ -115,7 +140,7 @@ class Framebuffer {
 
   // For the draw loop's bands: a clear's values, one word per sample each.
   struct PendingClear {
-    std::array<std::uint32_t, 4> colour;  // as stored (colourClearValue)
+    std::array<std::array<std::uint32_t, 4>, kMaxColourAttachments> colour;  // per attachment, as stored (colourClearValue)
     std::uint32_t depth;   // as stored
     std::uint8_t stencil;  // written only where the format has stencil
   };
@@ -132,7 +157,7 @@ class Framebuffer {
 
  private:
   Framebuffer(std::uint32_t width, std::uint32_t height, DepthFormat depthFormat, std::uint32_t samples,
-              ColourFormat colourFormat);
+              std::span<const ColourFormat> colourFormats);
 
   // This framebuffer with any pending clear written: the images are its observable state, so
   // even a const access writes a pending clear first (hence the mutable members).
@@ -151,7 +176,9 @@ class Framebuffer {
   DepthFormat depthFormat_ = DepthFormat::D32Sfloat;
   ColourFormat colourFormat_ = ColourFormat::R8G8B8A8Unorm;
   mutable std::optional<PendingClear> pending_;
-  mutable std::vector<std::uint8_t> colour_;
+  std::vector<ColourFormat> moreFormats_;  // colour attachments 1..
+  mutable std::vector<std::uint8_t> colour_;  // attachment 0
+  mutable std::vector<std::vector<std::uint8_t>> moreColour_;  // attachments 1..
   mutable std::vector<std::uint32_t> depth_;
   mutable std::vector<std::uint8_t> stencil_;  // empty without a stencil aspect
 };

@@ -13,7 +13,9 @@
 // blending with every core factor and op, blend constants and the colour write mask; the stencil
 // test with front and back state on the D24_UNORM_S8_UINT and D32_SFLOAT_S8_UINT formats; stippled
 // lines and provoking vertex last (VK_EXT_line_rasterization, VK_EXT_provoking_vertex); negative
-// viewport heights; the sample mask, alpha to coverage and alpha to one (fragment/coverage.hpp).
+// viewport heights; the sample mask, alpha to coverage and alpha to one (fragment/coverage.hpp);
+// up to kMaxColourAttachments colour attachments, each of its own format and blend state, filled
+// by a shader's colour outputs (ColourOutputs, shader.hpp; drawn on the scalar path).
 // Where lavapipe deviates from the spec, ContextOptions::deviations chooses.
 // Conventions are Vulkan's: clip space x right, y down, z in [0, w]; window origin at the top
 // left, pixel centres at +0.5; front faces counter-clockwise as seen in the image by default;
@@ -164,13 +166,20 @@ class Context {
     if (std::int64_t{sc.x} + sc.width > INT32_MAX || std::int64_t{sc.y} + sc.height > INT32_MAX) {
       return Status::error("scissor x + width and y + height must fit in a 32-bit signed integer");
     }
-    const BlendState& b = state.blend;
-    for (BlendFactor f : {b.srcColorBlendFactor, b.dstColorBlendFactor, b.srcAlphaBlendFactor, b.dstAlphaBlendFactor}) {
-      if (f > BlendFactor::SrcAlphaSaturate) return Status::error("unknown blend factor (dual-source factors are not supported)");
+    for (std::uint32_t a = 0; a < framebuffer.colourAttachments(); ++a) {
+      const BlendState b = attachmentBlend(state, a);
+      const std::string which = a == 0 ? std::string() : " (colour attachment " + std::to_string(a) + ")";
+      for (BlendFactor f : {b.srcColorBlendFactor, b.dstColorBlendFactor, b.srcAlphaBlendFactor, b.dstAlphaBlendFactor}) {
+        if (f > BlendFactor::SrcAlphaSaturate) {
+          return Status::error("unknown blend factor" + which + " (dual-source factors are not supported)");
+        }
+      }
+      if (b.colorBlendOp > BlendOp::Max || b.alphaBlendOp > BlendOp::Max) return Status::error("unknown blend op" + which);
+      if (b.colorWriteMask > kColourRGBA) {
+        return Status::error("colour write mask" + which + " has bits other than R, G, B and A");
+      }
     }
-    if (b.colorBlendOp > BlendOp::Max || b.alphaBlendOp > BlendOp::Max) return Status::error("unknown blend op");
-    if (b.colorWriteMask > kColourRGBA) return Status::error("colour write mask has bits other than R, G, B and A");
-    if (b.logicOp > LogicOp::Set) return Status::error("unknown logic op");
+    if (state.blend.logicOp > LogicOp::Set) return Status::error("unknown logic op");
     const MultisampleState& ms = state.multisample;
     if (ms.sampleShadingEnable && !(ms.minSampleShading >= 0.0f && ms.minSampleShading <= 1.0f)) {
       return Status::error("minSampleShading must be in [0, 1] (VUID-VkPipelineMultisampleStateCreateInfo-"
@@ -225,6 +234,14 @@ class Context {
                         std::span<const typename Shader::Vertex> vertices, std::span<const std::uint32_t> indices,
                         Framebuffer& framebuffer, detail::DrawScratch& scratch) const {
     if (Status status = validate(state, framebuffer); !status) return status;
+    constexpr std::uint32_t kOutputs = static_cast<std::uint32_t>(colourOutputsOf<Shader>());
+    for (std::uint32_t a = kOutputs; a < framebuffer.colourAttachments(); ++a) {
+      if (attachmentBlend(state, a).colorWriteMask != 0) {
+        return Status::error("colour attachment " + std::to_string(a) + " has no fragment output (the shader writes " +
+                             std::to_string(kOutputs) + "), so Vulkan leaves its colour undefined: give the shader an "
+                             "output for it or set its colorWriteMask to 0");
+      }
+    }
     if constexpr (UsesFragmentBuiltins<Shader>) {
       const detail::SampleCoverage coverage = detail::sampleCoverage(state.multisample, framebuffer.samples(), options_.deviations);
       const bool perSample = coverage.perSample || (ShadesPerSample<Shader> && framebuffer.samples() == 4);

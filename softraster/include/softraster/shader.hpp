@@ -9,6 +9,10 @@
 //   static Vec4 S::vertex(const Uniforms&, const Vertex&, float* varyingsOut);   clip position
 //   template <class F>
 //   static Vec4T<F> S::fragment(const Uniforms&, const F* varyingsIn);           RGBA colour
+//     or, for several colour attachments, ColourOutputs<F, K> (one RGBA colour per output
+//     location 0..K-1, K <= kMaxColourAttachments): output i goes to the framebuffer's colour
+//     attachment i (its outputs past the framebuffer's attachments are dropped); such a shader is
+//     shaded on the scalar path
 // The clip position is in Vulkan's clip space (x right, y down, z in [0, w]; docs/library.md).
 // The fragment function is written once over its float type F (float, or FloatBatch from
 // simd.hpp: one value per lane of a 4x2 pixel block), so the fast path shades whole batches with
@@ -34,16 +38,43 @@
 #include <softraster/fragment_builtins.hpp>
 #include <softraster/math.hpp>
 #include <softraster/simd.hpp>
+#include <softraster/state.hpp>
 
 #include <array>
 #include <concepts>
 #include <cstdint>
 #include <span>
 #include <type_traits>
+#include <utility>
 
 namespace softraster {
 
 inline constexpr int kMaxVaryings = 64;  // Vulkan's minimum maxVertexOutputComponents
+
+// A fragment function's colours for several colour attachments: one per output location.
+template <class F, std::size_t K>
+using ColourOutputs = std::array<Vec4T<F>, K>;
+
+namespace detail {
+template <class T>
+struct ColourOutputCount {
+  static constexpr std::size_t value = 0;  // not a fragment's colour
+};
+template <>
+struct ColourOutputCount<Vec4> {
+  static constexpr std::size_t value = 1;
+};
+template <std::size_t K>
+struct ColourOutputCount<std::array<Vec4, K>> {
+  static constexpr std::size_t value = K;
+};
+}  // namespace detail
+
+// What a fragment function may return for one pixel: a Vec4 (one colour output), or
+// ColourOutputs<float, K> with 1 <= K <= kMaxColourAttachments.
+template <class T>
+concept FragmentColour =
+    detail::ColourOutputCount<T>::value >= 1 && detail::ColourOutputCount<T>::value <= kMaxColourAttachments;
 
 // How a varying is interpolated across a primitive (GLSL: smooth, noperspective, flat).
 enum class Interpolation : std::uint8_t { Perspective, NoPerspective, Flat };
@@ -101,7 +132,7 @@ concept ShadesQuads = requires {
 // A fragment function that reads or writes the fragment built-ins (fragment_builtins.hpp).
 template <class S>
 concept UsesFragmentBuiltins = requires(const typename S::Uniforms& u, const float* in, FragmentBuiltins<float>& b) {
-  { S::template fragment<float>(u, in, b) } -> std::same_as<Vec4>;
+  { S::template fragment<float>(u, in, b) } -> FragmentColour;
 };
 // A shader with the built-ins that writes gl_FragDepth (fragment_builtins.hpp).
 template <class S>
@@ -142,9 +173,9 @@ concept HasShaderVertexSignature = requires(const typename S::Uniforms& u, const
 };
 template <class S>
 concept HasShaderFragmentSignature = kSpecialFragmentForm<S> || requires(const typename S::Uniforms& u, const float* in) {
-  { S::fragment(u, in) } -> std::same_as<Vec4>;
+  { S::fragment(u, in) } -> FragmentColour;
 } || requires(const typename S::Uniforms& u, const float* in) {
-  { S::template fragment<float>(u, in) } -> std::same_as<Vec4>;
+  { S::template fragment<float>(u, in) } -> FragmentColour;
 };
 template <class S>
 concept HasShaderInterpolation = !requires { S::kInterpolation; } || requires {
@@ -192,7 +223,7 @@ constexpr bool checkShaderInterface() {
     static_assert(HasStaticShaderFragment<S>, "softraster: the shader's `fragment` takes other parameters; write template <class F> static softraster::Vec4T<F> fragment(const Uniforms&, const F* varyingsIn)");
     return false;
   } else if constexpr (!HasShaderFragmentSignature<S>) {
-    static_assert(HasShaderFragmentSignature<S>, "softraster: the shader's `fragment` must return softraster::Vec4T<F> (softraster::Vec4 for F = float: the RGBA colour)");
+    static_assert(HasShaderFragmentSignature<S>, "softraster: the shader's `fragment` must return softraster::Vec4T<F> (softraster::Vec4 for F = float: the RGBA colour), or softraster::ColourOutputs<F, K> with K from 1 to kMaxColourAttachments (8)");
     return false;
   } else if constexpr (!HasShaderInterpolation<S>) {
     static_assert(HasShaderInterpolation<S>, "softraster: the shader's `kInterpolation` must be a softraster::InterpolationSet<kVaryings> (one Interpolation per varying)");
@@ -249,9 +280,10 @@ concept ShadesBatches = requires(const typename Shader::Uniforms& u, const Float
   { Shader::template fragment<FloatBatch>(u, v, b) } -> std::same_as<Vec4T<FloatBatch>>;
 };
 
-// One pixel's colour from the shader, whichever form its fragment function takes.
+// One pixel's colour (or colours: ColourOutputs) from the shader, whichever form its fragment
+// function takes.
 template <class Shader>
-Vec4 shadeFragment(const typename Shader::Uniforms& uniforms, const float* varyings) {
+auto shadeFragment(const typename Shader::Uniforms& uniforms, const float* varyings) {
   if constexpr (requires { Shader::template fragment<float>(uniforms, varyings); }) {
     return Shader::template fragment<float>(uniforms, varyings);
   } else {
@@ -259,10 +291,25 @@ Vec4 shadeFragment(const typename Shader::Uniforms& uniforms, const float* varyi
   }
 }
 
-// One pixel's colour from a shader that takes the fragment built-ins (UsesFragmentBuiltins).
+// One pixel's colour (or colours) from a shader that takes the fragment built-ins (UsesFragmentBuiltins).
 template <class Shader>
-Vec4 shadeFragment(const typename Shader::Uniforms& uniforms, const float* varyings, FragmentBuiltins<float>& builtins) {
+auto shadeFragment(const typename Shader::Uniforms& uniforms, const float* varyings, FragmentBuiltins<float>& builtins) {
   return Shader::template fragment<float>(uniforms, varyings, builtins);
+}
+
+// How many colour outputs the shader's fragment function writes: K for ColourOutputs<F, K>, else 1.
+template <class Shader>
+constexpr int colourOutputsOf() {
+  using Uniforms = typename Shader::Uniforms;
+  if constexpr (UsesFragmentBuiltins<Shader>) {
+    return static_cast<int>(detail::ColourOutputCount<decltype(Shader::template fragment<float>(
+        std::declval<const Uniforms&>(), std::declval<const float*>(), std::declval<FragmentBuiltins<float>&>()))>::value);
+  } else if constexpr (ShadesQuads<Shader>) {
+    return 1;
+  } else {
+    return static_cast<int>(detail::ColourOutputCount<decltype(shadeFragment<Shader>(
+        std::declval<const Uniforms&>(), std::declval<const float*>()))>::value);
+  }
 }
 
 }  // namespace softraster

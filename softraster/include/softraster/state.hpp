@@ -4,12 +4,13 @@
 // honour is an error in that renderer, never a silent default.
 // 4x MSAA is supported; its sample count is the framebuffer's (framebuffer.hpp), not state here.
 // Deliberately absent until a scene needs it: dual-source blending (the SRC1 blend factors, which
-// need a second fragment output), more than one colour attachment, smooth lines,
+// need a second fragment output), smooth lines,
 // geometry and tessellation shaders (so adjacency vertices are only ever skipped). The depth
 // bounds test is absent for good: lavapipe reports depthBounds = false, so no Vulkan pipeline on
 // it may enable it.
 #pragma once
 
+#include <array>
 #include <cstdint>
 
 namespace softraster {
@@ -174,17 +175,15 @@ enum class LogicOp : std::uint8_t {
 // VkColorComponentFlagBits.
 enum ColourComponent : std::uint8_t { kColourR = 1, kColourG = 2, kColourB = 4, kColourA = 8, kColourRGBA = 15 };
 
-// VkPipelineColorBlendAttachmentState of the one colour attachment, plus
-// VkPipelineColorBlendStateCreateInfo::blendConstants, logicOpEnable and logicOp (static
-// pipeline state). The default is blending off with every component written. The write mask
-// applies with blending off too; its bits, like blendConstants, name R, G, B, A whatever the
-// target's byte order. On R8G8B8A8_UNORM and B8G8R8A8_UNORM targets both renderers blend in 8-bit
-// integers (fragment/colour.hpp). With logicOpEnable the logic op replaces blending (Vulkan:
-// blending is then treated as disabled) and works on the stored bytes.
-struct BlendState {
+// The colour attachments a pipeline may write at once: lavapipe's maxColorAttachments
+// (Vulkan's minimum is 4). Fragment output location i goes to colour attachment i.
+inline constexpr std::uint32_t kMaxColourAttachments = 8;
+
+// VkPipelineColorBlendAttachmentState: how one colour attachment blends. The default is blending
+// off with every component written. The write mask applies with blending off too; its bits name
+// R, G, B, A whatever the target's byte order.
+struct AttachmentBlend {
   bool enable = false;
-  bool logicOpEnable = false;
-  LogicOp logicOp = LogicOp::Copy;
   BlendFactor srcColorBlendFactor = BlendFactor::One;
   BlendFactor dstColorBlendFactor = BlendFactor::Zero;
   BlendOp colorBlendOp = BlendOp::Add;
@@ -192,6 +191,16 @@ struct BlendState {
   BlendFactor dstAlphaBlendFactor = BlendFactor::Zero;
   BlendOp alphaBlendOp = BlendOp::Add;
   std::uint8_t colorWriteMask = kColourRGBA;  // ColourComponent bits
+};
+
+// Colour attachment 0's AttachmentBlend plus what VkPipelineColorBlendStateCreateInfo holds once
+// for every attachment: blendConstants (R, G, B, A whatever the target's byte order),
+// logicOpEnable and logicOp (static pipeline state). On R8G8B8A8_UNORM and B8G8R8A8_UNORM targets
+// both renderers blend in 8-bit integers (fragment/colour.hpp). With logicOpEnable the logic op
+// replaces blending (Vulkan: blending is then treated as disabled) and works on the stored bytes.
+struct BlendState : AttachmentBlend {
+  bool logicOpEnable = false;
+  LogicOp logicOp = LogicOp::Copy;
   float blendConstants[4] = {0, 0, 0, 0};
 };
 
@@ -222,8 +231,19 @@ struct PipelineState {
   Scissor scissor;
   RasterizationState rasterization;
   DepthState depth;
-  BlendState blend;
+  BlendState blend;  // colour attachment 0's, and the constants and logic op of every attachment
+  // Colour attachments 1.. of a framebuffer with several (moreBlend[i] for attachment i + 1);
+  // entries past the framebuffer's attachments are not read.
+  std::array<AttachmentBlend, kMaxColourAttachments - 1> moreBlend{};
   MultisampleState multisample;
 };
+
+// Colour attachment `attachment`'s whole blend state: its AttachmentBlend with the pipeline's
+// constants and logic op (blend's).
+inline BlendState attachmentBlend(const PipelineState& state, std::uint32_t attachment) {
+  BlendState b = state.blend;
+  if (attachment > 0) static_cast<AttachmentBlend&>(b) = state.moreBlend[attachment - 1];
+  return b;
+}
 
 }  // namespace softraster

@@ -70,18 +70,39 @@ struct DepthPass {
   std::vector<DrawCall> draws;
 };
 
+// A colour attachment after the first: the fragment shader's output location i + 1 goes to
+// FrameRequest::moreColour[i], blended by each draw's PipelineState::moreBlend[i]; its own format
+// and clear colour (as the scene gives it, converted as a clear of that format converts).
+struct ColourAttachment {
+  softraster::ColourFormat format = softraster::ColourFormat::R8G8B8A8Unorm;
+  std::array<float, 4> clearColour{0, 0, 0, 0};
+};
+
 struct FrameRequest {
   std::uint32_t width = 0, height = 0;
   std::array<float, 4> clearColour{0, 0, 0, 0};
   float clearDepth = 1.0f;
   std::uint8_t clearStencil = 0;  // with a depth/stencil format
   softraster::ColourFormat colourFormat = softraster::ColourFormat::R8G8B8A8Unorm;
+  // Colour attachments 1.. (at most softraster::kMaxColourAttachments - 1), each resolved and read
+  // back like the first (FrameImages::moreColour); every draw's program writes their locations.
+  std::vector<ColourAttachment> moreColour;
   softraster::DepthFormat depthFormat = softraster::DepthFormat::D32Sfloat;
   std::uint32_t samples = 1;  // 1, or 4: rendered multisampled, colour resolved (average) and
                               // depth and stencil resolved (sample 0); read back both the
                               // resolve and every sample (FrameImages)
   std::vector<DrawCall> draws;  // drawn in order; a draw with nothing to assemble is skipped
   std::vector<DepthPass> depthPasses;  // rendered first, in order, each with the barriers its samplers need
+};
+
+// The colour of one attachment after the first, read back as FrameImages holds the first's:
+// its resolve (or single sample) as R, G, B, A bytes and, for formats wider than 8 bits, as
+// stored words; with MSAA every sample too (the samples of a pixel adjacent).
+struct ColourImages {
+  std::vector<std::uint8_t> rgba;
+  std::vector<std::uint32_t> colourWords;
+  std::vector<std::uint8_t> sampleRgba;
+  std::vector<std::uint32_t> sampleColourWords;
 };
 
 struct FrameImages {
@@ -104,6 +125,7 @@ struct FrameImages {
   std::vector<float> sampleDepth;                 // as `depth`
   std::vector<std::uint32_t> sampleDepthStorage;  // as `depthStorage`
   std::vector<std::uint8_t> sampleStencil;        // with a depth/stencil format, else empty
+  std::vector<ColourImages> moreColour;  // colour attachments 1.., as FrameRequest::moreColour
 };
 
 // A frame made ready by Renderer::prepare: its images, its uploaded vertices and indices and its

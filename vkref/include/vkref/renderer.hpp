@@ -1,7 +1,9 @@
 // vkref: renders frames through a real Vulkan pipeline (Mesa lavapipe by default), headless, and
-// reads colour (R8G8B8A8_UNORM or B8G8R8A8_UNORM, returned as R, G, B, A bytes) and depth
-// (D16_UNORM, X8_D24_UNORM_PACK32, D32_SFLOAT, or the depth/stencil formats') back to host memory. Each pipeline is built from softraster::PipelineState, the same value softraster
-// draws with; a state Vulkan here cannot express is reported as an error, never defaulted.
+// reads colour (one or more attachments, each of softraster::ColourFormat's formats, returned as
+// R, G, B, A bytes and, for the wider formats, as stored words) and depth (D16_UNORM,
+// X8_D24_UNORM_PACK32, D32_SFLOAT, or the depth/stencil formats') back to host memory. Each
+// pipeline is built from softraster::PipelineState, the same value softraster draws with; a
+// state Vulkan here cannot express is reported as an error, never defaulted.
 // A frame is prepared once (images, uploads, pipelines, recorded commands) and submitted as often
 // as wanted, so a benchmark times steady-state frames; render() does all three steps at once.
 // Deliberately not a general Vulkan wrapper: no window, no swapchain, 2D textures and depth passes only, one queue.

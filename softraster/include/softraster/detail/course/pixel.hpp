@@ -4,8 +4,8 @@
 // clamped with, and CourseFragments, the per-pixel end of the pipeline they all hand pixels to:
 // the stencil test (fragment/stencil.hpp, as the exact method does it, per sample), the depth
 // test (every compare op, depth write, Vulkan z or the course's 1/z buffer), the
-// shader's fragment function, blending and the write mask, through detail/fragment/ as the
-// exact method's scalar stage does.
+// shader's fragment function, blending and the write mask (each colour output to its attachment),
+// through detail/fragment/ as the exact method's scalar stage does.
 // The interpolated values of a Pixel, in order: window z (Vulkan depth, z/w mapped by the
 // viewport, linear in screen space), 1/w (the course's 1/z: linear in screen space), then the
 // shader's varyings. A perspective-correct varying travels as v/w and is divided by the
@@ -155,11 +155,11 @@ class CourseFragments {
     // The sample mask, and with alpha to coverage the colour first: the samples its alpha keeps.
     unsigned kept = target_.coverage.sampleMask;
     std::array<float, (N == 0 ? 1 : N)> varyings{};
-    Vec4 c{};
+    FragmentColours<Shader> c{};
     const bool shadedFirst = target_.coverage.shadesFirst();
     if (shadedFirst) {
       c = shadeValues(values, varyings.data());
-      kept &= samples_ == 4 ? alphaToCoverageSamples<4>(c.w) : alphaToCoverageSamples<1>(c.w);
+      kept &= samples_ == 4 ? alphaToCoverageSamples<4>(c[0].w) : alphaToCoverageSamples<1>(c[0].w);
       if (kept == 0) return;
     }
     unsigned passed = 0;
@@ -180,18 +180,18 @@ class CourseFragments {
     }
     if (passed == 0) return;
     if (!shadedFirst) c = shadeValues(values, varyings.data());
-    if (target_.coverage.alphaToOne) c.w = 1.0f;
+    if (target_.coverage.alphaToOne) setAlphaToOne(c);
     for (unsigned s = 0; s < samples_; ++s) {
       if (!(passed & (1u << s))) continue;
       const std::size_t sample = pixel * samples_ + s;
-      blendColour(target_.colour + target_.colourBytes * sample, c, target_.blend);
+      writeColours(target_, sample, c);
       if (target_.depth.testEnable && target_.depth.writeEnable) target_.depthStorage[sample] = stored;
     }
   }
 
-  // The shader's colour from one pixel's interpolated values (the varyings divided as the top
+  // The shader's colours from one pixel's interpolated values (the varyings divided as the top
   // says, into `varyings`).
-  Vec4 shadeValues(const float* values, float* varyings) const {
+  FragmentColours<Shader> shadeValues(const float* values, float* varyings) const {
     if constexpr (N > 0) {
       const float w = 1.0f / values[1];
       for (int i = 0; i < N; ++i) {
@@ -207,14 +207,14 @@ class CourseFragments {
   // time, with no neighbours: a shader that samples textures (kQuads) gets a batch whose every
   // lane is this pixel, so its derivatives are 0 and it samples the base level, magnified (the
   // course's texture lookup, without mipmaps: where that aliases is what the chart shows).
-  Vec4 shade(const float* varyings) const {
+  FragmentColours<Shader> shade(const float* varyings) const {
     if constexpr (ShadesQuads<Shader>) {
       std::array<FloatBatch, (N == 0 ? 1 : N)> batch{};
       for (int i = 0; i < N; ++i) batch[static_cast<std::size_t>(i)] = FloatBatch(varyings[i]);
       const Vec4T<FloatBatch> c = Shader::template fragment<FloatBatch>(uniforms_, batch.data());
-      return {c.x[0], c.y[0], c.z[0], c.w[0]};
+      return {Vec4{c.x[0], c.y[0], c.z[0], c.w[0]}};
     } else {
-      return shadeFragment<Shader>(uniforms_, varyings);
+      return fragmentColours(shadeFragment<Shader>(uniforms_, varyings));
     }
   }
 

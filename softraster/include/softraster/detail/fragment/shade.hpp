@@ -32,6 +32,10 @@
 //     (shadeSampleBySample); without the built-ins every sample would get the same colour, so
 //     such a shader is shaded once per pixel as before; a shader reading gl_SampleID or
 //     gl_SamplePosition (ShadesPerSample) is shaded sample by sample without the state too.
+//   - a shader with several colour outputs (ColourOutputs, shader.hpp) writes output i to colour
+//     attachment i, each blended with its own state and format (attachments 1.. are the
+//     FragmentTarget's moreColour); alpha to coverage reads output 0's alpha, alpha to one sets
+//     every output's.
 // Deliberately absent: coverage itself (exact/rasterizer.hpp walks it).
 #pragma once
 
@@ -48,6 +52,7 @@
 #include <softraster/simd.hpp>
 #include <softraster/state.hpp>
 
+#include <algorithm>
 #include <array>
 #include <bit>
 #include <cstddef>
@@ -72,12 +77,20 @@ struct FragmentTarget {
   std::uint8_t* colour;
   std::uint32_t* depthStorage;
   std::uint8_t* stencilStorage;  // null without a stencil aspect
+  // Colour attachments 1.. (the scalar stage writes them; the fast stage takes one attachment).
+  struct Attachment {
+    ColourBlend blend;
+    std::uint32_t colourBytes = 0;
+    std::uint8_t* colour = nullptr;
+  };
+  std::uint32_t colourAttachments = 1;  // the framebuffer's
+  std::array<Attachment, kMaxColourAttachments - 1> moreColour{};
 };
 
 inline FragmentTarget fragmentTarget(const PipelineState& state, Framebuffer& framebuffer, const Viewport& viewport,
                                      const PixelRect& region, bool inverseZ,
                                      Deviations deviations = Deviations::Driver) {
-  return {state.depth,
+  FragmentTarget target{state.depth,
           stencilState(state.depth, hasStencil(framebuffer.depthFormat())),
           colourBlend(state.blend, framebuffer.colourFormat()),
           region,
@@ -94,12 +107,50 @@ inline FragmentTarget fragmentTarget(const PipelineState& state, Framebuffer& fr
           framebuffer.colour().data(),
           framebuffer.depthStorage().data(),
           hasStencil(framebuffer.depthFormat()) ? framebuffer.stencilStorage().data() : nullptr};
+  target.colourAttachments = framebuffer.colourAttachments();
+  for (std::uint32_t a = 1; a < target.colourAttachments; ++a) {
+    const ColourFormat format = framebuffer.colourFormat(a);
+    target.moreColour[a - 1] = {colourBlend(attachmentBlend(state, a), format), colourBytes(format),
+                                framebuffer.colour(a).data()};
+  }
+  return target;
+}
+
+// A fragment's colours, one per colour output of the shader (a shader returning one Vec4 has one).
+template <class Shader>
+using FragmentColours = std::array<Vec4, static_cast<std::size_t>(colourOutputsOf<Shader>())>;
+inline std::array<Vec4, 1> fragmentColours(const Vec4& colour) { return {colour}; }
+template <std::size_t K>
+const std::array<Vec4, K>& fragmentColours(const std::array<Vec4, K>& colours) {
+  return colours;
+}
+
+// Alpha to one: every output's alpha (lavapipe's generate_fs_loop sets each colour output's).
+template <std::size_t K>
+void setAlphaToOne(std::array<Vec4, K>& colours) {
+  for (Vec4& c : colours) c.w = 1.0f;
+}
+
+// Output i blended into colour attachment i at `sample` (an index into the depth storage), for
+// every attachment the shader has an output for (Context refuses a draw that leaves an attachment
+// with colour writes unwritten).
+template <std::size_t K>
+void writeColours(const FragmentTarget& target, std::size_t sample, const std::array<Vec4, K>& colours) {
+  blendColour(target.colour + target.colourBytes * sample, colours[0], target.blend);
+  if constexpr (K > 1) {
+    const std::uint32_t attachments = std::min<std::uint32_t>(target.colourAttachments, K);
+    for (std::uint32_t a = 1; a < attachments; ++a) {
+      const FragmentTarget::Attachment& more = target.moreColour[a - 1];
+      blendColour(more.colour + more.colourBytes * sample, colours[a], more.blend);
+    }
+  }
 }
 
 template <class Shader, bool Fused, DepthFormat Format>
 class FragmentStage {
  public:
   static constexpr int N = Shader::kVaryings;
+  using Colours = FragmentColours<Shader>;
   static constexpr InstructionSet kInstructionSet = Fused ? InstructionSet::Fma : InstructionSet::Baseline;
 
   FragmentStage(const PipelineState& state, const typename Shader::Uniforms& uniforms, Framebuffer& framebuffer,
@@ -138,13 +189,13 @@ class FragmentStage {
     rasterizeEdges(edges, bounds, target_.region, [&](int px, int py) {
       const float fx = static_cast<float>(px), fy = static_cast<float>(py);
       const std::size_t pixel = static_cast<std::size_t>(py) * target_.width + static_cast<std::size_t>(px);
-      Vec4 colour{};
+      Colours colour{};
       [[maybe_unused]] float fragDepth = 0.0f;
       const bool shadedFirst = kBuiltins || target_.coverage.shadesFirst();
       if (shadedFirst) {  // a discarded fragment, or one its alpha or gl_SampleMask drops, tests and writes nothing
         unsigned maskOut = ~0u;
         if (!shadeFirst(t, px, py, 0.0f, varyings.data(), colour, fragDepth, 1u, maskOut) || !(maskOut & 1u)) return;
-        if (target_.coverage.alphaToCoverage && !alphaToCoverageSamples<1>(colour.w)) return;
+        if (target_.coverage.alphaToCoverage && !alphaToCoverageSamples<1>(colour[0].w)) return;
       }
       std::uint32_t stored = 0;
       bool passes = true;
@@ -163,8 +214,8 @@ class FragmentStage {
       if constexpr (!kBuiltins) {  // (a shader with the built-ins is always shaded first)
         if (!shadedFirst) colour = shadeAt(t, px, py, 0.0f, varyings.data());
       }
-      if (target_.coverage.alphaToOne) colour.w = 1.0f;
-      blendColour(target_.colour + target_.colourBytes * pixel, colour, target_.blend);
+      if (target_.coverage.alphaToOne) setAlphaToOne(colour);
+      writeColours(pixel, colour);
       if (target_.depth.testEnable && target_.depth.writeEnable) target_.depthStorage[pixel] = stored;
     });
   }
@@ -183,14 +234,14 @@ class FragmentStage {
           return;
         }
       }
-      Vec4 c{};
+      Colours c{};
       [[maybe_unused]] float fragDepth = 0.0f;
       const bool shadedFirst = kBuiltins || target_.coverage.shadesFirst();
       if (shadedFirst) {  // a discarded fragment leaves every sample alone; alpha to coverage and gl_SampleMask drop some
         unsigned maskOut = ~0u;
         if (!shadeFirst(t, px, py, 0.5f, varyings.data(), c, fragDepth, mask, maskOut)) return;
         mask &= maskOut;
-        if (target_.coverage.alphaToCoverage) mask &= alphaToCoverageSamples<4>(c.w);
+        if (target_.coverage.alphaToCoverage) mask &= alphaToCoverageSamples<4>(c[0].w);
         if (mask == 0) return;
       }
       const float fx = static_cast<float>(px), fy = static_cast<float>(py);
@@ -220,11 +271,11 @@ class FragmentStage {
       if constexpr (!kBuiltins) {
         if (!shadedFirst) c = shadeAt(t, px, py, 0.5f, varyings.data());
       }
-      if (target_.coverage.alphaToOne) c.w = 1.0f;
+      if (target_.coverage.alphaToOne) setAlphaToOne(c);
       for (int s = 0; s < 4; ++s) {
         if (!(passed & (1u << s))) continue;
         const std::size_t sample = pixel * 4 + static_cast<std::size_t>(s);
-        blendColour(target_.colour + target_.colourBytes * sample, c, target_.blend);
+        writeColours(sample, c);
         if (target_.depth.testEnable && target_.depth.writeEnable) target_.depthStorage[sample] = stored[s];
       }
     });
@@ -241,7 +292,7 @@ class FragmentStage {
     rasterizeEdges(edges, bounds, region, [&](int px, int py) {
       const float fx = static_cast<float>(px), fy = static_cast<float>(py);
       const std::size_t pixel = static_cast<std::size_t>(py) * target_.width + static_cast<std::size_t>(px);
-      Vec4 colour{};
+      Colours colour{};
       [[maybe_unused]] float fragDepth = 0.0f;
       unsigned kept = tested;
       const bool shadedFirst = kBuiltins || target_.coverage.shadesFirst();
@@ -281,7 +332,7 @@ class FragmentStage {
       for (int s = 0; s < 4; ++s) {
         const unsigned bit = 1u << s;
         const std::size_t sample = pixel * 4 + static_cast<std::size_t>(s);
-        if (written & bit) blendColour(target_.colour + target_.colourBytes * sample, colour, target_.blend);
+        if (written & bit) writeColours(sample, colour);
         if ((passed & bit) && target_.depth.testEnable && target_.depth.writeEnable) target_.depthStorage[sample] = stored;
       }
     });
@@ -307,7 +358,7 @@ class FragmentStage {
       builtins.sampleId = s;
       builtins.samplePosition = {kSamplePositions4x[s][0], kSamplePositions4x[s][1]};
       builtins.sampleMaskIn = static_cast<std::int32_t>(bit);  // the invocation's own sample
-      Vec4 c = shadeFragment<Shader>(uniforms_, varyings, builtins);
+      Colours c = fragmentColours(shadeFragment<Shader>(uniforms_, varyings, builtins));
       if (builtins.discard) continue;
       if (kWritesSampleMask && !(static_cast<std::uint32_t>(builtins.sampleMask) & bit)) continue;
       const std::size_t sample = pixel * 4 + static_cast<std::size_t>(s);
@@ -319,8 +370,8 @@ class FragmentStage {
       }
       if (target_.stencil.enable && !stencilTestAndUpdate(t.frontFacing, sample, passes)) continue;
       if (!passes) continue;
-      if (target_.coverage.alphaToOne) c.w = 1.0f;
-      blendColour(target_.colour + target_.colourBytes * sample, c, target_.blend);
+      if (target_.coverage.alphaToOne) setAlphaToOne(c);
+      writeColours(sample, c);
       if (target_.depth.testEnable && target_.depth.writeEnable) target_.depthStorage[sample] = stored;
     }
   }
@@ -339,7 +390,7 @@ class FragmentStage {
   // origin: 0 for single-sample planes, 0.5 for the MSAA ones). A shader that samples textures
   // is shaded with the 4x2 block whose left 2x2 quad holds the pixel (lanes as in simd.hpp), the
   // quad's other pixels as helpers, and this pixel's lane taken: its derivatives are the quad's.
-  Vec4 shadeAt(const TriangleInterpolants<N>& t, int px, int py, float offset, float* varyings) const {
+  Colours shadeAt(const TriangleInterpolants<N>& t, int px, int py, float offset, float* varyings) const {
     if constexpr (ShadesQuads<Shader>) {
       const int qx = px & ~1, qy = py & ~1;
       alignas(32) float lanes[N == 0 ? 1 : N][kBatchLanes] = {};
@@ -352,11 +403,11 @@ class FragmentStage {
       for (int i = 0; i < N; ++i) batch[static_cast<std::size_t>(i)] = FloatBatch::load(lanes[i]);
       const Vec4T<FloatBatch> c = Shader::template fragment<FloatBatch>(uniforms_, batch.data());
       const int lane = (px - qx) + 4 * (py - qy);
-      return {c.x[lane], c.y[lane], c.z[lane], c.w[lane]};
+      return {Vec4{c.x[lane], c.y[lane], c.z[lane], c.w[lane]}};
     } else {
       interpolateVaryings<Fused>(t, kInterpolation, static_cast<float>(px) + offset, static_cast<float>(py) + offset,
                                  varyings);  // + 0 changes no pixel coordinate (none is -0)
-      return shadeFragment<Shader>(uniforms_, varyings);
+      return fragmentColours(shadeFragment<Shader>(uniforms_, varyings));
     }
   }
 
@@ -364,7 +415,7 @@ class FragmentStage {
   // coverage): its colour in `colour`, its gl_FragDepth in `fragDepth`, its gl_SampleMask in
   // `maskOut` (left alone without the built-ins), and whether the fragment survives (was not
   // discarded); `maskIn` is its gl_SampleMaskIn.
-  bool shadeFirst(const TriangleInterpolants<N>& t, int px, int py, float offset, float* varyings, Vec4& colour,
+  bool shadeFirst(const TriangleInterpolants<N>& t, int px, int py, float offset, float* varyings, Colours& colour,
                   float& fragDepth, unsigned maskIn, unsigned& maskOut) const {
     if constexpr (kBuiltins) {
       return shadeWithBuiltins(t, px, py, offset, varyings, colour, fragDepth, maskIn, maskOut);
@@ -379,16 +430,18 @@ class FragmentStage {
   // kWritesSampleMask), and whether the fragment survives (was not discarded); `maskIn` is its
   // gl_SampleMaskIn.
   bool shadeWithBuiltins(const TriangleInterpolants<N>& t, int px, int py, float offset, float* varyings,
-                         Vec4& colour, float& fragDepth, unsigned maskIn, unsigned& maskOut) const {
+                         Colours& colour, float& fragDepth, unsigned maskIn, unsigned& maskOut) const {
     interpolateVaryings<Fused>(t, kInterpolation, static_cast<float>(px) + offset, static_cast<float>(py) + offset,
                                varyings);
     FragmentBuiltins<float> builtins = fragmentBuiltinsAt<Fused>(t, px, py, offset);
     builtins.sampleMaskIn = static_cast<std::int32_t>(maskIn);
-    colour = shadeFragment<Shader>(uniforms_, varyings, builtins);
+    colour = fragmentColours(shadeFragment<Shader>(uniforms_, varyings, builtins));
     fragDepth = builtins.fragDepth;
     maskOut = kWritesSampleMask ? static_cast<std::uint32_t>(builtins.sampleMask) : ~0u;
     return !builtins.discard;
   }
+
+  void writeColours(std::size_t sample, const Colours& colours) const { detail::writeColours(target_, sample, colours); }
 
   static constexpr bool kBuiltins = UsesFragmentBuiltins<Shader>;
   static constexpr bool kWritesDepth = WritesFragDepth<Shader>;
