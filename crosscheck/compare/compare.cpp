@@ -8,6 +8,7 @@
 #include <cstdlib>
 #include <cstring>
 #include <limits>
+#include <string>
 #include <utility>
 
 namespace crosscheck {
@@ -23,15 +24,17 @@ struct ClearValues {
   std::uint8_t stencil;
 };
 
-ClearValues clearValues(const Scene& scene) {
+// The clear values of colour attachment 0, or of `format` cleared to `colour` (a later one).
+ClearValues clearValues(const Scene& scene, softraster::ColourFormat format, softraster::Vec4 colour) {
   ClearValues clear{};
-  clear.colourWords = softraster::colourClearValue(scene.colourFormat, scene.clearColour);
+  clear.colourWords = softraster::colourClearValue(format, colour);
   std::memcpy(clear.colour.data(), clear.colourWords.data(), 4);
-  if (softraster::swapsRedBlue(scene.colourFormat)) std::swap(clear.colour[0], clear.colour[2]);
+  if (softraster::swapsRedBlue(format)) std::swap(clear.colour[0], clear.colour[2]);
   clear.depth = softraster::depthClearValue(scene.depthFormat, scene.clearDepth);
   clear.stencil = scene.clearStencil;
   return clear;
 }
+ClearValues clearValues(const Scene& scene) { return clearValues(scene, scene.colourFormat, scene.clearColour); }
 
 // A frame's samples: with MSAA every sample as stored before the resolve, else the pixels (one
 // sample each). Sample s of pixel i is at i * samples + s.
@@ -55,6 +58,18 @@ Samples samplesOf(const Frame& f, bool resolved = false) {
 
 // The resolved colour (the pixels themselves without MSAA) as Samples of one sample each.
 Samples resolvedOf(const Frame& f) { return samplesOf(f, true); }
+
+// The same of colour attachment k + 1 (Frame::moreColour[k]), with the frame's depth and stencil.
+Samples samplesOf(const Frame& f, const ColourImage& image, bool resolved = false) {
+  Samples s = samplesOf(f, resolved);
+  s.texelWords = softraster::colourBytes(image.colourFormat) / 4;
+  const bool multisampled = f.samples > 1 && !resolved;
+  const std::vector<std::uint8_t>& rgba = multisampled ? image.sampleRgba : image.rgba;
+  const std::vector<std::uint32_t>& words = multisampled ? image.sampleColourWords : image.colourWords;
+  s.rgba = rgba.data();
+  s.words = words.empty() ? nullptr : words.data();
+  return s;
+}
 
 // A float's bits (`bits` wide, sign in the top bit) as an integer that orders as the values do,
 // one step per representable value; -0 is one step below +0, so a sign of zero counts too.
@@ -95,7 +110,27 @@ unsigned coverageMask(const Samples& f, std::size_t i, const ClearValues& clear)
   return mask;
 }
 
-bool covered(const Frame& f, std::size_t i, const ClearValues& clear) { return coverageMask(samplesOf(f), i, clear) != 0; }
+// What tells a frame's covered samples: its samples and clear values, of every colour attachment.
+struct CoverageSources {
+  std::vector<Samples> samples;  // attachment 0, then Frame::moreColour's
+  std::vector<ClearValues> clears;
+};
+
+CoverageSources coverageSources(const Frame& f, const Scene& scene) {
+  CoverageSources sources{{samplesOf(f)}, {clearValues(scene)}};
+  for (std::size_t k = 0; k < f.moreColour.size() && k < scene.moreColour.size(); ++k) {
+    sources.samples.push_back(samplesOf(f, f.moreColour[k]));
+    sources.clears.push_back(clearValues(scene, scene.moreColour[k].format, scene.moreColour[k].clearColour));
+  }
+  return sources;
+}
+
+// A sample is covered when its depth or stencil, or its colour in any attachment, is not the clear's.
+unsigned coverageMask(const CoverageSources& f, std::size_t i) {
+  unsigned mask = 0;
+  for (std::size_t k = 0; k < f.samples.size(); ++k) mask |= coverageMask(f.samples[k], i, f.clears[k]);
+  return mask;
+}
 
 // |a - b| of two stored depths, in depth units ([0, 1] range): whole steps of 1/(2^n - 1) for
 // UNORM formats, the float difference for D32_SFLOAT (infinite where only one side is NaN).
@@ -134,17 +169,55 @@ Comparison compareFrames(const Frame& a, const Frame& b, const Scene& scene) {
     c.failures.push_back("sample counts differ");
     return c;
   }
+  if (a.moreColour.size() != b.moreColour.size() || a.moreColour.size() != scene.moreColour.size()) {
+    c.failures.push_back("colour attachment counts differ");
+    return c;
+  }
+  for (std::size_t k = 0; k < a.moreColour.size(); ++k) {
+    const ColourImage &ia = a.moreColour[k], &ib = b.moreColour[k];
+    if (ia.colourFormat != ib.colourFormat || ia.rgba.size() != a.rgba.size() || ib.rgba.size() != b.rgba.size() ||
+        ia.colourWords.size() != ib.colourWords.size() || ia.sampleRgba.size() != a.sampleRgba.size() ||
+        ib.sampleRgba.size() != b.sampleRgba.size() || ia.sampleColourWords.size() != ib.sampleColourWords.size()) {
+      c.failures.push_back("colour attachment " + std::to_string(k + 1) + "'s formats or sizes differ");
+      return c;
+    }
+  }
   const Samples sa = samplesOf(a), sb = samplesOf(b), ra = resolvedOf(a), rb = resolvedOf(b);
   const std::uint32_t samples = sa.samples;
   c.colourUnit = colourDeltaUnit(a.colourFormat);
   c.samples = samples;
   const Tolerance& tol = scene.tolerance;
-  const ClearValues clear = clearValues(scene);
+  const CoverageSources coverageA = coverageSources(a, scene), coverageB = coverageSources(b, scene);
+  // Colour attachments 1..: every sample and the resolve, compared as attachment 0's colour is.
+  struct More {
+    Samples sa, sb, ra, rb;
+  };
+  std::vector<More> more;
+  for (std::size_t k = 0; k < a.moreColour.size(); ++k) {
+    more.push_back({samplesOf(a, a.moreColour[k]), samplesOf(b, b.moreColour[k]), samplesOf(a, a.moreColour[k], true),
+                    samplesOf(b, b.moreColour[k], true)});
+    AttachmentComparison& m = c.moreColour.emplace_back();
+    m.colourUnit = colourDeltaUnit(a.moreColour[k].colourFormat);
+  }
   c.pixels = static_cast<std::uint64_t>(a.width) * a.height;
   std::array<std::uint64_t, 4> sums{};
   double squaredErrorRgb = 0;
   for (std::size_t i = 0; i < c.pixels; ++i) {
-    if (coverageMask(sa, i, clear) != coverageMask(sb, i, clear)) ++c.coverageMismatches;
+    if (coverageMask(coverageA, i) != coverageMask(coverageB, i)) ++c.coverageMismatches;
+    for (std::size_t k = 0; k < more.size(); ++k) {
+      AttachmentComparison& m = c.moreColour[k];
+      bool moreOver = false;
+      const auto measure = [&](const Samples& x, const Samples& y, std::size_t sample) {
+        for (int ch = 0; ch < 4; ++ch) {
+          const int d = channelDelta(x, y, sample, ch);
+          m.colourMaxDelta[ch] = std::max(m.colourMaxDelta[ch], d);
+          moreOver = moreOver || d > tol.colourThreshold;
+        }
+      };
+      for (std::uint32_t s = 0; s < samples; ++s) measure(more[k].sa, more[k].sb, i * samples + s);
+      measure(more[k].ra, more[k].rb, i);
+      if (moreOver) ++m.colourPixelsOver;
+    }
     bool over = false, depthOver = false, stencilDiffers = false;
     for (std::uint32_t s = 0; s < samples; ++s) {  // every sample (the pixel itself with one)
       const std::size_t k = i * samples + s;
@@ -179,9 +252,9 @@ Comparison compareFrames(const Frame& a, const Frame& b, const Scene& scene) {
 }
 
 std::uint64_t coveredPixels(const Frame& frame, const Scene& scene) {
-  const ClearValues clear = clearValues(scene);
+  const CoverageSources coverage = coverageSources(frame, scene);
   std::uint64_t count = 0;
-  for (std::size_t i = 0; i < frame.depthStorage.size(); ++i) count += covered(frame, i, clear);
+  for (std::size_t i = 0; i < frame.depthStorage.size(); ++i) count += coverageMask(coverage, i) != 0;
   return count;
 }
 
@@ -203,13 +276,13 @@ std::uint64_t colourDifferingPixels(const Frame& a, const Frame& b) {
 std::vector<std::uint8_t> diffHeatmap(const Frame& a, const Frame& b, const Scene& scene) {
   const std::size_t pixels = static_cast<std::size_t>(a.width) * a.height;
   std::vector<std::uint8_t> out(4 * pixels, 0);
-  const ClearValues clear = clearValues(scene);
   if (a.colourWords.size() != b.colourWords.size()) return out;
+  const CoverageSources coverageA = coverageSources(a, scene), coverageB = coverageSources(b, scene);
   const Samples ra = resolvedOf(a), rb = resolvedOf(b);
   for (std::size_t i = 0; i < pixels; ++i) {
     std::uint8_t* p = &out[4 * i];
     p[3] = 255;
-    if (covered(a, i, clear) != covered(b, i, clear)) {
+    if ((coverageMask(coverageA, i) != 0) != (coverageMask(coverageB, i) != 0)) {
       p[0] = 255, p[1] = 0, p[2] = 255;
       continue;
     }

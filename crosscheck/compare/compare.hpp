@@ -3,11 +3,12 @@
 // Colour is compared in the format's own steps (bytes; A2B10G10R10's stored 10- and 2-bit values;
 // the float formats' units in the last place; not their byte view), so the colour threshold is in
 // those steps too.
-// Coverage: a sample is covered in a frame when its colour, depth or stencil differs from the
-// clear values (as the format stores them); a coverage mismatch is a pixel whose samples are not covered alike in both frames.
+// Coverage: a sample is covered in a frame when its colour (in any colour attachment), depth or
+// stencil differs from the clear values (as each format stores them); a coverage mismatch is a pixel whose samples are not covered alike in both frames.
 // Stencil (with a depth/stencil format) is compared exactly: a stencil mismatch is a pixel whose
 // stored stencil differs in any sample. With MSAA every sample is compared (colour, depth,
-// stencil, coverage) and the resolved colour too (metrics.hpp says which metric is which);
+// stencil, coverage) and the resolved colour too (metrics.hpp says which metric is which); the
+// colour attachments after the first are compared as the first (Comparison::moreColour);
 // without, a pixel is its one sample. (A fragment that writes
 // exactly the clear colour with depth writes off is invisible to this test.)
 // Deliberately no perceptual metric and no position-deviation tolerance: the exact method is

@@ -35,6 +35,15 @@ nlohmann::json sceneJson(const SceneResult& r) {
                         {"colour_pixels_over", t.maxColourPixelsOver},
                         {"depth_pixels_over", t.maxDepthPixelsOver}}},
                       {"milliseconds", {{"soft", r.softMilliseconds}, {"vulkan", r.vulkanMilliseconds}}}};
+  if (!c.moreColour.empty()) {  // colour attachments 1..
+    nlohmann::json more = nlohmann::json::array();
+    for (const AttachmentComparison& m : c.moreColour) {
+      more.push_back({{"colour_max_delta", m.colourMaxDelta},
+                      {"colour_unit", m.colourUnit},
+                      {"colour_pixels_over", m.colourPixelsOver}});
+    }
+    j["more_colour_attachments"] = more;
+  }
   if (!r.comparison) j["error"] = r.error;  // not compared (the compare command stops before this)
   return j;
 }

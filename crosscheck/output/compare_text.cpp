@@ -48,6 +48,12 @@ void appendScene(std::string& out, const SceneResult& r) {
          depthText(t.depthThreshold).c_str());
   append(out, "  depth pixels over    %llu (allowed %llu)\n", count(c.depthPixelsOver), count(t.maxDepthPixelsOver));
   append(out, "  stencil mismatches   %llu (allowed 0)\n", count(c.stencilMismatches));
+  for (std::size_t k = 0; k < c.moreColour.size(); ++k) {  // colour attachments 1..
+    const AttachmentComparison& m = c.moreColour[k];
+    append(out, "  attachment %zu max %s   %d %d %d %d (threshold %d; %s), pixels over %llu (allowed %llu)\n", k + 1,
+           kAbsDelta, m.colourMaxDelta[0], m.colourMaxDelta[1], m.colourMaxDelta[2], m.colourMaxDelta[3],
+           t.colourThreshold, m.colourUnit.c_str(), count(m.colourPixelsOver), count(t.maxColourPixelsOver));
+  }
   append(out, "  time soft %.2f ms, vulkan %.2f ms\n", r.softMilliseconds, r.vulkanMilliseconds);
   for (const std::string& f : c.failures) append(out, "  over tolerance: %s\n", f.c_str());
 }

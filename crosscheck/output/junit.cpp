@@ -47,6 +47,13 @@ std::string systemOut(const SceneResult& r) {
            number(" %.6f", c.colourMeanDelta[2]) + number(" %.6f", c.colourMeanDelta[3]) + "\n";
     out += "colour_pixels_over: " + std::to_string(c.colourPixelsOver) + " (allowed " + std::to_string(t.maxColourPixelsOver) + ")\n";
     out += "psnr: " + psnrText(c.psnr) + "\n";
+    for (std::size_t k = 0; k < c.moreColour.size(); ++k) {  // colour attachments 1..
+      const AttachmentComparison& m = c.moreColour[k];
+      out += "attachment_" + std::to_string(k + 1) + "_colour_max_delta_rgba: " + std::to_string(m.colourMaxDelta[0]) +
+             " " + std::to_string(m.colourMaxDelta[1]) + " " + std::to_string(m.colourMaxDelta[2]) + " " +
+             std::to_string(m.colourMaxDelta[3]) + " (threshold " + std::to_string(t.colourThreshold) + "; " +
+             m.colourUnit + "), pixels over " + std::to_string(m.colourPixelsOver) + "\n";
+    }
     out += "depth_max_delta: " + depthText(c.depthMaxDelta) + " (threshold " + depthText(t.depthThreshold) + ")\n";
     out += "depth_pixels_over: " + std::to_string(c.depthPixelsOver) + " (allowed " + std::to_string(t.maxDepthPixelsOver) + ")\n";
     out += "stencil_mismatches: " + std::to_string(c.stencilMismatches) + " (allowed 0)\n";

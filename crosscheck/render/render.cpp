@@ -51,8 +51,10 @@ SoftrasterScene::SoftrasterScene(const Scene& scene, const softraster::ContextOp
     : scene_(scene),
       options_(options),
       context_(options) {
+  std::vector<softraster::ColourFormat> formats{scene.colourFormat};
+  for (const SceneColourAttachment& more : scene.moreColour) formats.push_back(more.format);
   softraster::Result<softraster::Framebuffer> framebuffer =
-      softraster::Framebuffer::create(scene.width, scene.height, scene.depthFormat, scene.samples, scene.colourFormat);
+      softraster::Framebuffer::create(scene.width, scene.height, scene.depthFormat, scene.samples, formats);
   if (framebuffer) {
     framebuffer_ = std::move(*framebuffer);
   } else {
@@ -102,8 +104,10 @@ softraster::Status SoftrasterScene::render() {
     *p.depth = std::move(*depth);
   }
   // The 1/z buffer is cleared to 0 (infinitely far); it is not a Vulkan mode.
-  framebuffer_.clear(scene_.clearColour,
-                     options_.depthMode == softraster::DepthMode::InverseZ ? 0.0f : scene_.clearDepth, scene_.clearStencil);
+  clearColours_.assign(1, scene_.clearColour);
+  for (const SceneColourAttachment& more : scene_.moreColour) clearColours_.push_back(more.clearColour);
+  framebuffer_.clear(clearColours_, options_.depthMode == softraster::DepthMode::InverseZ ? 0.0f : scene_.clearDepth,
+                     scene_.clearStencil);
   for (std::size_t i = 0; i < scene_.draws.size(); ++i) {
     const Draw& draw = scene_.draws[i];
     const softraster::Status status = draws_[i].draw(context_, draw.state, draw.indexed, draw.indices, framebuffer_);
@@ -115,6 +119,26 @@ softraster::Status SoftrasterScene::render() {
 }
 
 namespace {
+
+// A Frame's colour is R, G, B, A bytes, as vkref reads it back: `bytes` (a copy of an
+// attachment's storage in `format`) turned into that, B8G8R8A8's red and blue swapped back; a
+// wider format keeps its texels in `words` and the bytes become their view.
+void colourImage(softraster::ColourFormat format, std::vector<std::uint8_t>& bytes, std::vector<std::uint32_t>& words) {
+  if (softraster::swapsRedBlue(format)) {
+    for (std::size_t i = 0; i + 3 < bytes.size(); i += 4) std::swap(bytes[i], bytes[i + 2]);
+  }
+  // An empty image (no samples in a single-sample frame) has no data() to copy from.
+  if (bytes.empty() || (!softraster::isTenBit(format) && !softraster::isFloat(format))) return;
+  const std::size_t texelBytes = softraster::colourBytes(format), texels = bytes.size() / texelBytes;
+  words.resize(bytes.size() / 4);
+  std::memcpy(words.data(), bytes.data(), bytes.size());
+  bytes.resize(4 * texels);
+  const auto* stored = reinterpret_cast<const std::uint8_t*>(words.data());
+  for (std::size_t i = 0; i < texels; ++i) {
+    const auto view = softraster::Framebuffer::viewBytes(format, stored + texelBytes * i);
+    std::memcpy(bytes.data() + 4 * i, view.data(), 4);
+  }
+}
 
 // `samples`: the framebuffer before the resolve (with MSAA), whose every sample the frame also
 // carries (copied: the next render() draws into it again).
@@ -143,26 +167,15 @@ Frame frameFrom(const Scene& scene, softraster::Framebuffer& framebuffer, const 
     frame.stencil = framebuffer.stencilStorage();
   }
   frame.colourFormat = framebuffer.colourFormat();
-  // A Frame is R, G, B, A bytes, as vkref reads it back; a wider format keeps its texels as words
-  // and the bytes become their view.
-  const softraster::ColourFormat format = framebuffer.colourFormat();
-  const std::pair<std::vector<std::uint8_t>*, std::vector<std::uint32_t>*> images[] = {
-      {&frame.rgba, &frame.colourWords}, {&frame.sampleRgba, &frame.sampleColourWords}};
-  for (auto [bytes, words] : images) {
-    if (softraster::swapsRedBlue(format)) {
-      for (std::size_t i = 0; i + 3 < bytes->size(); i += 4) std::swap((*bytes)[i], (*bytes)[i + 2]);
-    }
-    // An empty image (no samples in a single-sample frame) has no data() to copy from.
-    if (bytes->empty() || (!softraster::isTenBit(format) && !softraster::isFloat(format))) continue;
-    const std::size_t texelBytes = softraster::colourBytes(format), texels = bytes->size() / texelBytes;
-    words->resize(bytes->size() / 4);
-    std::memcpy(words->data(), bytes->data(), bytes->size());
-    bytes->resize(4 * texels);
-    const auto* stored = reinterpret_cast<const std::uint8_t*>(words->data());
-    for (std::size_t i = 0; i < texels; ++i) {
-      const auto view = softraster::Framebuffer::viewBytes(format, stored + texelBytes * i);
-      std::memcpy(bytes->data() + 4 * i, view.data(), 4);
-    }
+  colourImage(frame.colourFormat, frame.rgba, frame.colourWords);
+  colourImage(frame.colourFormat, frame.sampleRgba, frame.sampleColourWords);
+  for (std::uint32_t a = 1; a < framebuffer.colourAttachments(); ++a) {
+    ColourImage& more = frame.moreColour.emplace_back();
+    more.colourFormat = framebuffer.colourFormat(a);
+    more.rgba = move ? std::move(framebuffer.colour(a)) : framebuffer.colour(a);
+    if (samples) more.sampleRgba = samples->colour(a);
+    colourImage(more.colourFormat, more.rgba, more.colourWords);
+    colourImage(more.colourFormat, more.sampleRgba, more.sampleColourWords);
   }
   return frame;
 }
@@ -200,6 +213,10 @@ softraster::Result<vkref::PreparedFrame> prepareVulkan(const Scene& scene, vkref
   request.clearDepth = scene.clearDepth;
   request.clearStencil = scene.clearStencil;
   request.colourFormat = scene.colourFormat;
+  for (const SceneColourAttachment& more : scene.moreColour) {
+    request.moreColour.push_back(
+        {more.format, {more.clearColour.x, more.clearColour.y, more.clearColour.z, more.clearColour.w}});
+  }
   request.depthFormat = scene.depthFormat;
   request.samples = scene.samples;
   std::size_t passDraws = 0;
@@ -259,6 +276,15 @@ softraster::Result<Frame> readVulkan(const Scene& scene, vkref::Renderer& render
   frame.sampleColourWords = std::move(images.sampleColourWords);
   frame.sampleDepthStorage = std::move(images.sampleDepthStorage);
   frame.sampleStencil = std::move(images.sampleStencil);
+  for (std::size_t a = 0; a < images.moreColour.size() && a < scene.moreColour.size(); ++a) {
+    vkref::ColourImages& read = images.moreColour[a];
+    ColourImage& more = frame.moreColour.emplace_back();
+    more.colourFormat = scene.moreColour[a].format;
+    more.rgba = std::move(read.rgba);
+    more.colourWords = std::move(read.colourWords);
+    more.sampleRgba = std::move(read.sampleRgba);
+    more.sampleColourWords = std::move(read.sampleColourWords);
+  }
   return frame;
 }
 

@@ -1,5 +1,6 @@
-// Renders a Scene with either renderer into a Frame: RGBA8 colour, float depth and (with a
-// depth/stencil format) stencil, row 0 at the top; with MSAA the resolve and every sample. Both adapters hand the renderers the same vertices and uniforms (made by each draw's row
+// Renders a Scene with either renderer into a Frame: RGBA8 colour (of every colour attachment),
+// float depth and (with a depth/stencil format) stencil, row 0 at the top; with MSAA the resolve
+// and every sample. Both adapters hand the renderers the same vertices and uniforms (made by each draw's row
 // of shaders/shading_models.hpp), indices, matrices and PipelineState, and time one span each
 // (Frame::milliseconds). openVulkan is the one place a vkref::Renderer is opened.
 // renderSoftraster / renderVulkan are one call, one frame. For steady-state frames (the bench) a
@@ -23,6 +24,15 @@
 
 namespace crosscheck {
 
+// One colour attachment after the first, as Frame holds the first's colour (below).
+struct ColourImage {
+  softraster::ColourFormat colourFormat = softraster::ColourFormat::R8G8B8A8Unorm;
+  std::vector<std::uint8_t> rgba;                 // the resolve (or the one sample), R, G, B, A bytes
+  std::vector<std::uint32_t> colourWords;         // a wider format's texels, else empty
+  std::vector<std::uint8_t> sampleRgba;           // with MSAA, every sample
+  std::vector<std::uint32_t> sampleColourWords;   // as colourWords
+};
+
 struct Frame {
   std::uint32_t width = 0, height = 0;
   std::vector<std::uint8_t> rgba;           // R, G, B, A bytes (of a wider format: a view of colourWords)
@@ -42,6 +52,7 @@ struct Frame {
   std::vector<std::uint32_t> sampleColourWords;   // as colourWords
   std::vector<std::uint32_t> sampleDepthStorage;  // as depthStorage
   std::vector<std::uint8_t> sampleStencil;        // as stencil
+  std::vector<ColourImage> moreColour;      // colour attachments 1.. (Scene::moreColour)
   double milliseconds = 0;                  // the renderer's timed span (render.cpp): softraster's clear,
                                             // draws and resolve; vkref's submit (the same work)
 };
@@ -90,6 +101,7 @@ class SoftrasterScene {
   softraster::Status framebufferStatus_;              // why framebuffer_ could not be made, if so
   std::vector<Pass> passes_;
   std::vector<shaders::SoftrasterDraw> draws_;
+  std::vector<softraster::Vec4> clearColours_;  // one per colour attachment (kept: no allocation per frame)
   double milliseconds_ = 0;
 };
 

@@ -35,7 +35,7 @@ json toleranceJson(const Tolerance& t) {
 json comparisonJson(const Comparison& c) {
   json mean = json::array();
   for (double v : c.colourMeanDelta) mean.push_back(number(v));
-  return {{"pixels", c.pixels},
+  json out = {{"pixels", c.pixels},
           {"samples_compared", c.samples},
           {"coverage_mismatches", c.coverageMismatches},
           {"colour_max_delta", c.colourMaxDelta},
@@ -48,6 +48,16 @@ json comparisonJson(const Comparison& c) {
           {"depth_pixels_over", c.depthPixelsOver},
           {"stencil_mismatches", c.stencilMismatches},
           {"failures", c.failures}};
+  if (!c.moreColour.empty()) {  // colour attachments 1.. (absent with one)
+    json more = json::array();
+    for (const AttachmentComparison& m : c.moreColour) {
+      more.push_back({{"colour_max_delta", m.colourMaxDelta},
+                      {"colour_unit", m.colourUnit},
+                      {"colour_pixels_over", m.colourPixelsOver}});
+    }
+    out["more_colour_attachments"] = more;
+  }
+  return out;
 }
 
 json optionalNumber(const std::optional<std::uint64_t>& v) { return v ? json(*v) : json(nullptr); }
@@ -158,6 +168,22 @@ Comparison readComparison(const json& j, const std::string& place) {
   // Absent from files written before stencil was compared: none could mismatch then.
   if (j.contains("stencil_mismatches")) {
     c.stencilMismatches = readInteger<std::uint64_t>(j["stencil_mismatches"], place + "/stencil_mismatches");
+  }
+  // Absent with one colour attachment (and from files written before there could be more).
+  if (j.contains("more_colour_attachments")) {
+    const std::string mp = place + "/more_colour_attachments";
+    const json& more = j["more_colour_attachments"];
+    if (!more.is_array()) bad(mp, "expected an array");
+    for (std::size_t k = 0; k < more.size(); ++k) {
+      const std::string ap = mp + "/" + std::to_string(k);
+      AttachmentComparison& m = c.moreColour.emplace_back();
+      const json& max = readArray(field(more[k], ap, "colour_max_delta"), ap + "/colour_max_delta", 4);
+      for (std::size_t i = 0; i < 4; ++i) {
+        m.colourMaxDelta[i] = readInteger<int>(max[i], ap + "/colour_max_delta/" + std::to_string(i));
+      }
+      m.colourUnit = readString(field(more[k], ap, "colour_unit"), ap + "/colour_unit");
+      m.colourPixelsOver = readInteger<std::uint64_t>(field(more[k], ap, "colour_pixels_over"), ap + "/colour_pixels_over");
+    }
   }
   const json& failures = field(j, place, "failures");
   if (!failures.is_array()) bad(place + "/failures", "expected an array");

@@ -520,6 +520,23 @@ void readDrawState(const json& d, const std::string& place, softraster::Pipeline
   rs.frontFace = readEnum(d, "front_face", place, rs.frontFace,
                           {{"counter_clockwise", FrontFace::CounterClockwise}, {"clockwise", FrontFace::Clockwise}});
   if (d.contains("blend")) state.blend = readBlend(d["blend"], placeOf(place, "blend"));
+  if (d.contains("more_blend")) {  // colour attachments 1..: each one's own blend, the constants and logic op are "blend"'s
+    const std::string mp = placeOf(place, "more_blend");
+    const json& more = d["more_blend"];
+    if (!more.is_array() || more.size() > state.moreBlend.size()) {
+      throw SceneError(mp, "expected an array of at most " + std::to_string(state.moreBlend.size()) +
+                               " blend objects (colour attachments 1..)");
+    }
+    for (std::size_t a = 0; a < more.size(); ++a) {
+      const std::string ap = placeOf(mp, std::to_string(a));
+      for (const char* shared : {"constants", "logic_op"}) {
+        if (more[a].is_object() && more[a].contains(shared)) {
+          throw SceneError(placeOf(ap, shared), "is the pipeline's, for every colour attachment: give it in \"blend\"");
+        }
+      }
+      state.moreBlend[a] = readBlend(more[a], ap);
+    }
+  }
   auto& ds = state.depth;
   ds.testEnable = readBool(d, "depth_test", place, ds.testEnable);
   ds.writeEnable = readBool(d, "depth_write", place, ds.writeEnable);
@@ -919,7 +936,7 @@ Draw readDrawMesh(const json& d, const std::string& place, const std::filesystem
                        "texture", "normal_map", "shadow_map", "shading",
                        "transform", "material", "topology", "viewport", "scissor", "cull", "front_face", "depth_clamp",
                        "depth_bias", "line_width", "line_rasterization", "point_size", "polygon_mode", "blend",
-                       "depth_test", "depth_write", "depth_compare", "depth_bounds_test", "stencil",
+                       "more_blend", "depth_test", "depth_write", "depth_compare", "depth_bounds_test", "stencil",
                        "primitive_restart", "provoking_vertex", "line_stipple", "multisample"});
   Draw draw;
   draw.name = readString(d, "name", place, place);
@@ -1144,17 +1161,18 @@ Scene readScene(json& document, const std::filesystem::path& path, const std::ve
     const json& fb = document["framebuffer"];
     checkKeys(fb, "/framebuffer",
               {"width", "height", "clear_colour", "clear_depth", "clear_stencil", "colour_format", "depth_format",
-               "samples"});
+               "samples", "more_colour_attachments"});
     scene.samples = static_cast<std::uint32_t>(readCount(fb, "samples", "/framebuffer", 1, 64));
     if (scene.samples != 1 && scene.samples != 4) throw SceneError("/framebuffer/samples", "must be 1 or 4");
-    scene.colourFormat = readEnum(fb, "colour_format", "/framebuffer", scene.colourFormat,
-                                  {{"r8g8b8a8_unorm", softraster::ColourFormat::R8G8B8A8Unorm},
-                                   {"b8g8r8a8_unorm", softraster::ColourFormat::B8G8R8A8Unorm},
-                                   {"r8g8b8a8_srgb", softraster::ColourFormat::R8G8B8A8Srgb},
-                                   {"b8g8r8a8_srgb", softraster::ColourFormat::B8G8R8A8Srgb},
-                                   {"a2b10g10r10_unorm", softraster::ColourFormat::A2B10G10R10Unorm},
-                                   {"r16g16b16a16_sfloat", softraster::ColourFormat::R16G16B16A16Sfloat},
-                                   {"r32g32b32a32_sfloat", softraster::ColourFormat::R32G32B32A32Sfloat}});
+    const std::vector<std::pair<const char*, softraster::ColourFormat>> colourFormats = {
+        {"r8g8b8a8_unorm", softraster::ColourFormat::R8G8B8A8Unorm},
+        {"b8g8r8a8_unorm", softraster::ColourFormat::B8G8R8A8Unorm},
+        {"r8g8b8a8_srgb", softraster::ColourFormat::R8G8B8A8Srgb},
+        {"b8g8r8a8_srgb", softraster::ColourFormat::B8G8R8A8Srgb},
+        {"a2b10g10r10_unorm", softraster::ColourFormat::A2B10G10R10Unorm},
+        {"r16g16b16a16_sfloat", softraster::ColourFormat::R16G16B16A16Sfloat},
+        {"r32g32b32a32_sfloat", softraster::ColourFormat::R32G32B32A32Sfloat}};
+    scene.colourFormat = readEnum(fb, "colour_format", "/framebuffer", scene.colourFormat, colourFormats);
     scene.depthFormat = readEnum(fb, "depth_format", "/framebuffer", scene.depthFormat,
                                  {{"d16_unorm", softraster::DepthFormat::D16Unorm},
                                   {"x8_d24_unorm", softraster::DepthFormat::X8D24UnormPack32},
@@ -1166,6 +1184,30 @@ Scene readScene(json& document, const std::filesystem::path& path, const std::ve
     if (scene.width == 0 || scene.height == 0) throw SceneError("/framebuffer", "width and height must be in 1..8192");
     if (fb.contains("clear_colour"))
       scene.clearColour = readColour(fb["clear_colour"], "/framebuffer/clear_colour", colourRange(scene.colourFormat));
+    if (fb.contains("more_colour_attachments")) {  // colour attachments 1..: format and clear colour each
+      const std::string mp = "/framebuffer/more_colour_attachments";
+      const json& more = fb["more_colour_attachments"];
+      if (!more.is_array() || more.size() > softraster::kMaxColourAttachments - 1) {
+        throw SceneError(mp, "expected an array of at most " + std::to_string(softraster::kMaxColourAttachments - 1) +
+                                 " attachments (lavapipe's maxColorAttachments is " +
+                                 std::to_string(softraster::kMaxColourAttachments) + ")");
+      }
+      for (std::size_t a = 0; a < more.size(); ++a) {
+        const std::string ap = mp + "/" + std::to_string(a);
+        checkKeys(more[a], ap, {"colour_format", "clear_colour"});
+        SceneColourAttachment& attachment = scene.moreColour.emplace_back();
+        attachment.format = readEnum(more[a], "colour_format", ap, attachment.format, colourFormats);
+        attachment.clearColour = scene.clearColour;
+        if (more[a].contains("clear_colour")) {
+          attachment.clearColour = readColour(more[a]["clear_colour"], placeOf(ap, "clear_colour"), colourRange(attachment.format));
+        } else if (colourRange(attachment.format) == ColourRange::Unit) {
+          const softraster::Vec4& c = scene.clearColour;
+          for (float v : {c.x, c.y, c.z, c.w}) {
+            if (!(v >= 0 && v <= 1)) throw SceneError(ap, "needs its own clear_colour in [0, 1] (the framebuffer's is not)");
+          }
+        }
+      }
+    }
     scene.clearDepth = readFloat(fb, "clear_depth", "/framebuffer", scene.clearDepth);
     if (!(scene.clearDepth >= 0 && scene.clearDepth <= 1)) throw SceneError("/framebuffer/clear_depth", "must be in [0, 1]");
     scene.clearStencil = static_cast<std::uint8_t>(readCount(fb, "clear_stencil", "/framebuffer", 0, 255));
@@ -1210,6 +1252,16 @@ Scene readScene(json& document, const std::filesystem::path& path, const std::ve
     scene.draws.push_back(
         readDraw(draws[i], place, path.parent_path(), scene.time, textures, passNames, colourRange(scene.colourFormat)));
     const Draw& draw = scene.draws.back();
+    const std::uint32_t attachments = 1 + static_cast<std::uint32_t>(scene.moreColour.size());
+    for (std::uint32_t a = draw.shading->colourOutputs; a < attachments; ++a) {
+      if (softraster::attachmentBlend(draw.state, a).colorWriteMask != 0) {
+        throw SceneError(placeOf(place, "shading"),
+                         "'" + std::string(draw.shading->name) + "' writes " + std::to_string(draw.shading->colourOutputs) +
+                             " colour output(s) but the framebuffer has " + std::to_string(attachments) +
+                             " colour attachments, and Vulkan leaves an attachment without an output undefined: "
+                             "give more_blend/" + std::to_string(a - 1) + " \"write_mask\": \"\" or use a model with more outputs");
+      }
+    }
     if (draw.state.depth.stencilTestEnable && !softraster::hasStencil(scene.depthFormat)) {
       throw SceneError(placeOf(place, "stencil"),
                        "needs a framebuffer depth_format with stencil (d24_unorm_s8_uint or d32_sfloat_s8_uint)");

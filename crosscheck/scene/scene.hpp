@@ -87,6 +87,13 @@ struct CameraSettings {
   LookAtCamera lookAt;    // for Type::LookAt
 };
 
+// A colour attachment after the first ("more_colour_attachments"): the fragment output location
+// it takes is its place + 1; each draw's "more_blend" blends it.
+struct SceneColourAttachment {
+  softraster::ColourFormat format = softraster::ColourFormat::R8G8B8A8Unorm;
+  softraster::Vec4 clearColour{0, 0, 0, 1};
+};
+
 struct Scene {
   std::filesystem::path path;
   std::string description;
@@ -95,6 +102,7 @@ struct Scene {
   float clearDepth = 1.0f;
   std::uint8_t clearStencil = 0;  // with a depth/stencil format
   softraster::ColourFormat colourFormat = softraster::ColourFormat::R8G8B8A8Unorm;
+  std::vector<SceneColourAttachment> moreColour;  // colour attachments 1..
   softraster::DepthFormat depthFormat = softraster::DepthFormat::D32Sfloat;
   std::uint32_t samples = 1;  // 1 or 4 (MSAA: compared after the resolve; depth and stencil via sample 0)
   CameraMatrices camera;      // view and projection, double precision

@@ -48,6 +48,17 @@ inline crosscheck::Frame renderAgreeing(const std::string& name, const std::vect
     EXPECT_EQ(c.stencilMismatches, 0u) << name;
     EXPECT_TRUE(soft->colourWords == reference->colourWords && soft->sampleColourWords == reference->sampleColourWords)
         << name << ": the stored colour words differ";
+    EXPECT_EQ(c.moreColour.size(), scene->moreColour.size()) << name;
+    for (std::size_t k = 0; k < c.moreColour.size(); ++k) {  // colour attachments 1..: every sample and the resolve
+      for (int ch = 0; ch < 4; ++ch) {
+        EXPECT_EQ(c.moreColour[k].colourMaxDelta[ch], 0) << name << " attachment " << k + 1 << " channel " << ch;
+      }
+      const crosscheck::ColourImage &ours = soft->moreColour[k], &theirs = reference->moreColour[k];
+      EXPECT_TRUE(ours.rgba == theirs.rgba && ours.colourWords == theirs.colourWords &&
+                  ours.sampleRgba == theirs.sampleRgba && ours.sampleColourWords == theirs.sampleColourWords)
+          << name << ": colour attachment " << k + 1 << "'s stored texels differ";
+    }
+    EXPECT_TRUE(c.passed()) << name << ": " << (c.failures.empty() ? "" : c.failures.front());
     if (first.rgba.empty()) first = std::move(*soft);
   }
   return first;

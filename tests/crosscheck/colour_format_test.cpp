@@ -282,3 +282,105 @@ TEST(ColourFormat, UnknownFormatIsOneLineNamingTheFile) {
                    "/framebuffer/colour_format: 'r16g16b16a16_unorm' is not one of r8g8b8a8_unorm, b8g8r8a8_unorm, "
                    "r8g8b8a8_srgb, b8g8r8a8_srgb, a2b10g10r10_unorm, r16g16b16a16_sfloat, r32g32b32a32_sfloat");
 }
+
+// Several colour attachments (scenes colour_attachments and colour_attachments_msaa): every
+// attachment agrees with lavapipe on every stored bit of every sample and of the resolve
+// (renderAgreeing compares each), and each holds its own output, format and blending.
+TEST(ColourAttachments, FourFormatsAgreeOnEveryStoredBit) {
+  const crosscheck::Frame frame = renderAgreeing("colour_attachments", {});
+  ASSERT_EQ(frame.moreColour.size(), 3u);
+  const std::size_t pixels = std::size_t{160} * 120;
+  EXPECT_EQ(frame.moreColour[0].colourFormat, softraster::ColourFormat::R16G16B16A16Sfloat);
+  EXPECT_EQ(frame.moreColour[0].colourWords.size(), pixels * 2);
+  EXPECT_EQ(frame.moreColour[1].colourWords.size(), pixels);
+  EXPECT_TRUE(frame.moreColour[2].colourWords.empty()) << "sRGB is 8-bit: its bytes are exact";
+  // The float attachment keeps what UNORM would clamp: additive blending takes it past 1.
+  bool beyondOne = false;
+  for (std::size_t i = 0; i < pixels * 4; ++i) {
+    const std::uint32_t word = frame.moreColour[0].colourWords[i / 2];
+    const std::uint16_t half = static_cast<std::uint16_t>(i % 2 ? word >> 16 : word & 0xffffu);
+    beyondOne = beyondOne || (half < 0x8000u && half > 0x3c00u);  // positive and above 1.0
+  }
+  EXPECT_TRUE(beyondOne);
+  // Each attachment holds its own output: no two of the four views are the same image.
+  const std::vector<const std::vector<std::uint8_t>*> views = {&frame.rgba, &frame.moreColour[0].rgba,
+                                                               &frame.moreColour[1].rgba, &frame.moreColour[2].rgba};
+  for (std::size_t a = 0; a < views.size(); ++a) {
+    for (std::size_t b = a + 1; b < views.size(); ++b) EXPECT_NE(*views[a], *views[b]) << a << " and " << b;
+  }
+}
+
+TEST(ColourAttachments, FourFormatsAgreeWithMsaa) {
+  const crosscheck::Frame frame = renderAgreeing("colour_attachments", {"framebuffer.samples=4"});
+  ASSERT_EQ(frame.moreColour.size(), 3u);
+  EXPECT_EQ(frame.moreColour[1].sampleColourWords.size(), std::size_t{160} * 120 * 4);
+}
+
+TEST(ColourAttachments, MsaaAgreesOnEverySampleOfEveryAttachment) {
+  const crosscheck::Frame frame = renderAgreeing("colour_attachments_msaa", {});
+  ASSERT_EQ(frame.moreColour.size(), 2u);
+  ASSERT_EQ(frame.moreColour[0].sampleColourWords.size(), std::size_t{128} * 96 * 4 * 4);
+  // Edges split pixels: some pixel's samples differ in the float attachment.
+  bool split = false;
+  const std::vector<std::uint32_t>& words = frame.moreColour[0].sampleColourWords;
+  for (std::size_t p = 0; p < std::size_t{128} * 96 && !split; ++p) {
+    for (std::size_t s = 1; s < 4; ++s) {
+      split = split || !std::equal(words.begin() + static_cast<std::ptrdiff_t>((p * 4) * 4),
+                                   words.begin() + static_cast<std::ptrdiff_t>((p * 4 + 1) * 4),
+                                   words.begin() + static_cast<std::ptrdiff_t>((p * 4 + s) * 4));
+    }
+  }
+  EXPECT_TRUE(split);
+}
+
+TEST(ColourAttachments, ADifferenceInALaterAttachmentFailsTheComparison) {
+  auto scene = crosscheck::loadScene(agreement::kScenes / "colour_attachments.json", {});
+  ASSERT_TRUE(scene) << scene.error();
+  auto frame = crosscheck::renderSoftraster(*scene, {});
+  ASSERT_TRUE(frame) << frame.error();
+  crosscheck::Frame changed = *frame;
+  changed.moreColour[1].colourWords[500] ^= 2u;  // two 10-bit steps of red (over the threshold, 1) in one pixel of attachment 2
+  const crosscheck::Comparison c = crosscheck::compareFrames(changed, *frame, *scene);
+  ASSERT_EQ(c.moreColour.size(), 3u);
+  EXPECT_EQ(c.moreColour[1].colourMaxDelta[0], 2);
+  EXPECT_EQ(c.moreColour[1].colourUnit, "10-bit steps (alpha 2-bit)");
+  EXPECT_EQ(c.moreColour[1].colourPixelsOver, 1u);
+  EXPECT_EQ(c.moreColour[0].colourPixelsOver, 0u);
+  ASSERT_FALSE(c.passed());
+  EXPECT_EQ(c.failures.front(), "colour_pixels_over (attachment 2) 1 > 0");
+  crosscheck::RunResults run;
+  crosscheck::SceneResult& r = run.scenes.emplace_back();
+  r.entry.path = "colour_attachments.json";
+  r.comparison = c;
+  r.tolerance = scene->tolerance;
+  EXPECT_NE(crosscheck::compareText(run).find("attachment 2 max"), std::string::npos) << crosscheck::compareText(run);
+}
+
+TEST(ColourAttachments, CourseMethodsFillEveryAttachment) {
+  auto scene = crosscheck::loadScene(agreement::kScenes / "colour_attachments.json", {});
+  ASSERT_TRUE(scene) << scene.error();
+  softraster::ContextOptions exact, scanline;
+  scanline.method = softraster::Method::Scanline;
+  auto reference = crosscheck::renderSoftraster(*scene, exact);
+  auto course = crosscheck::renderSoftraster(*scene, scanline);
+  ASSERT_TRUE(reference && course);
+  const crosscheck::Comparison c = crosscheck::compareFrames(*course, *reference, *scene);
+  ASSERT_EQ(c.moreColour.size(), 3u);
+  // The course's edges differ from the exact method's by a few pixels, not by an attachment left empty.
+  EXPECT_LT(c.coverageMismatches, 400u);
+  for (std::size_t k = 0; k < 3; ++k) EXPECT_LT(c.moreColour[k].colourPixelsOver, 2000u) << "attachment " << k + 1;
+}
+
+TEST(ColourAttachments, SceneErrorsNameThePlace) {
+  expectSceneError({"framebuffer.more_colour_attachments=[{}, {}, {}, {}, {}, {}, {}, {}]"}, "colour_attachments.json",
+                   "/framebuffer/more_colour_attachments: expected an array of at most 7 attachments");
+  expectSceneError({"framebuffer.more_colour_attachments.0.colour_format=r8_unorm"}, "colour_attachments.json",
+                   "/framebuffer/more_colour_attachments/0/colour_format: 'r8_unorm' is not one of");
+  expectSceneError({"draws.1.more_blend.0.constants=[1, 1, 1, 1]"}, "colour_attachments.json",
+                   "/draws/1/more_blend/0/constants: is the pipeline's, for every colour attachment");
+  expectSceneError({"draws.4.more_blend.1.write_mask=\"r\""}, "colour_attachments.json",
+                   "/draws/4/shading: 'vertex_color' writes 1 colour output(s) but the framebuffer has 4 colour "
+                   "attachments");
+  expectSceneError({"framebuffer.more_colour_attachments.1.clear_colour=[2, 0, 0, 1]"}, "colour_attachments.json",
+                   "/framebuffer/more_colour_attachments/1/clear_colour/0: must be in [0, 1]");
+}

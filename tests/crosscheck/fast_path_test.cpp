@@ -28,13 +28,22 @@ std::vector<std::string> sceneNames() { return conformanceSceneNames(); }
 // The first sample whose colour, depth or stencil differs, as a readable failure; empty when identical.
 std::string firstDifference(const softraster::Framebuffer& fast, const softraster::Framebuffer& scalar) {
   const std::size_t samples = scalar.depthStorage().size();
-  if (fast.depthStorage().size() != samples || fast.colour().size() != scalar.colour().size()) return "sizes differ";
+  if (fast.depthStorage().size() != samples || fast.colourAttachments() != scalar.colourAttachments()) return "sizes differ";
+  for (std::uint32_t a = 0; a < scalar.colourAttachments(); ++a) {
+    if (fast.colourFormat(a) != scalar.colourFormat(a) || fast.colour(a).size() != scalar.colour(a).size()) {
+      return "colour attachment " + std::to_string(a) + "'s formats or sizes differ";
+    }
+  }
   if (fast.stencilStorage().size() != scalar.stencilStorage().size()) return "stencil sizes differ";
   const bool stencil = !scalar.stencilStorage().empty();
   const std::size_t perPixel = scalar.samples();
   for (std::size_t s = 0; s < samples; ++s) {
-    const bool colourDiffers =
-        !std::equal(fast.colour().begin() + 4 * s, fast.colour().begin() + 4 * s + 4, scalar.colour().begin() + 4 * s);
+    bool colourDiffers = false;  // in any attachment, every stored byte of the sample
+    for (std::uint32_t a = 0; a < scalar.colourAttachments(); ++a) {
+      const std::size_t bytes = softraster::colourBytes(scalar.colourFormat(a));
+      colourDiffers = colourDiffers || !std::equal(fast.colour(a).begin() + bytes * s, fast.colour(a).begin() + bytes * (s + 1),
+                                                   scalar.colour(a).begin() + bytes * s);
+    }
     const bool stencilDiffers = stencil && fast.stencilStorage()[s] != scalar.stencilStorage()[s];
     if (colourDiffers || stencilDiffers || fast.depthStorage()[s] != scalar.depthStorage()[s]) {
       const std::size_t pixel = s / perPixel;

@@ -303,6 +303,15 @@ std::string metricsTable(const SceneResult& r) {
     rows += metricRow("depth max |\xCE\x94|", depthText(c.depthMaxDelta), "threshold " + depthText(t.depthThreshold),
                       c.depthMaxDelta > t.depthThreshold);
     rows += metricRow("stencil mismatches", std::to_string(c.stencilMismatches), "0", c.stencilMismatches > 0);
+    for (std::size_t k = 0; k < c.moreColour.size(); ++k) {  // colour attachments 1.. (their images are not shown)
+      const AttachmentComparison& m = c.moreColour[k];
+      const std::string name = "attachment " + std::to_string(k + 1);
+      rows += metricRow(name + " colour pixels over threshold", std::to_string(m.colourPixelsOver),
+                        "\xE2\x89\xA4 " + std::to_string(t.maxColourPixelsOver), m.colourPixelsOver > t.maxColourPixelsOver);
+      rows += metricRow(name + " colour max |\xCE\x94| RGBA (" + m.colourUnit + ")", rgbaText(m.colourMaxDelta),
+                        "threshold " + std::to_string(t.colourThreshold),
+                        *std::max_element(m.colourMaxDelta.begin(), m.colourMaxDelta.end()) > t.colourThreshold);
+    }
     rows += metricRow("time", fixed("softraster %.2f ms", r.softMilliseconds) + fixed(", Vulkan %.2f ms", r.vulkanMilliseconds) +
                       fixed(", whole scene %.2f ms", r.milliseconds), "", false);
   } else if (r.loaded) {
