@@ -43,6 +43,16 @@ const std::vector<KnownDeviation>& knownDeviations() {
        "(depth and stencil tested and written at sample 0 only, the colour in all four samples, the sample mask not "
        "applied)",
        "lines_msaa"},
+      {"alpha_to_coverage_per_sample",
+       "Vulkan, Fragment Operations, \"Multisample Coverage\" (paraphrased): with alphaToCoverageEnable a coverage "
+       "mask made from the fragment's alpha (output location 0) is ANDed with that fragment's coverage; with sample "
+       "shading each invocation is a fragment of its own, covering its sample, so each sample is narrowed by its own "
+       "invocation's alpha",
+       "each invocation of the sample loop (generate_fs_loop) ANDs its alpha test into the stored coverage of all "
+       "four samples, then stores its own sample's coverage back from its execution mask, which never saw that "
+       "test; invocations run for uncovered samples too. So sample s keeps alpha_k > s/4 for every other "
+       "invocation k and never tests its own alpha",
+       "alpha_to_coverage_per_sample"},
   };
   return kDeviations;
 }

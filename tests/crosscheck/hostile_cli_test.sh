@@ -93,12 +93,11 @@ case $case_name in
     expect_status 0
     ;;
   renderer_errors_name_the_file)
-    # A state the loader accepts but softraster cannot draw yet (alpha to coverage with sample
-    # shading and the fragment built-ins): the renderer's error comes with the scene file in front.
-    run render scenes/builtins_discard_msaa.json --renderer soft -o "$artifacts/x.png" \
-      --set 'draws.1.multisample={"alpha_to_coverage": true, "min_sample_shading": 1}'
+    # A state the loader accepts but softraster cannot draw (the course's 1/z depth buffer with
+    # 4x MSAA): the renderer's error comes with the scene file in front.
+    run render scenes/msaa_triangles.json --renderer soft --softraster-depth inverse-z -o "$artifacts/x.png"
     expect_status 2
-    expect_error '^crosscheck: scenes/builtins_discard_msaa.json: .*alpha to coverage with sample shading'
+    expect_error '^crosscheck: scenes/msaa_triangles.json: .*the 1/z depth buffer takes one sample per pixel'
     ;;
   vocabulary)
     # -o/--output on every subcommand that writes (--out and bench's --json still work); render

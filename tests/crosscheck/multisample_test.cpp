@@ -12,7 +12,9 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <array>
+#include <cstddef>
 #include <cmath>
 #include <cstring>
 #include <cstdint>
@@ -110,6 +112,31 @@ TEST(Multisample, AlphaToCoverageKeepsSampleSWhereAlphaExceedsSQuarters) {
     }
   }
   EXPECT_GT(opaque, 40u);
+}
+
+// alpha_to_coverage_per_sample: alpha to coverage with per-sample invocations (sample shading and
+// builtins_discard, whose back-face alpha is 1 - gl_FragCoord.z at the sample). lavapipe keeps
+// sample s where every *other* invocation's alpha > s/4 (uncovered samples' invocations too) and
+// never tests its own: softraster agrees on every sample. In spec mode each sample is narrowed by
+// its own invocation's alpha instead (the known deviation alpha_to_coverage_per_sample): the
+// samples near the thresholds differ, the fast and the scalar paths alike.
+TEST(Multisample, AlphaToCoverageWithPerSampleInvocationsNarrowsByTheOtherSamples) {
+  const crosscheck::Frame driver = renderAgreeing("alpha_to_coverage_per_sample", {});
+  ASSERT_EQ(driver.samples, 4u);
+  std::size_t written = 0;
+  for (std::size_t i = 3; i < driver.sampleRgba.size(); i += 4) written += driver.sampleRgba[i] != 0;
+  EXPECT_GT(written, 2000u);
+  const std::vector<crosscheck::Frame> spec = agreement::renderInSpecMode("alpha_to_coverage_per_sample");
+  ASSERT_EQ(spec.size(), 2u);
+  EXPECT_EQ(spec[0].sampleRgba, spec[1].sampleRgba) << "the fast and the scalar path differ in spec mode";
+  std::size_t differing = 0;
+  for (std::size_t i = 0; i + 3 < driver.sampleRgba.size(); i += 4) {
+    differing += !std::equal(driver.sampleRgba.begin() + static_cast<std::ptrdiff_t>(i),
+                             driver.sampleRgba.begin() + static_cast<std::ptrdiff_t>(i + 4),
+                             spec[0].sampleRgba.begin() + static_cast<std::ptrdiff_t>(i));
+  }
+  EXPECT_GT(differing, 20u);
+  EXPECT_LT(differing, written / 4) << "only samples near the alpha thresholds differ";
 }
 
 // alpha_to_coverage_nan: lavapipe's alpha > t is an unordered compare, so where the left quad's

@@ -88,7 +88,10 @@ constexpr std::optional<Method> methodFromName(std::string_view name) {
 //           4x MSAA lavapipe evaluates a line's attributes half a pixel off, drops covered
 //           samples its binning does not walk, and draws Bresenham lines with multisampling
 //           off (depth and stencil at sample 0 only), where the spec evaluates at the centre,
-//           covers every sample inside the line and tests each sample.
+//           covers every sample inside the line and tests each sample; with alpha to coverage
+//           and per-sample invocations lavapipe narrows each sample by every other
+//           invocation's alpha (uncovered samples' too) and never by its own, where the spec
+//           narrows each invocation's sample by its own alpha.
 enum class Deviations : std::uint8_t { Driver, Spec };
 
 // A Deviations value's name on the command line and in results ("driver", "spec").

@@ -242,14 +242,6 @@ class Context {
                              "output for it or set its colorWriteMask to 0");
       }
     }
-    if constexpr (UsesFragmentBuiltins<Shader>) {
-      const detail::SampleCoverage coverage = detail::sampleCoverage(state.multisample, framebuffer.samples(), options_.deviations);
-      const bool perSample = coverage.perSample || (ShadesPerSample<Shader> && framebuffer.samples() == 4);
-      if (perSample && coverage.alphaToCoverage) {
-        return Status::error("alpha to coverage with sample shading and the fragment built-ins is not supported by "
-                             "softraster yet (lavapipe's per-sample invocations narrow one another's coverage)");
-      }
-    }
     // No sample kept: nothing to draw (lavapipe discards the rasterization). Its 4x MSAA Bresenham
     // lines are drawn with multisampling off, where only a mask of 0 discards them.
     const bool broadcastLines = framebuffer.samples() == 4 && options_.deviations == Deviations::Driver &&

@@ -29,7 +29,8 @@
 //     alpha to 1 before blending (fragment/coverage.hpp);
 //   - sample shading (4x MSAA) with a shader that reads the built-ins: shaded once per covered
 //     sample, gl_FragCoord.xy and .z at the sample, each sample tested and written on its own
-//     (shadeSampleBySample); without the built-ins every sample would get the same colour, so
+//     (shadeSampleBySample; with alpha to coverage once per sample, covered or not, each
+//     invocation's alpha narrowing the other samples, as lavapipe does); without the built-ins every sample would get the same colour, so
 //     such a shader is shaded once per pixel as before; a shader reading gl_SampleID or
 //     gl_SamplePosition (ShadesPerSample) is shaded sample by sample without the state too.
 //   - a shader with several colour outputs (ColourOutputs, shader.hpp) writes output i to colour
@@ -346,9 +347,21 @@ class FragmentStage {
     const std::size_t pixel = static_cast<std::size_t>(py) * target_.width + static_cast<std::size_t>(px);
     interpolateVaryings<Fused>(t, kInterpolation, cx, cy, varyings);  // the centre, for every sample
     const float oneOverW = evaluatePlane<Fused>(t.oneOverW, cx, cy);
+    // Every invocation first, then the tests: with alpha to coverage lavapipe's sample loop
+    // (generate_fs_loop) runs an invocation for every sample, covered or not, and each one's
+    // alpha narrows the coverage of every *other* sample (its own is stored back from its
+    // execution mask, which the alpha test never touches): sample s keeps alpha_k > s/4 for each
+    // k != s. Without alpha to coverage the uncovered samples' invocations change nothing. The
+    // spec (Deviations::Spec) narrows each invocation's own sample by its own alpha.
+    const bool alphaToCoverage = target_.coverage.alphaToCoverage;
+    const bool spec = target_.deviations == Deviations::Spec;
+    std::array<Colours, 4> colours{};
+    std::array<float, 4> depths{};
+    unsigned kept = 0;  // samples whose invocation was neither discarded nor dropped by gl_SampleMask
+    unsigned alphaKept = 0xfu;
     for (int s = 0; s < 4; ++s) {
       const unsigned bit = 1u << s;
-      if (!(mask & bit)) continue;
+      if (!(mask & bit) && !(alphaToCoverage && !spec)) continue;
       const float sx = fx + kSamplePositions4x[s][0], sy = fy + kSamplePositions4x[s][1];
       const float z = interpolateDepth<Fused>(t, sx, sy);
       FragmentBuiltins<float> builtins;
@@ -357,19 +370,27 @@ class FragmentStage {
       builtins.discard = false;
       builtins.sampleId = s;
       builtins.samplePosition = {kSamplePositions4x[s][0], kSamplePositions4x[s][1]};
-      builtins.sampleMaskIn = static_cast<std::int32_t>(bit);  // the invocation's own sample
-      Colours c = fragmentColours(shadeFragment<Shader>(uniforms_, varyings, builtins));
+      builtins.sampleMaskIn = static_cast<std::int32_t>(mask & bit);  // the invocation's own sample, if covered
+      colours[static_cast<std::size_t>(s)] = fragmentColours(shadeFragment<Shader>(uniforms_, varyings, builtins));
+      depths[static_cast<std::size_t>(s)] = kWritesDepth ? builtins.fragDepth : z;
+      if (alphaToCoverage) alphaKept &= alphaToCoverageSamples<4>(colours[static_cast<std::size_t>(s)][0].w) | (spec ? ~bit : bit);
       if (builtins.discard) continue;
       if (kWritesSampleMask && !(static_cast<std::uint32_t>(builtins.sampleMask) & bit)) continue;
+      kept |= bit;
+    }
+    mask &= kept & alphaKept;
+    for (int s = 0; s < 4; ++s) {
+      if (!(mask & (1u << s))) continue;
       const std::size_t sample = pixel * 4 + static_cast<std::size_t>(s);
       std::uint32_t stored = 0;
       bool passes = true;
       if (target_.depth.testEnable) {
-        stored = depthToStorage<Format>(clampDepth(kWritesDepth ? builtins.fragDepth : z, target_.depthRange));
+        stored = depthToStorage<Format>(clampDepth(depths[static_cast<std::size_t>(s)], target_.depthRange));
         passes = depthTestPasses<Format>(target_.depth.compareOp, stored, target_.depthStorage[sample]);
       }
       if (target_.stencil.enable && !stencilTestAndUpdate(t.frontFacing, sample, passes)) continue;
       if (!passes) continue;
+      Colours& c = colours[static_cast<std::size_t>(s)];
       if (target_.coverage.alphaToOne) setAlphaToOne(c);
       writeColours(sample, c);
       if (target_.depth.testEnable && target_.depth.writeEnable) target_.depthStorage[sample] = stored;
