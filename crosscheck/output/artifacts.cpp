@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstring>
+#include <string>
 #include <system_error>
 #include <vector>
 
@@ -25,12 +26,43 @@ std::pair<float, float> sharedDepthRange(const Frame& soft, const Frame& vulkan,
 }
 
 // Bit-identical colour and depth (depth compared as bits, so NaN equals NaN and -0 differs from 0).
-// With MSAA every sample too (colour, depth as stored, stencil).
+// With MSAA every sample too (colour, depth as stored, stencil); every colour attachment.
 bool identicalFrames(const Frame& a, const Frame& b) {
+  const auto sameColour = [](const ColourImage& x, const ColourImage& y) {
+    return x.colourFormat == y.colourFormat && x.rgba == y.rgba && x.colourWords == y.colourWords &&
+           x.sampleRgba == y.sampleRgba && x.sampleColourWords == y.sampleColourWords;
+  };
   return a.width == b.width && a.height == b.height && a.rgba == b.rgba && a.stencil == b.stencil && a.depth.size() == b.depth.size() &&
          std::memcmp(a.depth.data(), b.depth.data(), a.depth.size() * sizeof(float)) == 0 && a.samples == b.samples &&
          a.sampleRgba == b.sampleRgba && a.sampleDepthStorage == b.sampleDepthStorage && a.sampleStencil == b.sampleStencil &&
-         a.colourWords == b.colourWords && a.sampleColourWords == b.sampleColourWords;
+         a.colourWords == b.colourWords && a.sampleColourWords == b.sampleColourWords &&
+         std::equal(a.moreColour.begin(), a.moreColour.end(), b.moreColour.begin(), b.moreColour.end(), sameColour);
+}
+
+// Colour attachment k + 1 of a frame (Frame::moreColour[k]) in place of its first, with the
+// frame's depth and stencil: what that attachment's images are drawn from (its resolve, or its
+// one sample). Its coverage in a heatmap is judged against attachment 0's clear values, the same
+// for both frames, so only a difference in its colour shows.
+Frame attachmentFrame(const Frame& f, std::size_t k) {
+  Frame out;
+  out.width = f.width;
+  out.height = f.height;
+  out.depthFormat = f.depthFormat;
+  out.depth = f.depth;
+  out.depthStorage = f.depthStorage;
+  out.stencil = f.stencil;
+  out.colourFormat = f.moreColour[k].colourFormat;
+  out.rgba = f.moreColour[k].rgba;
+  out.colourWords = f.moreColour[k].colourWords;
+  return out;
+}
+
+// Both frames carry colour attachment k + 1 alike.
+bool hasAttachment(const Frame& soft, const Frame& vulkan, std::size_t k) {
+  return k < soft.moreColour.size() && k < vulkan.moreColour.size() &&
+         soft.moreColour[k].colourFormat == vulkan.moreColour[k].colourFormat &&
+         soft.moreColour[k].rgba.size() == soft.rgba.size() && vulkan.moreColour[k].rgba.size() == vulkan.rgba.size() &&
+         soft.moreColour[k].colourWords.size() == vulkan.moreColour[k].colourWords.size();
 }
 
 // Sample s of an MSAA frame as a one-sample frame (colour, depth as stored, stencil): what the
@@ -113,6 +145,15 @@ softraster::Status writeSceneImages(const std::filesystem::path& root, const std
                       write("vulkan.stencil", "vulkan.stencil.png", vulkan, stencilToGrey(vulkan)) &&
                       write("stencil.diff", "stencil.diff.png", soft, stencilDiffHeatmap(soft, vulkan)));
   }
+  // Each colour attachment after the first (its resolve): both colours and their difference.
+  for (std::size_t k = 0; status && hasAttachment(soft, vulkan, k); ++k) {
+    const Frame a = attachmentFrame(soft, k), b = attachmentFrame(vulkan, k);
+    const std::string n = std::to_string(k + 1);
+    static_cast<void>(write(("soft.attachment" + n).c_str(), ("soft.attachment" + n + ".png").c_str(), a, a.rgba) &&
+                      write(("vulkan.attachment" + n).c_str(), ("vulkan.attachment" + n + ".png").c_str(), b, b.rgba) &&
+                      write(("attachment" + n + ".diff").c_str(), ("attachment" + n + ".diff.png").c_str(), a,
+                            diffHeatmap(a, b, scene)));
+  }
   // With MSAA, each sample as stored before the resolve: both colours and their difference.
   for (std::uint32_t s = 0; status && hasSamples(soft, vulkan) && s < soft.samples; ++s) {
     const Frame a = sampleFrame(soft, s), b = sampleFrame(vulkan, s);
@@ -135,6 +176,13 @@ softraster::Status writeCompareImages(const std::filesystem::path& dir, const Sc
     written = writePng(dir / "soft.stencil.png", soft.width, soft.height, stencilToGrey(soft));
     if (written) written = writePng(dir / "vulkan.stencil.png", vulkan.width, vulkan.height, stencilToGrey(vulkan));
     if (written) written = writePng(dir / "stencil.diff.png", soft.width, soft.height, stencilDiffHeatmap(soft, vulkan));
+  }
+  for (std::size_t k = 0; written && hasAttachment(soft, vulkan, k); ++k) {
+    const Frame a = attachmentFrame(soft, k), b = attachmentFrame(vulkan, k);
+    const std::string n = std::to_string(k + 1);
+    written = writePng(dir / ("soft.attachment" + n + ".png"), a.width, a.height, a.rgba);
+    if (written) written = writePng(dir / ("vulkan.attachment" + n + ".png"), b.width, b.height, b.rgba);
+    if (written) written = writePng(dir / ("attachment" + n + ".diff.png"), a.width, a.height, diffHeatmap(a, b, scene));
   }
   return written;
 }

@@ -2,7 +2,9 @@
 // soft.png, vulkan.png, diff.png (diffHeatmap), soft.depth.png and vulkan.depth.png (both depth
 // buffers mapped to grey over one shared range, so equal depths look equal) and depth.diff.png
 // (depthDiffHeatmap); with a depth/stencil format also soft.stencil.png, vulkan.stencil.png (grey =
-// the stored value) and stencil.diff.png (stencilDiffHeatmap); with MSAA, for each sample s as
+// the stored value) and stencil.diff.png (stencilDiffHeatmap); with several colour attachments,
+// for each attachment N after the first, soft.attachmentN.png, vulkan.attachmentN.png and
+// attachmentN.diff.png (its resolved colour, and its diffHeatmap); with MSAA, for each sample s as
 // stored before the resolve, soft.sampleS.png, vulkan.sampleS.png and sampleS.diff.png (its
 // diffHeatmap, coverage of that sample included); the runner's scenes record what was written. Also the compare command's five images (eight with stencil) and the render command's
 // depth view.
@@ -28,7 +30,7 @@ namespace crosscheck {
 std::pair<float, float> sharedDepthRange(const Frame& soft, const Frame& vulkan, float clearDepth);
 
 // Which images a scene gets: all six, or (Compact, for the report) when both frames are
-// bit-identical in colour, depth and stencil (every sample with MSAA) only "preview": preview.png, the colour box-filtered down to
+// bit-identical in colour (every attachment), depth and stencil (every sample with MSAA) only "preview": preview.png, the colour box-filtered down to
 // at most kPreviewSize pixels on its longer side (nothing differs, so there is nothing to look at
 // closely, and a suite that passes makes a small report); all six otherwise.
 enum class SceneImageSet { All, Compact };
@@ -48,7 +50,8 @@ softraster::Status copySceneFiles(SceneResult* result, const std::filesystem::pa
 
 // The compare command's --out DIR: soft.png, vulkan.png, diff.png, and soft.depth.png and
 // vulkan.depth.png each over its own range (depthToGrey's default); no depth difference; with
-// stencil also soft.stencil.png, vulkan.stencil.png and stencil.diff.png.
+// stencil also soft.stencil.png, vulkan.stencil.png and stencil.diff.png; with several colour
+// attachments soft.attachmentN.png, vulkan.attachmentN.png and attachmentN.diff.png for each after the first.
 softraster::Status writeCompareImages(const std::filesystem::path& dir, const Scene& scene, const Frame& soft,
                                       const Frame& vulkan);
 

@@ -242,6 +242,43 @@ TEST(Report, MsaaScenesGetEverySampleAndAMenuToPickOne) {
   EXPECT_EQ(count(html, " data-samples=\""), 3u);
 }
 
+// A scene with several colour attachments that differs only in a later attachment still gets
+// every image (not the compact preview), and each attachment after the first its own three views.
+TEST(Report, LaterColourAttachmentsGetTheirOwnViews) {
+  const fs::path dir = kArtifacts / "report-attachments";
+  fs::remove_all(dir);
+  auto scene = loadScene(fs::path(SOURCE_DIR) / "scenes" / "colour_attachments.json");
+  ASSERT_TRUE(scene) << scene.error();
+  auto soft = renderSoftraster(*scene);
+  ASSERT_TRUE(soft) << soft.error();
+  SceneResult same;
+  same.entry.name = "same";
+  ASSERT_TRUE(writeSceneImages(dir, "same", &same, *scene, *soft, *soft, SceneImageSet::Compact));
+  ASSERT_EQ(same.images.size(), 1u);
+  EXPECT_EQ(same.images[0].kind, "preview");
+  Frame changed = *soft;
+  changed.moreColour[1].colourWords[700] ^= 0x3ffu;  // attachment 2's red in one pixel
+  SceneResult result;
+  result.entry.name = "colour_attachments";
+  result.width = soft->width;
+  result.height = soft->height;
+  ASSERT_TRUE(writeSceneImages(dir, "colour_attachments", &result, *scene, *soft, changed, SceneImageSet::Compact));
+  for (const std::string n : {"1", "2", "3"}) {
+    for (const std::string& kind : {"soft.attachment" + n, "vulkan.attachment" + n, "attachment" + n + ".diff"}) {
+      const auto image = std::find_if(result.images.begin(), result.images.end(),
+                                      [&](const SceneImage& i) { return i.kind == kind; });
+      ASSERT_NE(image, result.images.end()) << kind;
+      EXPECT_TRUE(fs::exists(dir / image->file)) << image->file;
+    }
+  }
+  RunResults run;
+  run.scenes = {result};
+  const std::string html = reportHtml(run, dir);
+  EXPECT_EQ(count(html, "<figcaption>colour attachment 2 difference (heatmap)</figcaption>"), 1u);
+  EXPECT_EQ(count(html, "<figcaption>Vulkan colour attachment 3</figcaption>"), 1u);
+  EXPECT_EQ(count(html, "src=\"colour_attachments/attachment2.diff.png\""), 1u);
+}
+
 TEST(Report, DepthViewsShareOneRange) {
   Frame a, b;
   a.depth = {1.0f, 0.4f, 0.6f};

@@ -522,6 +522,12 @@ std::string sceneSection(const RunResults& run, const SceneResult& r, std::size_
            figure(r, "vulkan.stencil", "Vulkan stencil") +
            figure(r, "stencil.diff", "stencil difference (magenta: differs; compared exactly)") + "</div>\n";
     }
+    for (int n = 1; imageOf(r, "soft.attachment" + std::to_string(n)); ++n) {  // colour attachments 1..
+      const std::string a = "attachment" + std::to_string(n);
+      s += "<div class=\"views\">\n" + figure(r, "soft." + a, "softraster colour attachment " + std::to_string(n)) +
+           figure(r, "vulkan." + a, "Vulkan colour attachment " + std::to_string(n)) +
+           figure(r, a + ".diff", "colour attachment " + std::to_string(n) + " difference (heatmap)") + "</div>\n";
+    }
     if (imageOf(r, "soft.sample0")) s += sampleViews(r);
     s += "<p class=\"run\">Depth views map " + e(fixed("%.9g", r.depthViewRange.first)) + " to black and " +
          e(fixed("%.9g", r.depthViewRange.second)) + " to white, the same for both (the range they drew); depths outside it, such as the "
