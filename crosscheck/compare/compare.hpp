@@ -4,7 +4,8 @@
 // the float formats' units in the last place; not their byte view), so the colour threshold is in
 // those steps too.
 // Coverage: a sample is covered in a frame when its colour (in any colour attachment), depth or
-// stencil differs from the clear values (as each format stores them); a coverage mismatch is a pixel whose samples are not covered alike in both frames.
+// stencil differs from the clear values (as each format stores them); a coverage mismatch is a
+// pixel whose samples are not covered alike in both frames.
 // Stencil (with a depth/stencil format) is compared exactly: a stencil mismatch is a pixel whose
 // stored stencil differs in any sample. With MSAA every sample is compared (colour, depth,
 // stencil, coverage) and the resolved colour too (metrics.hpp says which metric is which); the

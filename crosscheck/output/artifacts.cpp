@@ -182,7 +182,9 @@ softraster::Status writeCompareImages(const std::filesystem::path& dir, const Sc
     const std::string n = std::to_string(k + 1);
     written = writePng(dir / ("soft.attachment" + n + ".png"), a.width, a.height, a.rgba);
     if (written) written = writePng(dir / ("vulkan.attachment" + n + ".png"), b.width, b.height, b.rgba);
-    if (written) written = writePng(dir / ("attachment" + n + ".diff.png"), a.width, a.height, diffHeatmap(a, b, scene));
+    if (written) {
+      written = writePng(dir / ("attachment" + n + ".diff.png"), a.width, a.height, diffHeatmap(a, b, scene));
+    }
   }
   return written;
 }

@@ -30,7 +30,8 @@ namespace crosscheck {
 std::pair<float, float> sharedDepthRange(const Frame& soft, const Frame& vulkan, float clearDepth);
 
 // Which images a scene gets: all six, or (Compact, for the report) when both frames are
-// bit-identical in colour (every attachment), depth and stencil (every sample with MSAA) only "preview": preview.png, the colour box-filtered down to
+// bit-identical in colour (every attachment), depth and stencil (every sample with MSAA) only
+// "preview": preview.png, the colour box-filtered down to
 // at most kPreviewSize pixels on its longer side (nothing differs, so there is nothing to look at
 // closely, and a suite that passes makes a small report); all six otherwise.
 enum class SceneImageSet { All, Compact };

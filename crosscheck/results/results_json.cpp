@@ -182,7 +182,8 @@ Comparison readComparison(const json& j, const std::string& place) {
         m.colourMaxDelta[i] = readInteger<int>(max[i], ap + "/colour_max_delta/" + std::to_string(i));
       }
       m.colourUnit = readString(field(more[k], ap, "colour_unit"), ap + "/colour_unit");
-      m.colourPixelsOver = readInteger<std::uint64_t>(field(more[k], ap, "colour_pixels_over"), ap + "/colour_pixels_over");
+      m.colourPixelsOver =
+          readInteger<std::uint64_t>(field(more[k], ap, "colour_pixels_over"), ap + "/colour_pixels_over");
     }
   }
   const json& failures = field(j, place, "failures");

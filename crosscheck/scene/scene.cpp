@@ -520,7 +520,8 @@ void readDrawState(const json& d, const std::string& place, softraster::Pipeline
   rs.frontFace = readEnum(d, "front_face", place, rs.frontFace,
                           {{"counter_clockwise", FrontFace::CounterClockwise}, {"clockwise", FrontFace::Clockwise}});
   if (d.contains("blend")) state.blend = readBlend(d["blend"], placeOf(place, "blend"));
-  if (d.contains("more_blend")) {  // colour attachments 1..: each one's own blend, the constants and logic op are "blend"'s
+  // Colour attachments 1..: each one's own blend; the constants and logic op are "blend"'s.
+  if (d.contains("more_blend")) {
     const std::string mp = placeOf(place, "more_blend");
     const json& more = d["more_blend"];
     if (!more.is_array() || more.size() > state.moreBlend.size()) {
@@ -1199,11 +1200,14 @@ Scene readScene(json& document, const std::filesystem::path& path, const std::ve
         attachment.format = readEnum(more[a], "colour_format", ap, attachment.format, colourFormats);
         attachment.clearColour = scene.clearColour;
         if (more[a].contains("clear_colour")) {
-          attachment.clearColour = readColour(more[a]["clear_colour"], placeOf(ap, "clear_colour"), colourRange(attachment.format));
+          attachment.clearColour =
+              readColour(more[a]["clear_colour"], placeOf(ap, "clear_colour"), colourRange(attachment.format));
         } else if (colourRange(attachment.format) == ColourRange::Unit) {
           const softraster::Vec4& c = scene.clearColour;
           for (float v : {c.x, c.y, c.z, c.w}) {
-            if (!(v >= 0 && v <= 1)) throw SceneError(ap, "needs its own clear_colour in [0, 1] (the framebuffer's is not)");
+            if (!(v >= 0 && v <= 1)) {
+              throw SceneError(ap, "needs its own clear_colour in [0, 1] (the framebuffer's is not)");
+            }
           }
         }
       }
@@ -1256,10 +1260,12 @@ Scene readScene(json& document, const std::filesystem::path& path, const std::ve
     for (std::uint32_t a = draw.shading->colourOutputs; a < attachments; ++a) {
       if (softraster::attachmentBlend(draw.state, a).colorWriteMask != 0) {
         throw SceneError(placeOf(place, "shading"),
-                         "'" + std::string(draw.shading->name) + "' writes " + std::to_string(draw.shading->colourOutputs) +
-                             " colour output(s) but the framebuffer has " + std::to_string(attachments) +
+                         "'" + std::string(draw.shading->name) + "' writes " +
+                             std::to_string(draw.shading->colourOutputs) + " colour output(s) but the framebuffer has " +
+                             std::to_string(attachments) +
                              " colour attachments, and Vulkan leaves an attachment without an output undefined: "
-                             "give more_blend/" + std::to_string(a - 1) + " \"write_mask\": \"\" or use a model with more outputs");
+                             "give more_blend/" + std::to_string(a - 1) +
+                             " \"write_mask\": \"\" or use a model with more outputs");
       }
     }
     if (draw.state.depth.stencilTestEnable && !softraster::hasStencil(scene.depthFormat)) {

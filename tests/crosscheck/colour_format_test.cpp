@@ -383,4 +383,12 @@ TEST(ColourAttachments, SceneErrorsNameThePlace) {
                    "attachments");
   expectSceneError({"framebuffer.more_colour_attachments.1.clear_colour=[2, 0, 0, 1]"}, "colour_attachments.json",
                    "/framebuffer/more_colour_attachments/1/clear_colour/0: must be in [0, 1]");
+  // A float attachment 0's clear beyond [0, 1] is no default for a UNORM attachment.
+  expectSceneError({"framebuffer.colour_format=r16g16b16a16_sfloat", "framebuffer.clear_colour=[2, 0, 0, 1]",
+                    "framebuffer.more_colour_attachments=[{\"colour_format\": \"r8g8b8a8_unorm\"}]"},
+                   "colour_attachments.json",
+                   "/framebuffer/more_colour_attachments/0: needs its own clear_colour in [0, 1] "
+                   "(the framebuffer's is not)");
+  expectSceneError({"draws.1.more_blend=[{}, {}, {}, {}, {}, {}, {}, {}]"}, "colour_attachments.json",
+                   "/draws/1/more_blend: expected an array of at most 7 blend objects");
 }

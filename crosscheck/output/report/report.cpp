@@ -307,7 +307,8 @@ std::string metricsTable(const SceneResult& r) {
       const AttachmentComparison& m = c.moreColour[k];
       const std::string name = "attachment " + std::to_string(k + 1);
       rows += metricRow(name + " colour pixels over threshold", std::to_string(m.colourPixelsOver),
-                        "\xE2\x89\xA4 " + std::to_string(t.maxColourPixelsOver), m.colourPixelsOver > t.maxColourPixelsOver);
+                        "\xE2\x89\xA4 " + std::to_string(t.maxColourPixelsOver),
+                        m.colourPixelsOver > t.maxColourPixelsOver);
       rows += metricRow(name + " colour max |\xCE\x94| RGBA (" + m.colourUnit + ")", rgbaText(m.colourMaxDelta),
                         "threshold " + std::to_string(t.colourThreshold),
                         *std::max_element(m.colourMaxDelta.begin(), m.colourMaxDelta.end()) > t.colourThreshold);

@@ -168,16 +168,15 @@ class Context {
     }
     for (std::uint32_t a = 0; a < framebuffer.colourAttachments(); ++a) {
       const BlendState b = attachmentBlend(state, a);
-      const std::string which = a == 0 ? std::string() : " (colour attachment " + std::to_string(a) + ")";
+      // Which attachment, named only in an error (so a valid draw allocates nothing here).
+      const auto error = [a](const char* what, const char* detail = "") {
+        return Status::error(std::string(what) + (a == 0 ? "" : " (colour attachment " + std::to_string(a) + ")") + detail);
+      };
       for (BlendFactor f : {b.srcColorBlendFactor, b.dstColorBlendFactor, b.srcAlphaBlendFactor, b.dstAlphaBlendFactor}) {
-        if (f > BlendFactor::SrcAlphaSaturate) {
-          return Status::error("unknown blend factor" + which + " (dual-source factors are not supported)");
-        }
+        if (f > BlendFactor::SrcAlphaSaturate) return error("unknown blend factor", " (dual-source factors are not supported)");
       }
-      if (b.colorBlendOp > BlendOp::Max || b.alphaBlendOp > BlendOp::Max) return Status::error("unknown blend op" + which);
-      if (b.colorWriteMask > kColourRGBA) {
-        return Status::error("colour write mask" + which + " has bits other than R, G, B and A");
-      }
+      if (b.colorBlendOp > BlendOp::Max || b.alphaBlendOp > BlendOp::Max) return error("unknown blend op");
+      if (b.colorWriteMask > kColourRGBA) return error("colour write mask", " has bits other than R, G, B and A");
     }
     if (state.blend.logicOp > LogicOp::Set) return Status::error("unknown logic op");
     const MultisampleState& ms = state.multisample;

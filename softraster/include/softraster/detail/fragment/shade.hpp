@@ -30,9 +30,10 @@
 //   - sample shading (4x MSAA) with a shader that reads the built-ins: shaded once per covered
 //     sample, gl_FragCoord.xy and .z at the sample, each sample tested and written on its own
 //     (shadeSampleBySample; with alpha to coverage once per sample, covered or not, each
-//     invocation's alpha narrowing the other samples, as lavapipe does); without the built-ins every sample would get the same colour, so
-//     such a shader is shaded once per pixel as before; a shader reading gl_SampleID or
-//     gl_SamplePosition (ShadesPerSample) is shaded sample by sample without the state too.
+//     invocation's alpha narrowing the other samples, as lavapipe does); without the built-ins
+//     every sample would get the same colour, so such a shader is shaded once per pixel as
+//     before; a shader reading gl_SampleID or gl_SamplePosition (ShadesPerSample) is shaded
+//     sample by sample without the state too.
 //   - a shader with several colour outputs (ColourOutputs, shader.hpp) writes output i to colour
 //     attachment i, each blended with its own state and format (attachments 1.. are the
 //     FragmentTarget's moreColour); alpha to coverage reads output 0's alpha, alpha to one sets
@@ -373,7 +374,9 @@ class FragmentStage {
       builtins.sampleMaskIn = static_cast<std::int32_t>(mask & bit);  // the invocation's own sample, if covered
       colours[static_cast<std::size_t>(s)] = fragmentColours(shadeFragment<Shader>(uniforms_, varyings, builtins));
       depths[static_cast<std::size_t>(s)] = kWritesDepth ? builtins.fragDepth : z;
-      if (alphaToCoverage) alphaKept &= alphaToCoverageSamples<4>(colours[static_cast<std::size_t>(s)][0].w) | (spec ? ~bit : bit);
+      if (alphaToCoverage) {  // lavapipe: every other sample; the spec: its own
+        alphaKept &= alphaToCoverageSamples<4>(colours[static_cast<std::size_t>(s)][0].w) | (spec ? ~bit : bit);
+      }
       if (builtins.discard) continue;
       if (kWritesSampleMask && !(static_cast<std::uint32_t>(builtins.sampleMask) & bit)) continue;
       kept |= bit;
