@@ -1,5 +1,11 @@
-// ThreadPool (detail/fast/pool.hpp): workers sleep on a condition variable between batches.
+// ThreadPool (detail/fast/pool.hpp): workers spin briefly, then sleep on a condition variable
+// between batches.
 #include <softraster/detail/fast/pool.hpp>
+
+#include <chrono>
+#if defined(__x86_64__)
+#include <immintrin.h>
+#endif
 
 namespace softraster::detail {
 
@@ -20,11 +26,27 @@ void ThreadPool::drain(const std::function<void(std::size_t)>& task, std::size_t
   for (std::size_t i = next_.fetch_add(1); i < count; i = next_.fetch_add(1)) task(i);
 }
 
+template <class Done>
+bool ThreadPool::spinUntil(Done&& done) {
+  using Clock = std::chrono::steady_clock;
+  const Clock::time_point end = Clock::now() + std::chrono::nanoseconds(kSpinNanoseconds);
+  for (;;) {
+    for (int i = 0; i < 64; ++i) {  // the clock is read once per 64 polls
+      if (done()) return true;
+#if defined(__x86_64__)
+      _mm_pause();
+#endif
+    }
+    if (Clock::now() >= end) return done();
+  }
+}
+
 void ThreadPool::work() {
   std::size_t seen = 0;
   for (;;) {
     const std::function<void(std::size_t)>* task;
     std::size_t count;
+    spinUntil([&] { return stopping_.load(std::memory_order_relaxed) || generation_.load(std::memory_order_relaxed) != seen; });
     {
       std::unique_lock lock(mutex_);
       wake_.wait(lock, [&] { return stopping_ || generation_ != seen; });
@@ -58,6 +80,7 @@ void ThreadPool::run(std::size_t count, const std::function<void(std::size_t)>& 
   }
   wake_.notify_all();
   drain(task, count);
+  spinUntil([&] { return busy_.load(std::memory_order_relaxed) == 0; });
   std::unique_lock lock(mutex_);
   // Every index has been claimed once the caller's drain() returns; wait for the workers still
   // running theirs. A worker that wakes after this finds the task cleared and goes back to sleep.

@@ -3,6 +3,11 @@
 // returns when all are done. Tasks claim indices in order from one counter, so which thread runs
 // which index varies from run to run: a task must depend on nothing but its index (the band
 // queue gives each index its own pixels, so the output never depends on the thread count).
+// Between batches a worker spins for a short while (kSpinNanoseconds) before it sleeps, and so
+// does the caller waiting for the last workers: a draw runs its batches back to back (a round's
+// front end, then its bands, then the next round's front end), and waking a sleeping thread cost
+// more than a round of a million-triangle draw gained from it (a futex wake and a reschedule,
+// tens of microseconds on a virtual machine); a wait longer than the spin sleeps as before.
 // Deliberately no futures, no priorities, no work stealing: one batch of tasks at a time.
 #pragma once
 
@@ -34,6 +39,12 @@ class ThreadPool {
   void work();
   void drain(const std::function<void(std::size_t)>& task, std::size_t count);
 
+  // Spins until done() is true or the spin's time is up; returns done().
+  template <class Done>
+  static bool spinUntil(Done&& done);
+
+  static constexpr long kSpinNanoseconds = 50'000;
+
   std::vector<std::thread> workers_;
   std::mutex runMutex_;
   std::mutex mutex_;
@@ -41,9 +52,10 @@ class ThreadPool {
   const std::function<void(std::size_t)>* task_ = nullptr;
   std::size_t count_ = 0;
   std::atomic<std::size_t> next_{0};
-  unsigned busy_ = 0;             // workers inside the current batch
-  std::size_t generation_ = 0;    // bumped per batch, so a worker joins each batch once
-  bool stopping_ = false;
+  // Written under mutex_; atomic so that a spinning thread may read them without it.
+  std::atomic<unsigned> busy_{0};             // workers inside the current batch
+  std::atomic<std::size_t> generation_{0};    // bumped per batch, so a worker joins each batch once
+  std::atomic<bool> stopping_{false};
 };
 
 }  // namespace softraster::detail
