@@ -5,6 +5,9 @@
 //   modes (geometry/unfilled) -> snapping, the fixed-point cull
 //   and setup (exact/triangle_setup, exact/line_point_setup) -> coverage and fragments
 //   (fragment/shade, over exact/rasterizer and exact/interpolation).
+// A draw of filled triangles snaps each vertex once, beside its shading; the triangles that need
+// no clipping are culled from those snapped positions (the same bits as snapping per triangle),
+// so a culled triangle reads 24 bytes of its vertices and nothing else.
 // Primitives reach the fragment stage in submission order; with more than one thread the band
 // queue (fast/bands.hpp) draws them band by band in parallel, each band in that order.
 // With more than one thread the front end runs in parallel too, in rounds of kRoundPrimitives
@@ -85,6 +88,7 @@ class ExactDraw {
                    multisample_ ? msaaRegionEdges(region_, state.scissor, options.deviations).rasterRegion : region_,
                    inverseZ, options.deviations),
         shaded_(scratch.vector<Vertex>(ScratchSlot::ShadedVertices)),
+        snapped_(scratch.vector<FixedPoint>(ScratchSlot::SnappedVertices)),
         triangles_(scratch.vector<TriangleIndices>(ScratchSlot::Triangles)),
         lines_(scratch.vector<LineIndices>(ScratchSlot::Lines)),
         course_(makeCourse(state, uniforms, framebuffer, inverseZ, options, scratch)) {}
@@ -166,6 +170,7 @@ class ExactDraw {
 
   void shadeVertices(std::span<const typename Shader::Vertex> vertices) {
     shaded_.resize(vertices.size());
+    if (snapsVertices_) snapped_.resize(vertices.size());
     ThreadPool* pool = fragments_.pool();
     if (pool == nullptr || vertices.size() < 2 * kVertexRange) {
       shadeVertexRange(vertices, 0, vertices.size());
@@ -181,8 +186,15 @@ class ExactDraw {
   }
 
   void shadeVertexRange(std::span<const typename Shader::Vertex> vertices, std::size_t begin, std::size_t end) {
-    for (std::size_t i = begin; i < end; ++i) {
-      shaded_[i] = shadeVertex<Shader, Fused>(uniforms_, vertices[i], transform_, !rs_.depthClampEnable);
+    const bool clipDepth = !rs_.depthClampEnable;
+    if (!snapsVertices_) {
+      for (std::size_t i = begin; i < end; ++i) shaded_[i] = shadeVertex<Shader, Fused>(uniforms_, vertices[i], transform_, clipDepth);
+      return;
+    }
+    for (std::size_t i = begin; i < end; ++i) {  // snapped while the vertex is at hand
+      const Vertex v = shadeVertex<Shader, Fused>(uniforms_, vertices[i], transform_, clipDepth);
+      snapped_[i] = snapVertex(v.window, pixelOffset_);
+      shaded_[i] = v;
     }
   }
 
@@ -277,8 +289,10 @@ class ExactDraw {
         const Vertex& v2 = shaded_[t[2]];
         if (throughDrawPipeline) {
           drawThroughPipeline(worker, v0, v1, v2);
-        } else {
+        } else if constexpr (kCourse) {
           drawTriangleHere(worker, v0, v1, v2);
+        } else {  // snapped with the vertices: culled before any other vertex data is read
+          drawFixedTriangle(worker, fixedTriangle(snapped_[t[0]], snapped_[t[1]], snapped_[t[2]]), v0, v1, v2);
         }
       }
     }
@@ -371,8 +385,12 @@ class ExactDraw {
   }
 
   void drawExactTriangle(Worker& worker, const Vertex& a, const Vertex& b, const Vertex& c) {
-    const float pixelOffset = multisample_ ? 0.0f : kPixelCentreOffset;
-    FixedTriangle fixed = snapTriangle(a.window, b.window, c.window, pixelOffset);
+    drawFixedTriangle(worker, snapTriangle(a.window, b.window, c.window, pixelOffset_), a, b, c);
+  }
+
+  // The same, its vertices snapped already (`fixed`: a, b and c's window x and y).
+  void drawFixedTriangle(Worker& worker, FixedTriangle fixed, const Vertex& a, const Vertex& b, const Vertex& c) {
+    const float pixelOffset = pixelOffset_;
     const int area = fixedAreaSign(fixed);
     if (area == 0 || (area > 0 ? !winding_.drawCounterClockwise : !winding_.drawClockwise)) return;
     if (!multisample_ && missesEveryPixelCentre(fixed)) return;  // no pixel to draw: skip the setup
@@ -457,6 +475,8 @@ class ExactDraw {
   ViewportTransform transform_;
   PixelRect region_;
   bool multisample_;
+  // Where snapping and plane origins put the pixel centre: 0.5 single-sample, 0 with 4x MSAA.
+  float pixelOffset_ = multisample_ ? 0.0f : kPixelCentreOffset;
   bool provokingLast_ = rs_.provokingVertex == ProvokingVertex::Last;
   // Deviations::Spec: an unfilled polygon's lines and points take its stencil face, and MSAA lines
   // are drawn as the spec has them.
@@ -469,6 +489,11 @@ class ExactDraw {
   WindingFilter winding_{true, true};
   // Scratch: the Context's, reused across draws.
   std::vector<Vertex>& shaded_;
+  // shaded_'s window x and y snapped, for a draw of filled triangles by the exact method (whose
+  // straight path culls a triangle from them): each vertex snapped once, not once per triangle.
+  std::vector<FixedPoint>& snapped_;
+  bool snapsVertices_ = !kCourse && state_.topology != Topology::PointList && !isLineTopology(state_.topology) &&
+                        rs_.polygonMode == PolygonMode::Fill;
   std::vector<TriangleIndices>& triangles_;
   std::vector<LineIndices>& lines_;
   [[no_unique_address]] Course course_;  // after viewport_ and region_, which it is made from

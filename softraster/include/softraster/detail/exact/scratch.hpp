@@ -17,8 +17,17 @@
 
 namespace softraster::detail {
 
-// CourseRows: the course's scanline method's per-row left/right arrays (course/scanline.hpp).
-enum class ScratchSlot : std::uint8_t { IndexSequence, ShadedVertices, Triangles, Lines, BandLists, CourseRows };
+// CourseRows: the course's scanline method's per-row left/right arrays (course/scanline.hpp);
+// SnappedVertices: each shaded vertex's window position in fixed point (exact/draw.hpp).
+enum class ScratchSlot : std::uint8_t {
+  IndexSequence,
+  ShadedVertices,
+  SnappedVertices,
+  Triangles,
+  Lines,
+  BandLists,
+  CourseRows
+};
 
 class DrawScratch {
  public:
