@@ -2,7 +2,8 @@
 // (fragment/shade.hpp), with single-sample triangles, lines and points (their quads: four edges)
 // walked and shaded in 4x2 blocks of SIMD lanes (fast/batch.hpp) and the shader's fragment
 // function run over FloatBatch:
-//   - the primitive's bounding box (clipped to the draw region) is walked block by block; where
+//   - a bounding box (clipped to the draw region) of one block is tested and shaded directly;
+//   - a larger one is walked block by block; where
 //     no edge value can wrap around 64 bits, each row of blocks is first cut exactly (integer
 //     division) into the blocks wholly outside an edge (skipped) and those wholly inside every
 //     edge (every lane covered, no per-lane test); other blocks take their coverage from the
@@ -251,6 +252,19 @@ class FastFragmentStage {
                                                                    const BlockPlanes& planes) const {
     const BlockEdges<E> lanes = blockEdges(edges);
     const DepthState depthState = target_.depth;  // a local, which no store to the framebuffer can change
+    if constexpr (!kQuads) {
+      // A box of one block (most triangles of a dense mesh): its lanes tested as walkBlocks tests
+      // a block it cannot decide at its corners, without setting up the walk.
+      if (box.x1 - box.x0 < kBatchWidth && box.y1 - box.y0 < kBatchHeight) {
+        std::int64_t value[E];
+        for (int i = 0; i < E; ++i) value[i] = edges[i].c + edges[i].dcdy * box.y0 - edges[i].dcdx * box.x0;
+        const unsigned columns = (1u << (box.x1 - box.x0 + 1)) - 1u;
+        const unsigned inBox = columns * (box.y1 > box.y0 ? 0x11u : 0x01u);
+        const unsigned covered = insideBits(lanes, value) & inBox;
+        if (covered != 0) shadeBlock(box.x0, box.y0, covered, inBox == 0xffu, planes, depthState);
+        return;
+      }
+    }
     std::int64_t lowest[E], highest[E];  // of a block's lane offsets, -dcdx * column + dcdy * row
     for (int i = 0; i < E; ++i) {
       const std::int64_t dx = edges[i].dcdx, dy = edges[i].dcdy;
