@@ -15,8 +15,8 @@
 // Helpers here follow lavapipe's shader arithmetic (see docs/lavapipe-rules.md): sseMin/sseMax
 // are SSE minps/maxps (the second operand when either is NaN). The lane-wise primitives the
 // shaders' built-ins are made of (sqrt, fma, floor, truncation to int32, the lanes' bits) are
-// written so that they need no instruction set of their own either: sqrt is SSE's sqrtps on each
-// half (baseline x86-64; two 128-bit square roots cost what one 256-bit one does), fma a loop of
+// written so that they need no instruction set of their own either: sqrt a loop of sqrtf that
+// GCC turns into one vsqrtps where AVX is on (or SSE's sqrtps on each half), fma a loop of
 // fmaf that GCC turns into one vfmadd where FMA is on, floor and truncation the vector
 // conversions; each gives exactly its float counterpart's bits. Integer work on the lanes (a
 // float's bits, an exponent) uses NativeMask, the int32 vector, through native().
@@ -91,10 +91,17 @@ class FloatBatch {
   Native v_;
 };
 
-// Lane-wise std::sqrt (IEEE, correctly rounded).
+// Lane-wise std::sqrt (IEEE, correctly rounded). Where square roots need not set errno
+// (-fno-math-errno, which softraster's CMake target passes on), a loop over the lanes that GCC
+// turns into one vsqrtps in the AVX2 entry point (and two sqrtps in baseline code); two 128-bit
+// halves and the shuffles between them otherwise.
 inline FloatBatch sqrt(FloatBatch a) {
   const FloatBatch::Native v = a.native();
-#if defined(__x86_64__)
+#if defined(__NO_MATH_ERRNO__)
+  FloatBatch::Native r;
+  for (int i = 0; i < kBatchLanes; ++i) r[i] = __builtin_sqrtf(v[i]);
+  return FloatBatch(r);
+#elif defined(__x86_64__)
   using Half = float __attribute__((vector_size(16)));
   const auto root = [](Half h) { return reinterpret_cast<Half>(_mm_sqrt_ps(reinterpret_cast<__m128>(h))); };
   const Half low = root(__builtin_shufflevector(v, v, 0, 1, 2, 3));
