@@ -178,6 +178,31 @@ TEST(Context, BgraTargetIsTheRgbaTargetWithRedAndBlueSwapped) {
   }
 }
 
+// The UNORM8 4x resolve (two pixels at a time with AVX2, one with SSE2, the tail one by one) gives
+// every pixel the formula's bytes: sample bytes times float(1/255) summed in sample order, times
+// 0.25, stored as a fragment stores UNORM8. Random samples over an odd width and height, so every
+// path and the tail are taken; the extremes (0 and 255) in the first pixels.
+TEST(FramebufferCreate, Unorm8ResolveOfRandomSamplesIsTheFormulaAtEveryPixel) {
+  auto framebuffer = Framebuffer::create(37, 23, DepthFormat::D32Sfloat, 4);
+  ASSERT_TRUE(framebuffer);
+  std::vector<std::uint8_t>& samples = framebuffer->colour();
+  std::uint32_t state = 12345;
+  for (std::uint8_t& b : samples) {
+    state = state * 1664525u + 1013904223u;
+    b = static_cast<std::uint8_t>(state >> 24);
+  }
+  for (std::size_t i = 0; i < 64; ++i) samples[i] = (i % 3 == 0) ? 255 : (i % 3 == 1 ? 0 : samples[i]);
+  const Framebuffer resolved = framebuffer->resolve();
+  const float toFloat = static_cast<float>(1.0 / 255.0);
+  for (std::size_t p = 0; p < 37u * 23u; ++p) {
+    for (std::size_t c = 0; c < 4; ++c) {
+      float sum = 0.0f;
+      for (std::size_t s = 0; s < 4; ++s) sum = sum + static_cast<float>(samples[(p * 4 + s) * 4 + c]) * toFloat;
+      ASSERT_EQ(resolved.colour()[p * 4 + c], softraster::detail::unorm8FromFloat(sum * 0.25f)) << "pixel " << p << " channel " << c;
+    }
+  }
+}
+
 TEST(FramebufferCreate, BgraStoresBlueFirstAndResolvesToBgra) {
   auto framebuffer = Framebuffer::create(3, 2, DepthFormat::D32Sfloat, 4, softraster::ColourFormat::B8G8R8A8Unorm);
   ASSERT_TRUE(framebuffer);
