@@ -113,7 +113,7 @@ softraster::Status SoftrasterScene::render() {
     const softraster::Status status = draws_[i].draw(context_, draw.state, draw.indexed, draw.indices, framebuffer_);
     if (!status) return status.prefixed("softraster: draw '" + draw.name + "'");
   }
-  if (scene_.samples > 1) framebuffer_.resolveInto(resolved_);  // as vkref reads Vulkan's back
+  if (scene_.samples > 1) context_.resolveInto(framebuffer_, resolved_);  // as vkref reads Vulkan's back
   milliseconds_ = millisecondsSince(start);
   return {};
 }

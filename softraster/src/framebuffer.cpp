@@ -11,6 +11,7 @@
 
 #include <algorithm>
 #include <bit>
+#include <cassert>
 #include <cmath>
 #include <cstring>
 #include <string>
@@ -209,20 +210,36 @@ void Framebuffer::resolveInto(Framebuffer& out) const {
     if (samples_ != 1) out = resolve();
     return;
   }
+  prepareResolve(out);
+  if (height_ > 0) resolveRows(out, 0, height_ - 1);
+}
+
+void Framebuffer::prepareResolve(Framebuffer& out) const {
+  assert(&out != this);
+  settled();
   if (out.width_ != width_ || out.height_ != height_ || out.depthFormat_ != depthFormat_ || out.samples_ != 1 ||
       out.colourFormat_ != colourFormat_ || out.moreFormats_ != moreFormats_) {
     std::vector<ColourFormat> formats{colourFormat_};
     formats.insert(formats.end(), moreFormats_.begin(), moreFormats_.end());
     out = Framebuffer(width_, height_, depthFormat_, 1, formats);
   }
-  out.pending_.reset();  // every sample of `out` is written here
-  const std::size_t pixels = static_cast<std::size_t>(width_) * height_;
-  for (std::size_t q = 0; q < out.stencil_.size(); ++q) out.stencil_[q] = stencil_[q * samples_];
-  for (std::size_t p = 0; p < pixels; ++p) out.depth_[p] = depth_[p * samples_];
-  resolveColour(colourFormat_, samples_, pixels, colour_.data(), out.colour_.data());
-  for (std::size_t a = 0; a < moreFormats_.size(); ++a) {
-    resolveColour(moreFormats_[a], samples_, pixels, moreColour_[a].data(), out.moreColour_[a].data());
+  out.pending_.reset();  // every sample of `out` is written by resolveRows
+}
+
+void Framebuffer::resolveRows(Framebuffer& out, std::uint32_t y0, std::uint32_t y1) const {
+  assert(&out != this && out.samples_ == 1 && out.width_ == width_ && out.height_ == height_ && y0 <= y1 && y1 < height_);
+  const std::size_t first = static_cast<std::size_t>(y0) * width_;
+  const std::size_t pixels = static_cast<std::size_t>(y1 - y0 + 1) * width_;
+  if (!out.stencil_.empty()) {
+    for (std::size_t q = first; q < first + pixels; ++q) out.stencil_[q] = stencil_[q * samples_];
   }
+  for (std::size_t p = first; p < first + pixels; ++p) out.depth_[p] = depth_[p * samples_];
+  const auto resolveAttachment = [&](ColourFormat format, const std::vector<std::uint8_t>& in, std::vector<std::uint8_t>& to) {
+    const std::size_t bytes = colourBytes(format);
+    resolveColour(format, samples_, pixels, in.data() + bytes * samples_ * first, to.data() + bytes * first);
+  };
+  resolveAttachment(colourFormat_, colour_, out.colour_);
+  for (std::size_t a = 0; a < moreFormats_.size(); ++a) resolveAttachment(moreFormats_[a], moreColour_[a], out.moreColour_[a]);
 }
 
 namespace {

@@ -203,6 +203,44 @@ TEST(FramebufferCreate, Unorm8ResolveOfRandomSamplesIsTheFormulaAtEveryPixel) {
   }
 }
 
+// Context::resolveInto shares the rows among the context's threads: the same bytes as
+// Framebuffer::resolve for every attachment's format, depth and stencil, on a height that is not
+// a multiple of the rows per task, into a fresh target and into one reused.
+TEST(FramebufferCreate, ContextResolveOnThreadsIsTheFramebuffersResolve) {
+  const std::array formats{softraster::ColourFormat::R8G8B8A8Unorm, softraster::ColourFormat::R8G8B8A8Srgb,
+                           softraster::ColourFormat::A2B10G10R10Unorm,
+                           softraster::ColourFormat::R16G16B16A16Sfloat, softraster::ColourFormat::R32G32B32A32Sfloat};
+  auto framebuffer = Framebuffer::create(45, 77, DepthFormat::D24UnormS8Uint, 4, formats);
+  ASSERT_TRUE(framebuffer);
+  std::uint32_t state = 99;
+  const auto next = [&state] {
+    state = state * 1664525u + 1013904223u;
+    return state;
+  };
+  for (std::uint32_t a = 0; a < framebuffer->colourAttachments(); ++a) {
+    std::vector<std::uint8_t>& bytes = framebuffer->colour(a);
+    const bool isFloat = softraster::isFloat(framebuffer->colourFormat(a));
+    for (std::size_t i = 0; i < bytes.size(); ++i) {
+      // float formats: exponents kept small (no NaN or infinity), so the sums stay finite
+      bytes[i] = static_cast<std::uint8_t>(next() >> 24) & (isFloat && i % 2 == 1 ? 0x3bu : 0xffu);
+    }
+  }
+  for (std::uint32_t& d : framebuffer->depthStorage()) d = next() & 0xffffffu;
+  for (std::uint8_t& s : framebuffer->stencilStorage()) s = static_cast<std::uint8_t>(next() >> 24);
+  const Framebuffer expected = framebuffer->resolve();
+  softraster::ContextOptions options;
+  options.threads = 3;
+  const softraster::Context context(options);
+  Framebuffer out;
+  for (int round = 0; round < 2; ++round) {  // allocated, then reused
+    context.resolveInto(*framebuffer, out);
+    ASSERT_EQ(out.samples(), 1u);
+    for (std::uint32_t a = 0; a < expected.colourAttachments(); ++a) EXPECT_EQ(out.colour(a), expected.colour(a)) << "attachment " << a;
+    EXPECT_EQ(out.depthStorage(), expected.depthStorage());
+    EXPECT_EQ(out.stencilStorage(), expected.stencilStorage());
+  }
+}
+
 TEST(FramebufferCreate, BgraStoresBlueFirstAndResolvesToBgra) {
   auto framebuffer = Framebuffer::create(3, 2, DepthFormat::D32Sfloat, 4, softraster::ColourFormat::B8G8R8A8Unorm);
   ASSERT_TRUE(framebuffer);

@@ -78,8 +78,15 @@ class Framebuffer {
   // single-sample framebuffer resolves to a copy.
   Framebuffer resolve() const;
   // The same resolve into `out`, reusing its storage when it already has this framebuffer's size
-  // and formats with one sample (no allocation per frame).
+  // and formats with one sample (no allocation per frame). Context::resolveInto (pipeline.hpp)
+  // does it on the Context's threads.
   void resolveInto(Framebuffer& out) const;
+  // resolveInto in two steps, for a caller that shares the rows out among threads:
+  // prepareResolve gives `out` this framebuffer's size and formats with one sample (writing any
+  // pending clear of this one first), then resolveRows(out, y0, y1) resolves rows [y0, y1];
+  // calls for disjoint rows may run in parallel. `out` must not be this framebuffer.
+  void prepareResolve(Framebuffer& out) const;
+  void resolveRows(Framebuffer& out, std::uint32_t y0, std::uint32_t y1) const;
 
   // Clears every colour attachment to `colour` (converted as a UNORM8 store converts; sRGB red, green and blue as lavapipe's
   // clear encodes them, srgb.hpp's linearToSrgbClearByte; A2B10G10R10 as Mesa's format packer

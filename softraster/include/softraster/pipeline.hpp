@@ -75,6 +75,27 @@ class Context {
   // Threads drawing, the caller's included (options().threads, or the core count for 0).
   unsigned threads() const { return pool_->threads(); }
 
+  // Framebuffer::resolveInto on this context's threads, rows shared out among them (the same
+  // bytes whatever the thread count): `multisampled`'s resolve into `out`. Not thread-safe
+  // against a draw into either framebuffer.
+  void resolveInto(const Framebuffer& multisampled, Framebuffer& out) const {
+    if (&out == &multisampled || multisampled.samples() == 1 || pool_->threads() == 1) {
+      multisampled.resolveInto(out);
+      return;
+    }
+    multisampled.prepareResolve(out);
+    struct Rows {
+      const Framebuffer& in;
+      Framebuffer& out;
+      std::uint32_t height;
+    } rows{multisampled, out, multisampled.height()};
+    // One reference captured: the task fits std::function's own storage (no allocation).
+    pool_->run((rows.height + kResolveRows - 1) / kResolveRows, [&rows](std::size_t k) {
+      const auto y0 = static_cast<std::uint32_t>(k) * kResolveRows;
+      rows.in.resolveRows(rows.out, y0, std::min(rows.height - 1, y0 + kResolveRows - 1));
+    });
+  }
+
   // vkCmdDraw: vertices 0..n-1 in order, assembled by state.topology. Shader must meet
   // ShaderInterface (shader.hpp); a type that does not fails to compile here with one message.
   // Formats: the depth formats this call is compiled for, none meaning all three. The pipeline
@@ -125,6 +146,8 @@ class Context {
   }
 
  private:
+  static constexpr std::uint32_t kResolveRows = 32;  // rows per task of resolveInto
+
   // Whether this context can draw `state` into `framebuffer` at all: one error, before any work.
   Status validate(const PipelineState& state, const Framebuffer& framebuffer) const {
     const RasterizationState& rs = state.rasterization;

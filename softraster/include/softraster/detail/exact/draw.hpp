@@ -138,9 +138,11 @@ class ExactDraw {
 
   // Primitives per round of the parallel front end (the top comment), and the fewest a draw
   // needs before its front end is shared out: fewer are set up by the calling thread in one round.
+  // A batch of the pool costs a few microseconds (its threads spin between batches), so a draw of
+  // a few hundred primitives already gains from sharing its front end out.
   static constexpr std::size_t kRoundPrimitives = 1u << 15;
-  static constexpr std::size_t kParallelPrimitives = 2048;
-  static constexpr std::size_t kVertexRange = 4096;  // vertices per task of the parallel vertex stage
+  static constexpr std::size_t kParallelPrimitives = 512;
+  static constexpr std::size_t kVertexRange = 1024;  // vertices per task of the parallel vertex stage
 
   // run(worker, begin, end) over [0, count) in rounds, each cut into consecutive ranges that
   // start at a multiple of `align` (the vertex batches), one per worker, on the pool's threads
