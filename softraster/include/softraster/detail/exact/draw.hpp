@@ -392,7 +392,6 @@ class ExactDraw {
 
   // The same, its vertices snapped already (`fixed`: a, b and c's window x and y).
   void drawFixedTriangle(Worker& worker, FixedTriangle fixed, const Vertex& a, const Vertex& b, const Vertex& c) {
-    const float pixelOffset = pixelOffset_;
     const int area = fixedAreaSign(fixed);
     if (area == 0 || (area > 0 ? !winding_.drawCounterClockwise : !winding_.drawClockwise)) return;
     if (!multisample_ && missesEveryPixelCentre(fixed)) return;  // no pixel to draw: skip the setup
@@ -411,7 +410,7 @@ class ExactDraw {
     const TriangleEdges edges = setupEdges(fixed);
     fragments_.prefetch(edges.bounds);
     TriangleInterpolants<N> interpolants =
-        setupInterpolants(v0, v1, v2, kInterpolation, rs_.depthBias, Format, pixelOffset, provokingLast_);
+        setupInterpolants(v0, v1, v2, kInterpolation, rs_.depthBias, Format, pixelOffset_, provokingLast_);
     interpolants.frontFacing = (area > 0) == (rs_.frontFace == FrontFace::CounterClockwise);  // the stencil face
     if (multisample_) {
       worker.sink.shadeSamples(edges.edges, edges.bounds, interpolants);
@@ -494,8 +493,7 @@ class ExactDraw {
   // shaded_'s window x and y snapped, for a draw of filled triangles by the exact method (whose
   // straight path culls a triangle from them): each vertex snapped once, not once per triangle.
   std::vector<FixedPoint>& snapped_;
-  bool snapsVertices_ = !kCourse && state_.topology != Topology::PointList && !isLineTopology(state_.topology) &&
-                        rs_.polygonMode == PolygonMode::Fill;
+  bool snapsVertices_ = !kCourse && isTriangleTopology(state_.topology) && rs_.polygonMode == PolygonMode::Fill;
   std::vector<TriangleIndices>& triangles_;
   std::vector<LineIndices>& lines_;
   [[no_unique_address]] Course course_;  // after viewport_ and region_, which it is made from
