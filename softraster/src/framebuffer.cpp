@@ -14,6 +14,7 @@
 #include <cassert>
 #include <cmath>
 #include <cstring>
+#include <limits>
 #include <string>
 #include <utility>
 
@@ -80,6 +81,16 @@ Framebuffer::Framebuffer(std::uint32_t width, std::uint32_t height, DepthFormat 
   for (const ColourFormat format : moreFormats_) {
     moreColour_.emplace_back(static_cast<std::size_t>(width) * height * samples * colourBytes(format), 0);
   }
+  if (samples == 1) {  // every word 0: the key of a 0 word (0.0 as D32 too)
+    const std::size_t tiles = static_cast<std::size_t>(detail::FramebufferAccess::depthTilesPerRow(*this)) *
+                              ((height + detail::kDepthTileSize - 1) / detail::kDepthTileSize);
+    depthTiles_.assign(tiles, {0.0f, 0.0f});
+  }
+}
+
+void Framebuffer::forgetDepthTiles() {
+  std::fill(depthTiles_.begin(), depthTiles_.end(),
+            detail::DepthTileRange{-std::numeric_limits<float>::infinity(), std::numeric_limits<float>::infinity()});
 }
 
 Framebuffer Framebuffer::resolve() const {
@@ -224,6 +235,7 @@ void Framebuffer::prepareResolve(Framebuffer& out) const {
     out = Framebuffer(width_, height_, depthFormat_, 1, formats);
   }
   out.pending_.reset();  // every sample of `out` is written by resolveRows
+  out.forgetDepthTiles();
 }
 
 void Framebuffer::resolveRows(Framebuffer& out, std::uint32_t y0, std::uint32_t y1) const {
@@ -320,6 +332,12 @@ void Framebuffer::clear(std::span<const Vec4> colours, float depth, std::uint8_t
   clear.depth = depthClearValue(depthFormat_, depth);
   clear.stencil = stencil;
   pending_ = clear;
+  const float key = detail::depthTileKey(depthFormat_, clear.depth);
+  if (std::isnan(key)) {
+    forgetDepthTiles();
+  } else {
+    std::fill(depthTiles_.begin(), depthTiles_.end(), detail::DepthTileRange{key, key});
+  }
 }
 
 namespace {

@@ -19,6 +19,11 @@
 // clear first, so a pending clear is never observable. Not thread-safe: one thread at a time
 // draws into or reads a Framebuffer (even a const read may write a pending clear).
 // Accessors do not check their coordinates beyond an assert (they are preconditions, as for std::vector's operator[]).
+// A single-sample framebuffer also keeps, per 32x32 tile, bounds on the depth stored there
+// (detail/fast/depth_tiles.hpp): a clear sets them, the fast path's draws keep them, and
+// everything else that may write depth forgets them, the mutable depthStorage() included. They
+// are a cache that never changes a pixel: a draw uses them only to skip tiles where no fragment
+// could pass the depth test.
 #pragma once
 
 #include <softraster/formats.hpp>
@@ -27,6 +32,7 @@
 #include <softraster/status.hpp>
 
 #include <array>
+#include <bit>
 #include <cassert>
 #include <cstddef>
 #include <cstdint>
@@ -35,6 +41,23 @@
 #include <vector>
 
 namespace softraster {
+
+class Framebuffer;
+
+namespace detail {
+// Bounds on the depth stored in one tile of a single-sample framebuffer, as keys
+// (depthTileKey: UNORM depth as its integer, D32 as its float): every sample there has lo <= key
+// <= hi. [-inf, +inf] when nothing is known.
+struct DepthTileRange {
+  float lo, hi;
+};
+inline constexpr int kDepthTileSize = 32;  // pixels per side, tiles at multiples of it
+// A stored depth word as a key: ordered as the depth test orders the format's values.
+inline float depthTileKey(DepthFormat format, std::uint32_t word) {
+  return unormDepthBits(format) == 0 ? std::bit_cast<float>(word) : static_cast<float>(word);
+}
+struct FramebufferAccess;
+}  // namespace detail
 
 // The largest width and height create() accepts: lavapipe's maxFramebufferWidth and Height.
 inline constexpr std::uint32_t kMaxFramebufferSize = 16384;
@@ -111,8 +134,13 @@ class Framebuffer {
     return attachment == 0 ? settled().colour_ : settled().moreColour_[attachment - 1];
   }
 
-  // Depth as stored, one value per sample (see the top of this file).
-  std::vector<std::uint32_t>& depthStorage() { return settled().depth_; }
+  // Depth as stored, one value per sample (see the top of this file). The mutable one forgets the
+  // tiles' depth bounds (top of this file): write through the reference before the next draw,
+  // or call it again after a draw before writing.
+  std::vector<std::uint32_t>& depthStorage() {
+    forgetDepthTiles();
+    return settled().depth_;
+  }
   const std::vector<std::uint32_t>& depthStorage() const { return settled().depth_; }
   // Stencil, one byte per sample in depthStorage()'s order; empty without a stencil aspect.
   std::vector<std::uint8_t>& stencilStorage() { return settled().stencil_; }
@@ -178,6 +206,10 @@ class Framebuffer {
   }
   void writePendingClear() const;
   void fillRows(const PendingClear& clear, std::uint32_t y0, std::uint32_t y1) const;
+  // Every tile's depth bounds [-inf, +inf] (nothing known).
+  void forgetDepthTiles();
+
+  friend struct detail::FramebufferAccess;
 
   std::uint32_t width_ = 0, height_ = 0, samples_ = 1;
   DepthFormat depthFormat_ = DepthFormat::D32Sfloat;
@@ -188,6 +220,23 @@ class Framebuffer {
   mutable std::vector<std::vector<std::uint8_t>> moreColour_;  // attachments 1..
   mutable std::vector<std::uint32_t> depth_;
   mutable std::vector<std::uint8_t> stencil_;  // empty without a stencil aspect
+  // Single-sample only (else empty): per tile of kDepthTileSize pixels square, row by row.
+  std::vector<detail::DepthTileRange> depthTiles_;
 };
+
+namespace detail {
+// What softraster's draws reach inside a Framebuffer beyond its public interface.
+struct FramebufferAccess {
+  // The depth words, without forgetting the tiles' bounds: for a fragment stage, whose draw
+  // either keeps the bounds or has forgotten them (detail/fast/depth_tiles.hpp).
+  static std::uint32_t* depthWords(Framebuffer& f) { return f.settled().depth_.data(); }
+  // The tiles' bounds, ceil(width / kDepthTileSize) per row; empty with 4 samples.
+  static std::span<DepthTileRange> depthTiles(Framebuffer& f) { return f.depthTiles_; }
+  static std::uint32_t depthTilesPerRow(const Framebuffer& f) {
+    return (f.width_ + kDepthTileSize - 1) / kDepthTileSize;
+  }
+  static void forgetDepthTiles(Framebuffer& f) { f.forgetDepthTiles(); }
+};
+}  // namespace detail
 
 }  // namespace softraster

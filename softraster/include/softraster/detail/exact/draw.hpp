@@ -23,6 +23,8 @@
 // Primitive restart cuts the indices into runs, each drawn as a draw of its own (its own vertex
 // batches); provoking vertex last changes assembly, clipping's fan, setup's reordering of
 // clockwise triangles and which vertex gives flat varyings (the stages say how).
+// A draw that writes depth opens the tiles' depth bounds its compare op may move, or forgets
+// them when its fragment stage does not keep them (fast/depth_tiles.hpp).
 // Deliberately absent: validation of the draw (pipeline.hpp's Context does it before any work)
 // and any choice of method or instruction set (the Context makes those and instantiates this).
 #pragma once
@@ -33,6 +35,7 @@
 #include <softraster/detail/exact/scratch.hpp>
 #include <softraster/detail/exact/triangle_setup.hpp>
 #include <softraster/detail/fast/bands.hpp>
+#include <softraster/detail/fast/depth_tiles.hpp>
 #include <softraster/detail/fast/pool.hpp>
 #include <softraster/detail/fragment/shade.hpp>
 #include <softraster/detail/geometry/clipping.hpp>
@@ -91,7 +94,9 @@ class ExactDraw {
         snapped_(scratch.vector<FixedPoint>(ScratchSlot::SnappedVertices)),
         triangles_(scratch.vector<TriangleIndices>(ScratchSlot::Triangles)),
         lines_(scratch.vector<LineIndices>(ScratchSlot::Lines)),
-        course_(makeCourse(state, uniforms, framebuffer, inverseZ, options, scratch)) {}
+        course_(makeCourse(state, uniforms, framebuffer, inverseZ, options, scratch)) {
+    fast::prepareDepthTiles(framebuffer, state.depth, kKeepsDepthTiles && !inverseZ);
+  }
 
   // Draws vertices[indices[k]] in order, assembled by the state's topology.
   void run(std::span<const typename Shader::Vertex> vertices, std::span<const std::uint32_t> indices) {
@@ -112,6 +117,11 @@ class ExactDraw {
  private:
   static constexpr InterpolationSet<N> kInterpolation = interpolationOf<Shader>();
   static constexpr bool kCourse = !std::is_same_v<Course, NoCourseMethod>;
+  // Whether every fragment of the draw goes through a stage that keeps the tiles' depth bounds.
+  static constexpr bool kKeepsDepthTiles = [] {
+    if constexpr (requires { Fragments::kKeepsDepthTiles; }) return Fragments::kKeepsDepthTiles && !kCourse;
+    return false;
+  }();
 
   Course makeCourse(const PipelineState& state, const typename Shader::Uniforms& uniforms, Framebuffer& framebuffer,
                     bool inverseZ, const ContextOptions& options, DrawScratch& scratch) const {

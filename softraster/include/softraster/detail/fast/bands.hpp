@@ -1,7 +1,7 @@
 // BandQueue: the fragment stage the draw loop talks to when the Context has more than one
 // thread. The draw loop's front end hands it each set-up primitive (its edges, bounds and
 // interpolants) through a Recorder; the queue keeps the primitive as a record instead of shading
-// it, binned into the bands of kBandRows rows of the draw region it touches, and at the end of
+// it, binned into the bands of kBandRows rows (at multiples of it) it touches, and at the end of
 // each round of primitives draws the bands in parallel (ThreadPool, fast/pool.hpp): each band by
 // one thread, with its own fragment stage clipped to the band, replaying its records in
 // submission order.
@@ -73,6 +73,7 @@ class BandQueue {
 
  public:
   static constexpr int kBandRows = 32;
+  static_assert(kBandRows % kDepthTileSize == 0, "a depth tile (fast/depth_tiles.hpp) lies in one band");
   // Front-end workers per thread: more lists than threads, so a round's work is shared out
   // evenly when some parts of the draw cost more than others (clipping, culled runs).
   static constexpr unsigned kListsPerThread = 4;
@@ -88,7 +89,8 @@ class BandQueue {
         region_(region),
         inverseZ_(inverseZ),
         deviations_(deviations),
-        bands_(region.empty() ? 0 : (region.y1 - region.y0) / kBandRows + 1),
+        firstBand_(region.empty() ? 0 : floorDiv(region.y0, kBandRows)),
+        bands_(region.empty() ? 0 : floorDiv(region.y1, kBandRows) - firstBand_ + 1),
         lists_(scratch.vector<List>(ScratchSlot::BandLists)) {
     if (pool_ == nullptr) {
       direct_.emplace(state, uniforms, framebuffer, viewport, region, inverseZ, deviations);
@@ -172,7 +174,7 @@ class BandQueue {
     std::vector<Record>& records = l.records;
     const auto index = static_cast<std::uint32_t>(records.size());
     records.emplace_back(kind, edges, bounds, t, regionPlanes);
-    const int first = (box.y0 - region_.y0) / kBandRows, last = (box.y1 - region_.y0) / kBandRows;
+    const int first = floorDiv(box.y0, kBandRows) - firstBand_, last = floorDiv(box.y1, kBandRows) - firstBand_;
     for (int b = first; b <= last; ++b) l.bins[static_cast<std::size_t>(b)].push_back(index);
   }
 
@@ -214,10 +216,13 @@ class BandQueue {
   // The draw region's rows of one band.
   PixelRect bandRows(std::size_t band) const {
     PixelRect rows = region_;
-    rows.y0 = region_.y0 + static_cast<int>(band) * kBandRows;
-    rows.y1 = std::min(region_.y1, rows.y0 + kBandRows - 1);
+    const int y0 = (firstBand_ + static_cast<int>(band)) * kBandRows;
+    rows.y0 = std::max(region_.y0, y0);
+    rows.y1 = std::min(region_.y1, y0 + kBandRows - 1);
     return rows;
   }
+
+  static int floorDiv(int a, int b) { return a >= 0 ? a / b : -((-a + b - 1) / b); }
 
   // One band's records, drawn by the calling thread. The band task is reached through
   // std::function, outside the Context's flattened entry point, so it is compiled for the
@@ -275,7 +280,7 @@ class BandQueue {
   };
   Pixels pixelsToPrefetch() const {
     if (framebuffer_.samples() != 1) return {};
-    return {framebuffer_.colour().data(), framebuffer_.depthStorage().data()};
+    return {framebuffer_.colour().data(), FramebufferAccess::depthWords(framebuffer_)};
   }
 
   ThreadPool* pool_;
@@ -286,6 +291,7 @@ class BandQueue {
   PixelRect region_;
   bool inverseZ_;
   Deviations deviations_;
+  int firstBand_;  // bands lie at multiples of kBandRows rows (as the depth tiles do): this one holds the region's first row
   int bands_;
   std::optional<Stage> direct_;
   Pixels pixels_;

@@ -30,11 +30,14 @@
 // mask narrows MSAA coverage first; alpha to one sets the alpha to 1 before packing. Lines and
 // points with 4x MSAA go to the scalar stage it holds, and so do the triangles of a shader with
 // the built-ins under sample shading (shaded sample by sample).
+// A primitive's box of at least a tile's pixels first meets the tiles' depth bounds
+// (fast/depth_tiles.hpp): the tiles where no fragment could pass are not walked.
 // Threads are the band queue's (fast/bands.hpp), which gives each thread a stage of its own.
-// Deliberately absent: a per-tile depth range, AVX-512.
+// Deliberately absent: AVX-512.
 #pragma once
 
 #include <softraster/detail/fast/batch.hpp>
+#include <softraster/detail/fast/depth_tiles.hpp>
 #include <softraster/detail/fast/stencil.hpp>
 #include <softraster/detail/instruction_set.hpp>
 
@@ -63,6 +66,7 @@ class FastFragmentStage {
   static constexpr int N = Shader::kVaryings;
   static constexpr bool kQuads = ShadesQuads<Shader>;  // shaded in aligned 2x2 quads (a shader that samples textures)
   static constexpr InstructionSet kInstructionSet = InstructionSet::Avx2Fma;
+  static constexpr bool kKeepsDepthTiles = true;  // a single-sample draw keeps the tiles' depth bounds (fast/depth_tiles.hpp)
 
   FastFragmentStage(const PipelineState& state, const typename Shader::Uniforms& uniforms, Framebuffer& framebuffer,
                     const Viewport& viewport, const PixelRect& region, bool inverseZ,
@@ -70,7 +74,8 @@ class FastFragmentStage {
       : scalar_(state, uniforms, framebuffer, viewport, region, inverseZ, deviations),
         uniforms_(uniforms),
         target_(scalar_.target()),
-        colour_(reinterpret_cast<std::uint32_t*>(target_.colour)) {}
+        colour_(reinterpret_cast<std::uint32_t*>(target_.colour)),
+        depthTiles_(framebuffer, target_, inverseZ, kBuiltins || target_.coverage.shadesFirst(), kWritesDepth) {}
 
   // target_ refers into scalar_, so a copy would point at another stage's target.
   FastFragmentStage(const FastFragmentStage&) = delete;
@@ -154,7 +159,7 @@ class FastFragmentStage {
     // Nothing passes (but with the stencil on, failing fragments still update it).
     if (target_.depth.testEnable && target_.depth.compareOp == CompareOp::Never && !target_.stencil.enable) return;
     const BlockPlanes planes = blockPlanes(t);
-    walk(edges, box, planes);
+    depthTiles_.shade(edges, box, t.depth, t.depthOffset, [&](const PixelRect& part) { walk(edges, part, planes); });
   }
 
   static constexpr std::int64_t kCutBlocks = 4;  // rows of more blocks than this are cut by division
@@ -648,6 +653,7 @@ class FastFragmentStage {
   const typename Shader::Uniforms& uniforms_;
   const FragmentTarget& target_;  // the scalar stage's: one value, derived once
   std::uint32_t* colour_;         // target_.colour as packed RGBA8, one word per pixel
+  DepthTiles<depthAspect(Format)> depthTiles_;  // skips the tiles no fragment could pass
 };
 
 }  // namespace softraster::detail::fast

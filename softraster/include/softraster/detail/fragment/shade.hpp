@@ -107,7 +107,7 @@ inline FragmentTarget fragmentTarget(const PipelineState& state, Framebuffer& fr
           framebuffer.width(),
           colourBytes(framebuffer.colourFormat()),
           framebuffer.colour().data(),
-          framebuffer.depthStorage().data(),
+          FramebufferAccess::depthWords(framebuffer),  // the draw keeps or forgets the tiles' bounds
           hasStencil(framebuffer.depthFormat()) ? framebuffer.stencilStorage().data() : nullptr};
   target.colourAttachments = framebuffer.colourAttachments();
   for (std::uint32_t a = 1; a < target.colourAttachments; ++a) {

@@ -1,0 +1,264 @@
+// The tiles' depth bounds (detail/fast/depth_tiles.hpp): the bounds a primitive gives hold every
+// fragment's depth as the fast path computes it; a tile behind a whole tile's depth is not
+// walked; and sequences of random draws (every compare op, writes on and off, bias, clamp,
+// scissors, stencil, the mutable depthStorage() in between) give the fast path the scalar
+// method's bytes on 1 and 3 threads while every tile's bounds hold every stored depth.
+#include <softraster/detail/fast/depth_tiles.hpp>
+#include <softraster/pipeline.hpp>
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <random>
+#include <string>
+#include <vector>
+
+namespace {
+
+using softraster::CompareOp;
+using softraster::DepthFormat;
+using softraster::Framebuffer;
+using softraster::detail::DepthTileRange;
+using softraster::detail::FramebufferAccess;
+using softraster::detail::kDepthTileSize;
+
+// The colour of each vertex interpolated: every draw leaves its own colours where it passes.
+struct Colour {
+  struct Vertex {
+    softraster::Vec3 position;
+    softraster::Vec4 colour;
+  };
+  struct Uniforms {};
+  static constexpr int kVaryings = 4;
+  static softraster::Vec4 vertex(const Uniforms&, const Vertex& v, float* out) {
+    out[0] = v.colour.x, out[1] = v.colour.y, out[2] = v.colour.z, out[3] = v.colour.w;
+    return {v.position.x, v.position.y, v.position.z, 1.0f};
+  }
+  template <class F>
+  static softraster::Vec4T<F> fragment(const Uniforms&, const F* in) {
+    return {in[0], in[1], in[2], in[3]};
+  }
+};
+
+bool fastPathHere() {
+#if SOFTRASTER_HAS_FAST_PATH
+  return softraster::detail::fast::cpuRunsFastPath();
+#else
+  return false;
+#endif
+}
+
+// The key of a fragment at pixel (x, y) as the fast path computes its depth (two fmuladds at
+// the integer coordinates, the bias, the clamp, the conversion).
+template <DepthFormat Format>
+float fragmentKey(const softraster::detail::PlaneEquation& p, float offset, softraster::detail::DepthRange range, int x,
+                  int y) {
+  const float z = std::fma(p.dady, static_cast<float>(y), std::fma(p.dadx, static_cast<float>(x), p.a0)) + offset;
+  using namespace softraster::detail;
+  return depthTileKey(Format, depthToStorage<Format>(clampDepth(z, range)));
+}
+
+template <DepthFormat Format>
+void expectBoundsHold(std::mt19937& random) {
+  std::uniform_real_distribution<float> unit(0.0f, 1.0f);
+  const auto scaled = [&](float lowExp, float highExp) {
+    const float magnitude = std::pow(10.0f, lowExp + (highExp - lowExp) * unit(random));
+    return unit(random) < 0.5f ? -magnitude : magnitude;
+  };
+  int checked = 0;
+  for (int trial = 0; trial < 4000; ++trial) {
+    softraster::detail::PlaneEquation plane{-0.5f + 2.0f * unit(random), scaled(-9, -1), scaled(-9, -1)};
+    if (trial % 7 == 0) plane.dadx = 0;
+    const float offset = trial % 3 == 0 ? scaled(-8, -2) : 0.0f;
+    softraster::detail::DepthRange range;
+    if (trial % 4 == 0) range = {0.25f * unit(random), 0.5f + 0.5f * unit(random)};
+    const int x0 = static_cast<int>(unit(random) * 16000), y0 = static_cast<int>(unit(random) * 16000);
+    const softraster::detail::PixelRect rect{x0, y0, x0 + static_cast<int>(unit(random) * 300),
+                                             y0 + static_cast<int>(unit(random) * 300)};
+    float lo = 0, hi = 0;
+    ASSERT_TRUE(softraster::detail::fast::depthKeyBounds<Format>(plane, offset, range, rect, lo, hi));
+    for (int k = 0; k < 24; ++k) {
+      const int x = k < 4 ? (k & 1 ? rect.x1 : rect.x0) : rect.x0 + static_cast<int>(unit(random) * (rect.x1 - rect.x0 + 1));
+      const int y = k < 4 ? (k & 2 ? rect.y1 : rect.y0) : rect.y0 + static_cast<int>(unit(random) * (rect.y1 - rect.y0 + 1));
+      const float key = fragmentKey<Format>(plane, offset, range, std::min(x, rect.x1), std::min(y, rect.y1));
+      ASSERT_LE(lo, key) << "trial " << trial;
+      ASSERT_GE(hi, key) << "trial " << trial;
+      ++checked;
+    }
+  }
+  EXPECT_EQ(checked, 4000 * 24);
+}
+
+// Every tile's bounds hold every depth stored in it.
+void expectTilesHold(Framebuffer& framebuffer, const std::string& where) {
+  const auto tiles = FramebufferAccess::depthTiles(framebuffer);
+  const std::uint32_t* depth = FramebufferAccess::depthWords(framebuffer);
+  const std::uint32_t perRow = FramebufferAccess::depthTilesPerRow(framebuffer);
+  for (std::uint32_t y = 0; y < framebuffer.height(); ++y) {
+    for (std::uint32_t x = 0; x < framebuffer.width(); ++x) {
+      const DepthTileRange& t = tiles[(y / kDepthTileSize) * perRow + x / kDepthTileSize];
+      const float key = softraster::detail::depthTileKey(framebuffer.depthFormat(), depth[y * framebuffer.width() + x]);
+      if (!(t.lo <= key && key <= t.hi)) {
+        ADD_FAILURE() << where << ": pixel (" << x << ", " << y << ") key " << key << " outside its tile's [" << t.lo
+                      << ", " << t.hi << "]";
+        return;
+      }
+    }
+  }
+}
+
+// Two triangles covering the viewport at depth z (a flat quad), in colour c.
+std::vector<Colour::Vertex> quad(float z, softraster::Vec4 c) {
+  return {{{-1, -1, z}, c}, {{1, -1, z}, c}, {{1, 1, z}, c}, {{-1, -1, z}, c}, {{1, 1, z}, c}, {{-1, 1, z}, c}};
+}
+
+}  // namespace
+
+TEST(DepthTiles, BoundsHoldEveryFragmentsDepth) {
+  std::mt19937 random(20261205);
+  expectBoundsHold<DepthFormat::D16Unorm>(random);
+  expectBoundsHold<DepthFormat::X8D24UnormPack32>(random);
+  expectBoundsHold<DepthFormat::D32Sfloat>(random);
+}
+
+TEST(DepthTiles, HugePlanesGiveNoBounds) {
+  float lo = 0, hi = 0;
+  const softraster::detail::PixelRect rect{0, 0, 31, 31};
+  EXPECT_FALSE(softraster::detail::fast::depthKeyBounds<DepthFormat::D32Sfloat>({0.5f, 1e35f, 0}, 0, {}, rect, lo, hi));
+  EXPECT_FALSE(softraster::detail::fast::depthKeyBounds<DepthFormat::D32Sfloat>({NAN, 0, 0}, 0, {}, rect, lo, hi));
+}
+
+// A clear gives each tile its value; a quad at 0.25 narrows the tiles one of its triangles covers
+// whole; then a plane at 0.5 with LESS walks every tile but those; the mutable depthStorage()
+// forgets them all.
+TEST(DepthTiles, TilesBehindAWholeTileAreNotWalked) {
+  if (!fastPathHere()) GTEST_SKIP() << "no fast path here";
+  constexpr DepthFormat kFormat = DepthFormat::X8D24UnormPack32;
+  Framebuffer framebuffer = Framebuffer::create(256, 128, kFormat).value();
+  framebuffer.clear({0, 0, 0, 1}, 1.0f);
+  for (const DepthTileRange& t : FramebufferAccess::depthTiles(framebuffer)) {
+    EXPECT_EQ(t.lo, 16777215.0f);
+    EXPECT_EQ(t.hi, 16777215.0f);
+  }
+  softraster::PipelineState state;
+  state.rasterization.cullMode = softraster::CullMode::None;
+  softraster::ContextOptions options;
+  options.threads = 1;
+  const softraster::Context context(options);
+  const auto vertices = quad(0.25f, {1, 0, 0, 1});
+  ASSERT_TRUE(context.draw<Colour>(state, {}, std::span<const Colour::Vertex>(vertices), framebuffer).ok());
+  expectTilesHold(framebuffer, "after the quad");
+  // 8 x 4 tiles; the diagonal of the quad crosses 8 of them (one per column), and those each
+  // triangle covers in part keep hi = 1.0's key: the other 24 are narrowed to 0.25's, but for
+  // the bound's slack (2^-20 of 0.25: 4 steps of D24).
+  const float quarter = 4194304.0f;  // nearbyint(0.25f * 16777215.0f)
+  std::vector<bool> narrowed;
+  for (const DepthTileRange& t : FramebufferAccess::depthTiles(framebuffer)) {
+    EXPECT_EQ(t.lo, -softraster::detail::fast::kNoDepthBound) << "LESS opens lo";
+    const bool nearQuarter = t.hi >= quarter && t.hi <= quarter + 8;
+    EXPECT_TRUE(nearQuarter || t.hi == 16777215.0f) << t.hi;
+    narrowed.push_back(nearQuarter);
+  }
+  EXPECT_EQ(std::count(narrowed.begin(), narrowed.end(), true), 24);
+
+  const softraster::detail::FragmentTarget target = softraster::detail::fragmentTarget(
+      state, framebuffer, softraster::detail::resolveViewport(state.viewport, 256, 128), {0, 0, 255, 127}, false);
+  const auto walkedTiles = [&](Framebuffer& f) {
+    const softraster::detail::fast::DepthTiles<kFormat> tiles(f, target, false, false, false);
+    const softraster::detail::EdgeFunction everywhere[3] = {{1, 0, 0}, {1, 0, 0}, {1, 0, 0}};
+    std::vector<int> walked(32, 0);  // pixels walked per tile
+    tiles.shade(everywhere, {0, 0, 255, 127}, {0.5f, 0, 0}, 0.0f, [&](const softraster::detail::PixelRect& part) {
+      for (int y = part.y0; y <= part.y1; ++y) {
+        for (int x = part.x0; x <= part.x1; ++x) ++walked[static_cast<std::size_t>((y / 32) * 8 + x / 32)];
+      }
+    });
+    return walked;
+  };
+  const std::vector<int> walked = walkedTiles(framebuffer);
+  for (std::size_t i = 0; i < 32; ++i) EXPECT_EQ(walked[i], narrowed[i] ? 0 : 32 * 32) << "tile " << i;
+  framebuffer.depthStorage();  // may be written through: the bounds are forgotten
+  for (const int pixels : walkedTiles(framebuffer)) EXPECT_EQ(pixels, 32 * 32);
+}
+
+// Random sequences of large triangles, the fast path on 1 and 3 threads against the scalar
+// method after every draw, with the tiles' bounds checked to hold every stored depth.
+TEST(DepthTiles, RandomDrawsMatchTheScalarMethodAndKeepTrueBounds) {
+  if (!fastPathHere()) GTEST_SKIP() << "no fast path here";
+  const CompareOp ops[] = {CompareOp::Never,   CompareOp::Less,     CompareOp::Equal,          CompareOp::LessOrEqual,
+                           CompareOp::Greater, CompareOp::NotEqual, CompareOp::GreaterOrEqual, CompareOp::Always};
+  const DepthFormat formats[] = {DepthFormat::D16Unorm, DepthFormat::X8D24UnormPack32, DepthFormat::D32Sfloat,
+                                 DepthFormat::D24UnormS8Uint};
+  std::mt19937 random(7);
+  std::uniform_real_distribution<float> unit(0.0f, 1.0f);
+  const float levels[] = {0.125f, 0.25f, 0.5f, 0.75f, 1.0f};  // flat depths that meet exactly
+  for (const DepthFormat format : formats) {
+    for (const unsigned threads : {1u, 3u}) {
+      Framebuffer fast = Framebuffer::create(173, 151, format).value();
+      Framebuffer scalar = Framebuffer::create(173, 151, format).value();
+      softraster::ContextOptions options;
+      options.threads = threads;
+      const softraster::Context fastContext(options);
+      options.method = softraster::Method::ExactScalar;
+      options.threads = 1;
+      const softraster::Context scalarContext(options);
+      for (int frame = 0; frame < 3; ++frame) {
+        const float clearDepth = frame == 1 ? 0.0f : 1.0f;
+        fast.clear({0, 0, 0, 1}, clearDepth);
+        scalar.clear({0, 0, 0, 1}, clearDepth);
+        for (int draw = 0; draw < 40; ++draw) {
+          softraster::PipelineState state;
+          state.rasterization.cullMode = softraster::CullMode::None;
+          state.depth.compareOp = ops[random() % 8];
+          state.depth.writeEnable = random() % 4 != 0;
+          state.depth.testEnable = random() % 10 != 0;
+          if (random() % 5 == 0) {
+            state.rasterization.depthBias = {true, static_cast<float>(random() % 200) - 100.0f, 0.0f, unit(random) * 4 - 2};
+          }
+          if (random() % 5 == 0) {
+            state.rasterization.depthClampEnable = true;
+            state.viewport = {0, 0, 173, 151, 0.2f + 0.2f * unit(random), 0.6f + 0.3f * unit(random)};
+          }
+          if (random() % 4 == 0) {
+            state.scissor = {static_cast<std::int32_t>(random() % 60), static_cast<std::int32_t>(random() % 60),
+                             static_cast<std::uint32_t>(40 + random() % 120), static_cast<std::uint32_t>(40 + random() % 100)};
+          }
+          if (format == DepthFormat::D24UnormS8Uint && random() % 2 == 0) {
+            state.depth.stencilTestEnable = true;
+            state.depth.front.passOp = softraster::StencilOp::IncrementAndClamp;
+            state.depth.front.depthFailOp = softraster::StencilOp::Invert;
+            state.depth.back = state.depth.front;
+          }
+          std::vector<Colour::Vertex> vertices;
+          const softraster::Vec4 c{unit(random), unit(random), unit(random), 1};
+          if (random() % 3 == 0) {  // a flat quad over everything, at a level
+            vertices = quad(levels[random() % 5], c);
+          } else {
+            for (int v = 0; v < 3 * (1 + static_cast<int>(random() % 2)); ++v) {
+              const float z = random() % 3 == 0 ? levels[random() % 5] : -0.1f + 1.2f * unit(random);
+              vertices.push_back({{-2.0f + 4.0f * unit(random), -2.0f + 4.0f * unit(random), z}, c});
+            }
+          }
+          const std::span<const Colour::Vertex> span(vertices);
+          ASSERT_TRUE(fastContext.draw<Colour>(state, {}, span, fast).ok());
+          ASSERT_TRUE(scalarContext.draw<Colour>(state, {}, span, scalar).ok());
+          const std::string where = "format " + std::to_string(static_cast<int>(format)) + ", " +
+                                    std::to_string(threads) + " threads, frame " + std::to_string(frame) + ", draw " +
+                                    std::to_string(draw);
+          ASSERT_TRUE(std::equal(FramebufferAccess::depthWords(fast), FramebufferAccess::depthWords(fast) + 173 * 151,
+                                 FramebufferAccess::depthWords(scalar)))
+              << where << ": depth differs";
+          ASSERT_TRUE(fast.colour() == scalar.colour()) << where << ": colour differs";
+          ASSERT_TRUE(fast.stencilStorage() == scalar.stencilStorage()) << where << ": stencil differs";
+          expectTilesHold(fast, where);
+          if (draw == 20) {  // written from outside: seen by the next draws
+            std::vector<std::uint32_t>& depth = fast.depthStorage();
+            std::vector<std::uint32_t>& reference = scalar.depthStorage();
+            for (std::size_t i = 0; i < depth.size(); i += 3) depth[i] = reference[i] = reference[(i * 7) % depth.size()];
+          }
+        }
+      }
+    }
+  }
+}
