@@ -20,8 +20,10 @@
 // colour and depth lines of its next small primitive while it draws the one before.
 // With no pool (one thread) every Recorder forwards its calls straight to one stage (whose
 // framebuffer access writes a pending clear whole).
-// Deliberately absent: square tiles (bands are simpler to bin and balance as well on 2-8 threads),
-// a per-tile depth range.
+// Bands lie at multiples of kBandRows rows, so each 32x32 tile of depth bounds
+// (fast/depth_tiles.hpp) is drawn by one band's thread.
+// Deliberately absent: square tiles for binning (bands are simpler to bin and balance as well on
+// 2-8 threads).
 #pragma once
 
 #include <softraster/detail/exact/interpolation.hpp>

@@ -109,14 +109,6 @@ inline DepthTileRange narrowedByWholeTile(CompareOp op, float lo, float hi, Dept
   return tile;
 }
 
-// double to float, rounded toward -inf (Down) or +inf.
-template <bool Down>
-inline float roundedTo(double v) {
-  const float f = static_cast<float>(v);
-  if (Down) return static_cast<double>(f) > v ? std::nextafter(f, -kNoDepthBound) : f;
-  return static_cast<double>(f) < v ? std::nextafter(f, kNoDepthBound) : f;
-}
-
 // Keys bounding the depth a fragment stage tests at every pixel of `rect` (single sample:
 // evaluatePlane at the integer pixel coordinates, plus the bias, clamped, converted), or false
 // when the plane's magnitudes leave no useful bound.
@@ -128,28 +120,54 @@ inline bool depthKeyBounds(const PlaneEquation& depth, float depthOffset, DepthR
   const double magnitude = std::fabs(a0) + std::max(std::fabs(x0), std::fabs(x1)) +
                            std::max(std::fabs(y0), std::fabs(y1)) + std::fabs(offset);
   if (!(magnitude < 0x1p100)) return false;  // NaN or huge: a float evaluation may overflow
-  // Three roundings to float (two fmuladds and the bias's add), each within 2^-24 of the
-  // magnitudes; flushed denormals within 2^-126.
+  // The float evaluation rounds at most five times (two fmuladds, or their products and sums
+  // apart, and the bias's add), each time by at most 2^-24 of a value below the magnitude, and
+  // this bound's own rounding to float adds 2^-25 of it: 0.35 * 2^-20 of the magnitude in all,
+  // which the slack covers three times over; flushed denormals are within 2^-126.
   const double slack = magnitude * 0x1p-20 + 0x1p-120;
   const double zLo = a0 + std::min(x0, x1) + std::min(y0, y1) + offset - slack;
   const double zHi = a0 + std::max(x0, x1) + std::max(y0, y1) + offset + slack;
   // Clamping and conversion keep the order (never reversing two depths), so they map the bounds.
-  lo = depthTileKey(Format, depthToStorage<Format>(clampDepth(roundedTo<true>(zLo), range)));
-  hi = depthTileKey(Format, depthToStorage<Format>(clampDepth(roundedTo<false>(zHi), range)));
+  lo = depthTileKey(Format, depthToStorage<Format>(clampDepth(static_cast<float>(zLo), range)));
+  hi = depthTileKey(Format, depthToStorage<Format>(clampDepth(static_cast<float>(zHi), range)));
+  return true;
+}
+
+// Whether no edge value c + dcdy * y - dcdx * x over the pixels [0, x1] x [0, y1] can leave 64 bits.
+template <int E>
+inline bool edgeValuesFit(const EdgeFunction (&edges)[E], int x1, int y1) {
+  for (int i = 0; i < E; ++i) {
+    const double reach = std::fabs(static_cast<double>(edges[i].c)) + std::fabs(static_cast<double>(edges[i].dcdy)) * y1 +
+                         std::fabs(static_cast<double>(edges[i].dcdx)) * x1;
+    if (!(reach < 0x1p62)) return false;
+  }
   return true;
 }
 
 // Whether the pixel centre (x, y) is inside every edge, as the fragment stage's lane test decides
-// (value > 0), or false when a value might not fit 64 bits.
+// (value > 0); the values fit 64 bits (edgeValuesFit).
 template <int E>
 inline bool insideEveryEdge(const EdgeFunction (&edges)[E], int x, int y) {
   for (int i = 0; i < E; ++i) {
-    const double reach = std::fabs(static_cast<double>(edges[i].c)) + std::fabs(static_cast<double>(edges[i].dcdy)) * y +
-                         std::fabs(static_cast<double>(edges[i].dcdx)) * x;
-    if (!(reach < 0x1p62)) return false;
     if (edges[i].c + edges[i].dcdy * y - edges[i].dcdx * x <= 0) return false;
   }
   return true;
+}
+
+// Whether a fragment could fail `op` against every stored key in `tile`: with an open bound on
+// the side the op compares against, none can.
+inline bool tileCanRejectAll(CompareOp op, const DepthTileRange& tile) {
+  switch (op) {
+    case CompareOp::Never: return true;
+    case CompareOp::Less:
+    case CompareOp::LessOrEqual: return tile.hi < kNoDepthBound;
+    case CompareOp::Greater:
+    case CompareOp::GreaterOrEqual: return tile.lo > -kNoDepthBound;
+    case CompareOp::Equal: return tile.hi < kNoDepthBound || tile.lo > -kNoDepthBound;
+    case CompareOp::NotEqual:
+    case CompareOp::Always: return false;
+  }
+  return false;
 }
 
 // One fragment stage's view of the tiles (a band's, or the whole draw's with one thread).
@@ -185,6 +203,7 @@ class DepthTiles {
       walk(box);
       return;
     }
+    const bool fits = narrows_ && edgeValuesFit(edges, box.x1, box.y1);  // so a whole tile may be found
     const int tx0 = box.x0 / kDepthTileSize, tx1 = box.x1 / kDepthTileSize;
     const int ty0 = box.y0 / kDepthTileSize, ty1 = box.y1 / kDepthTileSize;
     int walkedFrom = box.y0;  // rows from here down to the current tile row not walked yet, none of them skipped
@@ -197,17 +216,25 @@ class DepthTiles {
         const PixelRect tile{tx * kDepthTileSize, ty * kDepthTileSize, std::min(width_, (tx + 1) * kDepthTileSize) - 1,
                              std::min(height_, (ty + 1) * kDepthTileSize) - 1};
         const PixelRect part = intersect(tile, box);
-        float lo, hi;
-        if (!depthKeyBounds<Format>(depth, depthOffset, range_, part, lo, hi)) continue;
         DepthTileRange& range = tiles_[static_cast<std::size_t>(ty) * static_cast<std::size_t>(perRow_) +
                                        static_cast<std::size_t>(tx)];
-        if (skips_ && everyFragmentFails(op_, lo, hi, range)) {
-          skipped_.set(static_cast<std::size_t>(tx - tx0));
-          anySkipped = true;
-        } else if (narrows_ && part.x0 == tile.x0 && part.y0 == tile.y0 && part.x1 == tile.x1 && part.y1 == tile.y1 &&
-                   insideEveryEdge(edges, tile.x0, tile.y0) && insideEveryEdge(edges, tile.x1, tile.y0) &&
-                   insideEveryEdge(edges, tile.x0, tile.y1) && insideEveryEdge(edges, tile.x1, tile.y1)) {
-          range = narrowedByWholeTile(op_, lo, hi, range);  // convex: its four corners inside, all of it
+        float lo = -kNoDepthBound, hi = kNoDepthBound;  // set by depthKeyBounds before any use
+        bool bounded = false;
+        if (skips_ && tileCanRejectAll(op_, range)) {
+          bounded = depthKeyBounds<Format>(depth, depthOffset, range_, part, lo, hi);
+          if (bounded && everyFragmentFails(op_, lo, hi, range)) {
+            skipped_.set(static_cast<std::size_t>(tx - tx0));
+            anySkipped = true;
+            continue;
+          }
+        }
+        // Convex: its four corners inside every edge, the whole tile is.
+        const bool whole = fits && part.x0 == tile.x0 && part.y0 == tile.y0 && part.x1 == tile.x1 &&
+                           part.y1 == tile.y1 && insideEveryEdge(edges, tile.x0, tile.y0) &&
+                           insideEveryEdge(edges, tile.x1, tile.y0) && insideEveryEdge(edges, tile.x0, tile.y1) &&
+                           insideEveryEdge(edges, tile.x1, tile.y1);
+        if (whole && (bounded || depthKeyBounds<Format>(depth, depthOffset, range_, part, lo, hi))) {
+          range = narrowedByWholeTile(op_, lo, hi, range);
         }
       }
       if (!anySkipped) continue;  // walked with the rows after it

@@ -204,10 +204,13 @@ class FastFragmentStage {
     // helpers (shaded for the derivatives, never written).
     const PixelRect keep = box;
     const PixelRect walked = kQuads ? PixelRect{box.x0 & ~1, box.y0 & ~1, box.x1, box.y1} : box;
-    std::int64_t rowStart[E], stepX[E];
+    // Locals, not `edges`: the block's vector stores may alias any memory a reference reaches, so
+    // values read through `edges` would be read again after every block.
+    std::int64_t rowStart[E], stepX[E], stepY[E];
     for (int i = 0; i < E; ++i) {
       rowStart[i] = edges[i].c + edges[i].dcdy * walked.y0 - edges[i].dcdx * walked.x0;
       stepX[i] = kBatchWidth * edges[i].dcdx;
+      stepY[i] = kBatchHeight * edges[i].dcdy;
     }
     const bool corners = cornersDecide(edges, walked);
     // Along a row the E edge values at the block's lane 0 are the lanes of one vector, which a
@@ -235,9 +238,12 @@ class FastFragmentStage {
       alignas(32) std::int64_t value[4];
       for (std::int64_t k = first; k <= last; ++k) {
         const int px = walked.x0 + static_cast<int>(k) * kBatchWidth;
-        const int columns = std::min(kBatchWidth, keep.x1 - px + 1);
-        const unsigned left = px < keep.x0 ? (1u << (keep.x0 - px)) - 1u : 0u;  // helper columns left of the box
-        const unsigned inBox = rows & ((((1u << columns) - 1u) & ~left) * 0x11u);
+        unsigned inBox = rows;
+        if (px < keep.x0 || px + kBatchWidth - 1 > keep.x1) {  // a block at the box's left or right edge
+          const int columns = std::min(kBatchWidth, keep.x1 - px + 1);
+          const unsigned left = px < keep.x0 ? (1u << (keep.x0 - px)) - 1u : 0u;  // helper columns left of the box
+          inBox = rows & ((((1u << columns) - 1u) & ~left) * 0x11u);
+        }
         bool inside = k >= innerFirst && k <= innerLast;
         bool outside = false;
         if (corners && !cut) {
@@ -248,7 +254,7 @@ class FastFragmentStage {
         if (!outside) block(px, py, inBox, inside, reinterpret_cast<const std::int64_t(&)[E]>(value));
         values = _mm256_sub_epi64(values, stepLanes);
       }
-      for (int i = 0; i < E; ++i) rowStart[i] += kBatchHeight * edges[i].dcdy;
+      for (int i = 0; i < E; ++i) rowStart[i] += stepY[i];
     }
   }
 
