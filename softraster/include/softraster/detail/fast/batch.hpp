@@ -141,8 +141,11 @@ template <DepthFormat Format>
 }
 
 // compare(op, incoming, stored) per lane: floats for D32_SFLOAT, unsigned integers otherwise.
+// (Compiled for the fast path's target like every function here that takes or returns a vector:
+// out of line, as in the sanitizer build at -O1, a copy without it takes its vectors in memory
+// while its AVX2 callers pass them in registers.)
 template <class V>
-inline Mask compareLanes(CompareOp op, V incoming, V stored) {
+[[SOFTRASTER_FAST_TARGET]] inline Mask compareLanes(CompareOp op, V incoming, V stored) {
   switch (op) {
     case CompareOp::Never: return Mask{};
     case CompareOp::Less: return reinterpret_cast<Mask>(incoming < stored);
@@ -157,7 +160,7 @@ inline Mask compareLanes(CompareOp op, V incoming, V stored) {
 }
 
 template <DepthFormat Format>
-inline Mask depthTestPasses(CompareOp op, Words incoming, Words stored) {
+[[SOFTRASTER_FAST_TARGET]] inline Mask depthTestPasses(CompareOp op, Words incoming, Words stored) {
   if constexpr (Format == DepthFormat::D32Sfloat) {
     return compareLanes(op, reinterpret_cast<Floats>(incoming), reinterpret_cast<Floats>(stored));
   } else {
