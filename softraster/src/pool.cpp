@@ -4,12 +4,27 @@
 
 #include <chrono>
 #if defined(__x86_64__)
+#include <cpuid.h>
 #include <immintrin.h>
 #endif
 
 namespace softraster::detail {
 
-ThreadPool::ThreadPool(unsigned threads) {
+namespace {
+
+// CPUID 0x80000001, ECX bit 8: PREFETCHW (PRFCHW, 3DNowPrefetch).
+bool cpuHasPrefetchW() {
+#if defined(__x86_64__) && defined(__GNUC__)
+  unsigned eax = 0, ebx = 0, ecx = 0, edx = 0;
+  return __get_cpuid(0x80000001u, &eax, &ebx, &ecx, &edx) != 0 && ((ecx >> 8) & 1u) != 0;
+#else
+  return false;
+#endif
+}
+
+}  // namespace
+
+ThreadPool::ThreadPool(unsigned threads) : prefetchesForWrite_(cpuHasPrefetchW()) {
   for (unsigned i = 1; i < threads; ++i) workers_.emplace_back([this] { work(); });
 }
 

@@ -8,7 +8,8 @@
 //     division) into the blocks wholly outside an edge (skipped) and those wholly inside every
 //     edge (every lane covered, no per-lane test); other blocks take their coverage from the
 //     64-bit edge functions at their eight pixel centres;
-//   - the depth state (test, compare op, write) is copied once per triangle and branched on per
+//   - what a block reads of the target (pointers, width, the depth state, flags) is copied into a
+//     local once per primitive (a block's stores could alias it where it lies) and branched on per
 //     block, branches the predictor learns (one block loop per stage, not one per state, keeps a
 //     shader's compile time down);
 //     a block wholly inside the box reads and writes with plain loads and stores;
@@ -119,6 +120,42 @@ class FastFragmentStage {
     std::array<BatchPlane, (N == 0 ? 1 : N)> varyings;
     bool frontFacing;  // the stencil face
   };
+
+  // What a block reads of target_, copied into a local of the walk: a block's vector stores may
+  // alias anything reached through a reference, so a field read through target_ (and the
+  // reference itself) would be loaded again after every block.
+  struct BlockTarget {
+    DepthState depth;
+    DepthRange depthRange;
+    std::size_t width;
+    std::uint32_t* colour;  // packed RGBA8, one word per pixel (or per sample)
+    std::uint32_t* depthStorage;
+    bool inverseZ;
+    bool stencil;           // the stencil test is on
+    bool readsDestination;  // blending, or a partial write mask
+    bool shadesFirst;       // shaded before the tests: the built-ins, or alpha to coverage
+    bool alphaToOne;
+    bool swapRedBlue;
+    unsigned sampleMask;            // 4x MSAA: bit s keeps sample s
+    int partialColumn, partialRow;  // 4x MSAA: MsaaRegionEdges's
+  };
+
+  BlockTarget blockTarget() const {
+    return {.depth = target_.depth,
+            .depthRange = target_.depthRange,
+            .width = target_.width,
+            .colour = colour_,
+            .depthStorage = target_.depthStorage,
+            .inverseZ = target_.inverseZ,
+            .stencil = target_.stencil.enable,
+            .readsDestination = target_.blend.readsDestination,
+            .shadesFirst = kBuiltins || target_.coverage.shadesFirst(),
+            .alphaToOne = target_.coverage.alphaToOne,
+            .swapRedBlue = target_.blend.swapRedBlue,
+            .sampleMask = target_.coverage.sampleMask,
+            .partialColumn = target_.msaa.partialColumn,
+            .partialRow = target_.msaa.partialRow};
+  }
 
   static constexpr bool kAnyPerspective = [] {
     for (const Interpolation i : kInterpolation) {
@@ -262,7 +299,7 @@ class FastFragmentStage {
   [[SOFTRASTER_FAST_TARGET, SOFTRASTER_FLATTEN, gnu::noinline]] void walk(const EdgeFunction (&edges)[E], const PixelRect& box,
                                                                    const BlockPlanes& planes) const {
     const BlockEdges<E> lanes = blockEdges(edges);
-    const DepthState depthState = target_.depth;  // a local, which no store to the framebuffer can change
+    const BlockTarget to = blockTarget();  // a local, which no store to the framebuffer can change
     if constexpr (!kQuads) {
       // A box of one block (most triangles of a dense mesh): its lanes tested as walkBlocks tests
       // a block it cannot decide at its corners, without setting up the walk.
@@ -272,7 +309,7 @@ class FastFragmentStage {
         const unsigned columns = (1u << (box.x1 - box.x0 + 1)) - 1u;
         const unsigned inBox = columns * (box.y1 > box.y0 ? 0x11u : 0x01u);
         const unsigned covered = insideBits(lanes, value) & inBox;
-        if (covered != 0) shadeBlock(box.x0, box.y0, covered, inBox == 0xffu, planes, depthState);
+        if (covered != 0) shadeBlock(box.x0, box.y0, covered, inBox == 0xffu, planes, to);
         return;
       }
     }
@@ -285,7 +322,7 @@ class FastFragmentStage {
     walkBlocks(edges, box, lowest, highest,
                [&](int px, int py, unsigned inBox, bool inside, const std::int64_t (&value)[E]) {
                  const unsigned covered = inside ? inBox : insideBits(lanes, value) & inBox;
-                 if (covered != 0) shadeBlock(px, py, covered, inBox == 0xffu, planes, depthState);
+                 if (covered != 0) shadeBlock(px, py, covered, inBox == 0xffu, planes, to);
                });
   }
 
@@ -313,13 +350,13 @@ class FastFragmentStage {
   // Depth test, shading and writes of the lanes `covered` of the block whose lane 0 is (px, py);
   // `whole`: all eight lanes are inside the box (so inside the image), read and written plainly.
   [[SOFTRASTER_FAST_TARGET]] void shadeBlock(int px, int py, unsigned covered, bool whole, const BlockPlanes& t,
-                                             const DepthState depthState) const {
+                                             const BlockTarget& to) const {
     const Floats fx = broadcast(static_cast<float>(px)) + kLaneX;
     const Floats fy = broadcast(static_cast<float>(py)) + kLaneY;
-    const std::size_t first = static_cast<std::size_t>(py) * target_.width + static_cast<std::size_t>(px);
+    const std::size_t first = static_cast<std::size_t>(py) * to.width + static_cast<std::size_t>(px);
     Words shaded{};
     [[maybe_unused]] Floats fragDepth{};
-    const bool shadedFirst = kBuiltins || target_.coverage.shadesFirst();
+    const bool shadedFirst = to.shadesFirst;
     if (shadedFirst) {  // discarded lanes, and those alpha to coverage drops, test and write nothing (as the scalar stage)
       std::uint32_t kept = 0xffu;
       shaded = shadeFirst<1>(t, fx, fy, fx, fy, kept, fragDepth);
@@ -329,28 +366,28 @@ class FastFragmentStage {
     Words stored{}, current{};
     Mask passes = ~Mask{};
     const unsigned rasterized = covered;  // the stencil is tested and updated for all of them
-    if (depthState.testEnable) {
-      if (depthState.compareOp != CompareOp::Always || depthState.writeEnable) {
-        current = whole ? loadFullBlock(target_.depthStorage + first, target_.width)
-                        : loadBlock(target_.depthStorage + first, target_.width, covered);
+    if (to.depth.testEnable) {
+      if (to.depth.compareOp != CompareOp::Always || to.depth.writeEnable) {
+        current = whole ? loadFullBlock(to.depthStorage + first, to.width)
+                        : loadBlock(to.depthStorage + first, to.width, covered);
       }
-      if (target_.inverseZ) {  // the course's 1/z buffer: larger is nearer, so compare the other way round
+      if (to.inverseZ) {  // the course's 1/z buffer: larger is nearer, so compare the other way round
         stored = reinterpret_cast<Words>(evaluatePlane(t.oneOverW, fx, fy));
-        passes = depthTestPasses<Format>(depthState.compareOp, current, stored);
+        passes = depthTestPasses<Format>(to.depth.compareOp, current, stored);
       } else {
         Floats z = fragDepth;
         if constexpr (!kWritesDepth) z = evaluatePlane(t.depth, fx, fy) + t.depthOffset;
-        stored = depthToStorage<Format>(clampDepth(z, target_.depthRange));
-        passes = depthTestPasses<Format>(depthState.compareOp, stored, current);
+        stored = depthToStorage<Format>(clampDepth(z, to.depthRange));
+        passes = depthTestPasses<Format>(to.depth.compareOp, stored, current);
       }
-      if (depthState.compareOp != CompareOp::Always) {
+      if (to.depth.compareOp != CompareOp::Always) {
         covered &= maskBits(passes);
-        if (covered == 0 && !target_.stencil.enable) return;
+        if (covered == 0 && !to.stencil) return;
       }
     }
-    if (target_.stencil.enable) {
+    if (to.stencil) {
       const StencilFace& face = target_.stencil.face(t.frontFacing);
-      const std::size_t width = target_.width;
+      const std::size_t width = to.width;
       const auto offset = [width](int lane) { return static_cast<std::size_t>(lane / 4) * width + static_cast<std::size_t>(lane % 4); };
       std::uint8_t* at = target_.stencilStorage + first;
       const Words s = loadStencil(at, rasterized, offset);
@@ -361,20 +398,20 @@ class FastFragmentStage {
     }
     Words colour = shaded;
     if constexpr (!kBuiltins) {  // (a shader with the built-ins is always shaded first)
-      if (!shadedFirst) colour = shadeLanes(t, fx, fy);
+      if (!shadedFirst) colour = shadeLanes(t, fx, fy, to);
     }
-    if (target_.blend.readsDestination) colour = blendColour(colour, loadBlock(colour_ + first, target_.width, covered), target_.blend);
+    if (to.readsDestination) colour = blendColour(colour, loadBlock(to.colour + first, to.width, covered), target_.blend);
     if (covered == 0xffu) {
-      storeFullBlock(colour_ + first, target_.width, colour);
+      storeFullBlock(to.colour + first, to.width, colour);
     } else {
-      storeBlock(colour_ + first, target_.width, covered, colour);
+      storeBlock(to.colour + first, to.width, covered, colour);
     }
-    if (depthState.testEnable && depthState.writeEnable) {
+    if (to.depth.testEnable && to.depth.writeEnable) {
       if (whole) {  // lanes that fail keep the value just read: one plain store
         const Words written = reinterpret_cast<Words>(laneMask(covered));
-        storeFullBlock(target_.depthStorage + first, target_.width, (stored & written) | (current & ~written));
+        storeFullBlock(to.depthStorage + first, to.width, (stored & written) | (current & ~written));
       } else {
-        storeBlock(target_.depthStorage + first, target_.width, covered, stored);
+        storeBlock(to.depthStorage + first, to.width, covered, stored);
       }
     }
   }
@@ -457,23 +494,23 @@ class FastFragmentStage {
                                                                           const PixelRect& box,
                                                                           const BlockPlanes& planes) const {
     const SampleEdges samples = sampleEdges(edges);
-    const DepthState depthState = target_.depth;  // as in walk()
+    const BlockTarget to = blockTarget();  // as in walk()
     walkBlocks(edges, box, samples.lowest, samples.highest,
                [&](int px, int py, unsigned inBox, bool inside, const std::int64_t (&value)[3]) {
                  const std::uint32_t inBoxSamples = kSpreadToSamples[inBox];
                  const std::uint32_t covered = (inside ? inBoxSamples : sampleInsideBits(samples, value) & inBoxSamples) &
-                                               allowedBlockSamples(px, py);
-                 if (covered != 0) shadeSampleBlock(px, py, covered, inBox == 0xffu, planes, depthState);
+                                               allowedBlockSamples(px, py, to);
+                 if (covered != 0) shadeSampleBlock(px, py, covered, inBox == 0xffu, planes, to);
                });
   }
 
   // The samples of the block whose lane 0 is (px, py) that lavapipe's scissor planes let through
   // (bit 4 * lane + s; MsaaRegionEdges): all but in the region's partial column and row.
-  std::uint32_t allowedBlockSamples(int px, int py) const {
-    const MsaaRegionEdges& m = target_.msaa;
-    const bool column = m.partialColumn >= px && m.partialColumn < px + kBatchWidth;
-    const bool row = m.partialRow >= py && m.partialRow < py + kBatchHeight;
+  std::uint32_t allowedBlockSamples(int px, int py, const BlockTarget& to) const {
+    const bool column = to.partialColumn >= px && to.partialColumn < px + kBatchWidth;
+    const bool row = to.partialRow >= py && to.partialRow < py + kBatchHeight;
     if (!column && !row) return ~0u;
+    const MsaaRegionEdges& m = target_.msaa;
     std::uint32_t allowed = 0;
     for (int lane = 0; lane < kBatchWidth * kBatchHeight; ++lane) {
       allowed |= m.allowedSamples(px + lane % kBatchWidth, py + lane / kBatchWidth) << (4 * lane);
@@ -484,7 +521,7 @@ class FastFragmentStage {
   // Depth test per sample, shading once per pixel and the writes of the samples `covered` (bit
   // 4 * lane + s) of the block whose lane 0 is (px, py), as the scalar shadeSamples does them.
   [[SOFTRASTER_FAST_TARGET]] void shadeSampleBlock(int px, int py, std::uint32_t covered, bool whole,
-                                                   const BlockPlanes& t, const DepthState depthState) const {
+                                                   const BlockPlanes& t, const BlockTarget& to) const {
     static constexpr Floats kSampleX = {kSamplePositions4x[0][0], kSamplePositions4x[1][0], kSamplePositions4x[2][0],
                                         kSamplePositions4x[3][0], kSamplePositions4x[0][0], kSamplePositions4x[1][0],
                                         kSamplePositions4x[2][0], kSamplePositions4x[3][0]};
@@ -492,14 +529,14 @@ class FastFragmentStage {
                                         kSamplePositions4x[3][1], kSamplePositions4x[0][1], kSamplePositions4x[1][1],
                                         kSamplePositions4x[2][1], kSamplePositions4x[3][1]};
     static constexpr Floats kHalfX = {0, 0, 0, 0, 1, 1, 1, 1};  // the pair's pixel of each lane
-    const std::size_t width = target_.width;
+    const std::size_t width = to.width;
     const std::size_t firstPixel = static_cast<std::size_t>(py) * width + static_cast<std::size_t>(px);
     const Floats x0 = broadcast(static_cast<float>(px)), y0 = broadcast(static_cast<float>(py));
     __m256i shaded{};
     [[maybe_unused]] Floats fragDepth{};
-    covered &= target_.coverage.sampleMask * 0x11111111u;  // the sample mask, on every lane's nibble
+    covered &= to.sampleMask * 0x11111111u;  // the sample mask, on every lane's nibble
     if (covered == 0) return;
-    const bool shadedFirst = kBuiltins || target_.coverage.shadesFirst();
+    const bool shadedFirst = to.shadesFirst;
     if (shadedFirst) {  // at the pixel centres; a discard drops every sample of its pixel, alpha to coverage some
       const Floats cx = (x0 + kLaneX) + broadcast(0.5f), cy = (y0 + kLaneY) + broadcast(0.5f);
       std::uint32_t kept = covered;  // gl_SampleMaskIn: each lane's covered samples
@@ -509,14 +546,14 @@ class FastFragmentStage {
     }
     std::uint32_t passed = covered;
     Words stored[4]{}, current[4]{};
-    if (depthState.testEnable) {
+    if (to.depth.testEnable) {
       passed = 0;
       for (int pair = 0; pair < 4; ++pair) {
         const unsigned bits = (covered >> (8 * pair)) & 0xffu;
         if (bits == 0) continue;
         const int row = pair >> 1, column = 2 * (pair & 1);
-        const std::uint32_t* depth = target_.depthStorage + 4 * (firstPixel + static_cast<std::size_t>(row) * width + column);
-        if (depthState.compareOp != CompareOp::Always || depthState.writeEnable) current[pair] = whole ? loadWords(depth) : loadWords(depth, bits);
+        const std::uint32_t* depth = to.depthStorage + 4 * (firstPixel + static_cast<std::size_t>(row) * width + column);
+        if (to.depth.compareOp != CompareOp::Always || to.depth.writeEnable) current[pair] = whole ? loadWords(depth) : loadWords(depth, bits);
         // The sample's position as the scalar path forms it: float(pixel) + sample offset.
         const Floats fx = (x0 + broadcast(static_cast<float>(column)) + kHalfX) + kSampleX;
         const Floats fy = (y0 + broadcast(static_cast<float>(row))) + kSampleY;
@@ -528,12 +565,12 @@ class FastFragmentStage {
         } else {
           z = evaluatePlane(t.depth, fx, fy) + t.depthOffset;
         }
-        stored[pair] = depthToStorage<Format>(clampDepth(z, target_.depthRange));
-        passed |= (bits & maskBits(depthTestPasses<Format>(depthState.compareOp, stored[pair], current[pair]))) << (8 * pair);
+        stored[pair] = depthToStorage<Format>(clampDepth(z, to.depthRange));
+        passed |= (bits & maskBits(depthTestPasses<Format>(to.depth.compareOp, stored[pair], current[pair]))) << (8 * pair);
       }
-      if (passed == 0 && !target_.stencil.enable) return;
+      if (passed == 0 && !to.stencil) return;
     }
-    if (target_.stencil.enable) {  // per sample, the depth test's result in `passed`
+    if (to.stencil) {  // per sample, the depth test's result in `passed`
       const StencilFace& face = target_.stencil.face(t.frontFacing);
       const auto offset = [](int lane) { return static_cast<std::size_t>(lane); };
       std::uint32_t stencilPassed = 0;
@@ -554,7 +591,7 @@ class FastFragmentStage {
     __m256i colour = shaded;
     if constexpr (!kBuiltins) {
       if (!shadedFirst) {
-        colour = reinterpret_cast<__m256i>(shadeLanes(t, (x0 + kLaneX) + broadcast(0.5f), (y0 + kLaneY) + broadcast(0.5f)));
+        colour = reinterpret_cast<__m256i>(shadeLanes(t, (x0 + kLaneX) + broadcast(0.5f), (y0 + kLaneY) + broadcast(0.5f), to));
       }
     }
     for (int pair = 0; pair < 4; ++pair) {
@@ -565,14 +602,14 @@ class FastFragmentStage {
       const int lane = 4 * row + column;  // the shader's lane of the pair's first pixel
       Words c = reinterpret_cast<Words>(
           _mm256_permutevar8x32_epi32(colour, _mm256_setr_epi32(lane, lane, lane, lane, lane + 1, lane + 1, lane + 1, lane + 1)));
-      if (target_.blend.readsDestination) c = blendColour(c, loadWords(colour_ + first, bits), target_.blend);
-      storeWords(colour_ + first, bits, c);
-      if (depthState.testEnable && depthState.writeEnable) {
+      if (to.readsDestination) c = blendColour(c, loadWords(to.colour + first, bits), target_.blend);
+      storeWords(to.colour + first, bits, c);
+      if (to.depth.testEnable && to.depth.writeEnable) {
         if (whole) {  // samples that fail keep the value just read: one plain store
           const Words written = reinterpret_cast<Words>(laneMask(bits));
-          storeWords(target_.depthStorage + first, 0xffu, (stored[pair] & written) | (current[pair] & ~written));
+          storeWords(to.depthStorage + first, 0xffu, (stored[pair] & written) | (current[pair] & ~written));
         } else {
-          storeWords(target_.depthStorage + first, bits, stored[pair]);
+          storeWords(to.depthStorage + first, bits, stored[pair]);
         }
       }
     }
@@ -580,12 +617,12 @@ class FastFragmentStage {
 
   // The lanes' packed colour, their varyings at (fx, fy), with alpha to one (the path where
   // nothing is shaded before the tests).
-  [[SOFTRASTER_FAST_TARGET]] Words shadeLanes(const BlockPlanes& t, Floats fx, Floats fy) const {
+  [[SOFTRASTER_FAST_TARGET]] Words shadeLanes(const BlockPlanes& t, Floats fx, Floats fy, const BlockTarget& to) const {
     std::array<FloatBatch, (N == 0 ? 1 : N)> varyings{};
     if constexpr (N > 0) interpolateBlock(std::make_index_sequence<N>{}, t, fx, fy, varyings.data());
     Vec4T<FloatBatch> c = Shader::template fragment<FloatBatch>(uniforms_, varyings.data());
-    if (target_.coverage.alphaToOne) c.w = FloatBatch(1.0f);
-    return packColour(c, target_.blend.swapRedBlue);
+    if (to.alphaToOne) c.w = FloatBatch(1.0f);
+    return packColour(c, to.swapRedBlue);
   }
 
   // The lanes shaded before the tests (a shader with the fragment built-ins, or alpha to

@@ -30,6 +30,9 @@ class ThreadPool {
   ThreadPool& operator=(const ThreadPool&) = delete;
 
   unsigned threads() const { return static_cast<unsigned>(workers_.size()) + 1; }
+  // Whether the CPU has PREFETCHW (fast/bands.hpp asks for its records' lines with it), asked
+  // once, when the pool is made.
+  bool prefetchesForWrite() const { return prefetchesForWrite_; }
 
   // Runs task(i) for i in [0, count); returns when every call has returned. Calls from several
   // threads take turns; a task must not call run() itself.
@@ -45,6 +48,7 @@ class ThreadPool {
 
   static constexpr long kSpinNanoseconds = 50'000;
 
+  bool prefetchesForWrite_;
   std::vector<std::thread> workers_;
   std::mutex runMutex_;
   std::mutex mutex_;
