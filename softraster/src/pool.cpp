@@ -1,5 +1,5 @@
 // ThreadPool (detail/fast/pool.hpp): workers spin briefly, then sleep on a condition variable
-// between batches.
+// between batches; the CPUID read behind prefetchesForWrite().
 #include <softraster/detail/fast/pool.hpp>
 
 #include <chrono>

@@ -177,6 +177,8 @@ class BandQueue {
   }
 
  private:
+  static constexpr std::size_t kRecordsAhead = 8;  // how far ahead a recorder asks for a record's lines
+
   template <int E>
   void record(unsigned list, Kind kind, const EdgeFunction (&edges)[E], const PixelRect& bounds,
               const TriangleInterpolants<N>& t, unsigned regionPlanes) {
@@ -195,8 +197,6 @@ class BandQueue {
     const int first = floorDiv(box.y0, kBandRows) - firstBand_, last = floorDiv(box.y1, kBandRows) - firstBand_;
     for (int b = first; b <= last; ++b) l.bins[static_cast<std::size_t>(b)].push_back(index);
   }
-
-  static constexpr std::size_t kRecordsAhead = 8;
 
   void flush() {
     const std::optional<Framebuffer::PendingClear> clear = framebuffer_.takePendingClear();

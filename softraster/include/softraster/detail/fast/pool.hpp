@@ -8,6 +8,8 @@
 // front end, then its bands, then the next round's front end), and waking a sleeping thread cost
 // more than a round of a million-triangle draw gained from it (a futex wake and a reschedule,
 // tens of microseconds on a virtual machine); a wait longer than the spin sleeps as before.
+// The pool also says whether the CPU has PREFETCHW (CPUID, read once when the pool is made), for
+// the band queue's records.
 // Deliberately no futures, no priorities, no work stealing: one batch of tasks at a time.
 #pragma once
 
