@@ -305,9 +305,12 @@ class Context {
   void drawWithFormat(const PipelineState& state, const typename Shader::Uniforms& uniforms,
                       std::span<const typename Shader::Vertex> vertices, std::span<const std::uint32_t> indices,
                       Framebuffer& framebuffer, detail::DrawScratch& scratch) const {
-    // A shader with the fragment built-ins is drawn by the exact method whatever the method.
+    // A shader with the fragment built-ins is drawn by the exact method whatever the method. A
+    // course method draws filled triangles; its lines, points and polygon modes line and point
+    // are the exact method's, drawn by the scalar path below (as Method::ExactScalar draws them).
     if constexpr (!UsesFragmentBuiltins<Shader>) {
-      if (isCourseMethod(options_.method)) {
+      if (isCourseMethod(options_.method) && detail::isTriangleTopology(state.topology) &&
+          state.rasterization.polygonMode == PolygonMode::Fill) {
         if (options_.fusedMultiplyAdd) {
           drawCourseFused<Shader, Format>(state, uniforms, vertices, indices, framebuffer, scratch);
         } else {

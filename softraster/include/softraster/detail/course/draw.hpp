@@ -9,9 +9,9 @@
 // three Pixels to the chosen method's two calls, setup() and draw(), whose pixels go to the
 // shared per-pixel end (CourseFragments: stencil and depth tests and writes, shading, blending,
 // write mask).
-// Lines and points (topologies and polygon modes line and point) are not the course's: the loop
-// draws them with the exact method's line and point code and scalar fragment stage, so they are
-// the same pixels as Method::ExactScalar's.
+// Lines and points (topologies and polygon modes line and point) are not the course's: the
+// Context draws them by Method::ExactScalar's path (pipeline.hpp), so they are its pixels, and a
+// course draw compiles no line or point code.
 // Deliberately absent: threads (a course method draws on the calling thread), SIMD, any fill rule
 // or snapping (each method's header says what it does and does not do).
 #pragma once

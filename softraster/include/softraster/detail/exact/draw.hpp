@@ -19,7 +19,9 @@
 // The same loop serves the scalar path and the fast path: only the fragment stage differs. It
 // serves the course's methods too (course/draw.hpp): with Course a course::CourseTriangles, every
 // filled triangle goes to it after the front end, instead of snapping, setup and the fragment
-// stage; lines and points still take the exact code.
+// stage. Such a draw is only ever one of filled triangles: the Context draws lines, points and
+// polygon modes line and point by the scalar exact path for a course method, so a course
+// instantiation compiles no line or point code (one copy less of it per shader and format).
 // Primitive restart cuts the indices into runs, each drawn as a draw of its own (its own vertex
 // batches); provoking vertex last changes assembly, clipping's fan, setup's reordering of
 // clockwise triangles and which vertex gives flat varyings (the stages say how).
@@ -51,6 +53,7 @@
 #include <softraster/state.hpp>
 
 #include <algorithm>
+#include <cassert>
 #include <cstdint>
 #include <span>
 #include <type_traits>
@@ -99,11 +102,15 @@ class ExactDraw {
   }
 
   // Draws vertices[indices[k]] in order, assembled by the state's topology.
+  // A course method's draw must be one of filled triangles (the top comment).
   void run(std::span<const typename Shader::Vertex> vertices, std::span<const std::uint32_t> indices) {
     if (region_.empty()) return;
+    if constexpr (kCourse) assert(isTriangleTopology(state_.topology) && rs_.polygonMode == PolygonMode::Fill);
     shadeVertices(vertices);
     forEachRestartRun(indices, state_.primitiveRestartEnable, [&](std::span<const std::uint32_t> run) {
-      if (state_.topology == Topology::PointList) {
+      if constexpr (kCourse) {
+        drawTriangles(run);
+      } else if (state_.topology == Topology::PointList) {
         drawPoints(run);
       } else if (isLineTopology(state_.topology)) {
         drawLines(run);
@@ -356,10 +363,16 @@ class ExactDraw {
   // lines start the stipple counter at 0; the fan's later triangles continue it.
   void drawCulled(Worker& worker, const Vertex& a, const Vertex& b, const Vertex& c, unsigned edgeFlags,
                   bool resetStipple) {
-    if (rs_.polygonMode == PolygonMode::Fill) {
+    if (kCourse || rs_.polygonMode == PolygonMode::Fill) {
       drawTriangle(worker, a, b, c);
       return;
     }
+    if constexpr (!kCourse) drawUnfilled(worker, a, b, c, edgeFlags, resetStipple);
+  }
+
+  // A triangle of polygon mode line or point: its edges or its vertices.
+  void drawUnfilled(Worker& worker, const Vertex& a, const Vertex& b, const Vertex& c, unsigned edgeFlags,
+                    bool resetStipple) {
     Vertex biased[3] = {a, b, c};
     if (rs_.depthBias.enable) offsetUnfilledTriangle(biased[0], biased[1], biased[2], rs_.depthBias, Format);
     // lavapipe's unfilled stage passes the polygon's facing on only to a shader that reads
