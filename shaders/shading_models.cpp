@@ -15,6 +15,8 @@ std::span<const ShadingModel> texturedModels();
 std::span<const ShadingModel> shadowedModels();
 std::span<const ShadingModel> depthModels();
 std::span<const ShadingModel> builtinsModels();
+std::span<const ShadingModel> builtinsSampleModels();
+std::span<const ShadingModel> varyingsModels();
 std::span<const ShadingModel> colourOutputsModels();
 }  // namespace rows
 
@@ -23,7 +25,8 @@ std::span<const ShadingModel> shadingModels() {
     std::vector<ShadingModel> all;
     for (auto family : {rows::vertexColorModels(), rows::courseLightModels(), rows::phongModels(),
                         rows::blinnPhongModels(), rows::texturedModels(), rows::shadowedModels(),
-                        rows::depthModels(), rows::builtinsModels(), rows::colourOutputsModels()}) {
+                        rows::depthModels(), rows::builtinsModels(), rows::builtinsSampleModels(),
+                        rows::varyingsModels(), rows::colourOutputsModels()}) {
       all.insert(all.end(), family.begin(), family.end());
     }
     return all;
