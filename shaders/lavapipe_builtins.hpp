@@ -24,8 +24,12 @@
 
 #include <bit>
 #include <cmath>
+#include <cstddef>
 #include <cstdint>
+#include <iterator>
 #include <limits>
+#include <type_traits>
+#include <utility>
 
 namespace shaders::glsl {
 
@@ -115,24 +119,36 @@ namespace detail {
 
 // lp_build_polynomial: x2 = x*x; even and odd coefficients each walked from the highest index
 // down, the first taken as it is, each later one fmuladd(x2, value, coeff); then
-// fmuladd(odd, x, even). Coefficients are rounded to float.
-template <class F, std::size_t N>
-F polynomial(F x, const double (&coefficients)[N]) {
+// fmuladd(odd, x, even). Coefficients are rounded to float. The table is a template argument so
+// the walk is unrolled with every coefficient a constant: a loop over a reference to the table
+// read and converted the doubles at run time in the pixel loop, a third of a lit quad's time.
+template <const auto& Coefficients, class F>
+F polynomial(F x) {
   using std::fma;  // fma(float...) or FloatBatch's, found by argument-dependent lookup
+  constexpr std::size_t kCount = std::size(Coefficients);
+  static_assert(kCount >= 1);
+  // Coefficients[i] as a float constant.
+  const auto coefficient = []<std::size_t I>(std::integral_constant<std::size_t, I>) {
+    constexpr float kValue = static_cast<float>(Coefficients[I]);
+    return F(kValue);
+  };
+  // value, then fmuladd(x2, value, Coefficients[top - 2k]) for k = 1 .. Steps.
+  const auto walkDown = [&]<std::size_t Top, std::size_t... K>(F value, const F& x2, std::index_sequence<K...>) {
+    ((value = fma(x2, value, coefficient(std::integral_constant<std::size_t, Top - 2 * (K + 1)>{}))), ...);
+    return value;
+  };
   const F x2 = x * x;
-  F even = 0, odd = 0;
-  bool haveEven = false, haveOdd = false;
-  for (std::size_t i = N; i-- > 0;) {
-    const auto c = F(static_cast<float>(coefficients[i]));
-    if (i % 2 == 0) {
-      even = haveEven ? fma(x2, even, c) : c;
-      haveEven = true;
-    } else {
-      odd = haveOdd ? fma(x2, odd, c) : c;
-      haveOdd = true;
-    }
+  constexpr std::size_t kTopEven = (kCount - 1) % 2 == 0 ? kCount - 1 : kCount - 2;
+  const F even = walkDown.template operator()<kTopEven>(coefficient(std::integral_constant<std::size_t, kTopEven>{}), x2,
+                                                        std::make_index_sequence<kTopEven / 2>{});
+  if constexpr (kCount == 1) {
+    return even;
+  } else {
+    constexpr std::size_t kTopOdd = (kCount - 1) % 2 == 1 ? kCount - 1 : kCount - 2;
+    const F odd = walkDown.template operator()<kTopOdd>(coefficient(std::integral_constant<std::size_t, kTopOdd>{}), x2,
+                                                        std::make_index_sequence<(kTopOdd - 1) / 2>{});
+    return fma(odd, x, even);
   }
-  return haveOdd ? fma(odd, x, even) : even;
 }
 
 // lp_build_exp2_polynomial, EXP_POLY_DEGREE 5: 2^x on [0, 1).
@@ -183,7 +199,7 @@ inline float exp2(float x) {
   const float fraction = x - whole;
   const std::uint32_t exponent =
       (static_cast<std::uint32_t>(detail::truncateToInt(whole)) + 127u) << 23;  // integer wrap as in the JIT
-  return std::bit_cast<float>(exponent) * detail::polynomial(fraction, detail::kExp2Polynomial);
+  return std::bit_cast<float>(exponent) * detail::polynomial<detail::kExp2Polynomial>(fraction);
 }
 
 inline float log2Safe(float x) {
@@ -192,7 +208,7 @@ inline float log2Safe(float x) {
   const float mantissa = std::bit_cast<float>((bits & 0x007fffffu) | 0x3f800000u);
   const float y = (mantissa - 1.0f) / (mantissa + 1.0f);
   const float z = y * y;
-  float result = std::fma(y, detail::polynomial(z, detail::kLog2Polynomial), exponent);
+  float result = std::fma(y, detail::polynomial<detail::kLog2Polynomial>(z), exponent);
   if (x >= std::numeric_limits<float>::infinity()) result = std::numeric_limits<float>::infinity();
   if (x == 0.0f) result = -std::numeric_limits<float>::infinity();
   if (x < 0.0f) result = std::bit_cast<float>(0x7fc00000u);
@@ -213,7 +229,7 @@ inline softraster::FloatBatch exp2(softraster::FloatBatch x) {
   const FloatBatch whole = softraster::floor(x);
   const FloatBatch fraction = x - whole;
   const detail::BitLanes exponent = (reinterpret_cast<detail::BitLanes>(detail::truncateToInt(whole)) + 127u) << 23;
-  return detail::fromBits(exponent) * detail::polynomial(fraction, detail::kExp2Polynomial);
+  return detail::fromBits(exponent) * detail::polynomial<detail::kExp2Polynomial>(fraction);
 }
 
 inline softraster::FloatBatch log2Safe(softraster::FloatBatch x) {
@@ -224,7 +240,7 @@ inline softraster::FloatBatch log2Safe(softraster::FloatBatch x) {
   const FloatBatch mantissa = detail::fromBits((bits & 0x007fffffu) | 0x3f800000u);
   const FloatBatch y = (mantissa - 1.0f) / (mantissa + 1.0f);
   const FloatBatch z = y * y;
-  FloatBatch result = softraster::fma(y, detail::polynomial(z, detail::kLog2Polynomial), exponent);
+  FloatBatch result = softraster::fma(y, detail::polynomial<detail::kLog2Polynomial>(z), exponent);
   const FloatBatch::Native v = x.native();
   result = detail::select(v >= std::numeric_limits<float>::infinity(), FloatBatch(std::numeric_limits<float>::infinity()), result);
   result = detail::select(v == 0.0f, FloatBatch(-std::numeric_limits<float>::infinity()), result);
