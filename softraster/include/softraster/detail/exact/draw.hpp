@@ -363,11 +363,13 @@ class ExactDraw {
   // lines start the stipple counter at 0; the fan's later triangles continue it.
   void drawCulled(Worker& worker, const Vertex& a, const Vertex& b, const Vertex& c, unsigned edgeFlags,
                   bool resetStipple) {
-    if (kCourse || rs_.polygonMode == PolygonMode::Fill) {
-      drawTriangle(worker, a, b, c);
-      return;
+    if constexpr (!kCourse) {  // a course method draws filled triangles only (run())
+      if (rs_.polygonMode != PolygonMode::Fill) {
+        drawUnfilled(worker, a, b, c, edgeFlags, resetStipple);
+        return;
+      }
     }
-    if constexpr (!kCourse) drawUnfilled(worker, a, b, c, edgeFlags, resetStipple);
+    drawTriangle(worker, a, b, c);
   }
 
   // A triangle of polygon mode line or point: its edges or its vertices.
