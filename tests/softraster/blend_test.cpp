@@ -1,6 +1,7 @@
 // Blending on RGBA8: the 8-bit multiply is exact, the scalar stage's arithmetic on known values,
 // every logic op on known bytes, and the fast path's SIMD blend is the scalar one byte for byte
-// for every factor, op, logic op and mask.
+// for every factor, op, logic op and mask; so is its packing of float colours into RGBA8 (and
+// BGRA8) for every class of float, NaN and infinities included.
 #include <softraster/detail/fast/batch.hpp>
 #include <softraster/detail/fragment/colour.hpp>
 #include <softraster/state.hpp>
@@ -8,8 +9,12 @@
 #include <gtest/gtest.h>
 
 #include <array>
+#include <bit>
+#include <cmath>
 #include <cstdint>
+#include <limits>
 #include <random>
+#include <vector>
 
 namespace {
 
@@ -135,7 +140,58 @@ namespace {
   fast::storeBlock(out, 4, 0xffu, fast::blendColour(s, d, blend));
 }
 
+// The fast path's packing of eight lanes of channels (channels[c][lane]).
+[[SOFTRASTER_FAST_TARGET]] void fastPack(const float (&channels)[4][8], bool swapRedBlue, std::uint32_t* out) {
+  namespace fast = softraster::detail::fast;
+  softraster::Vec4T<softraster::FloatBatch> c;
+  c.x = softraster::FloatBatch::load(channels[0]);
+  c.y = softraster::FloatBatch::load(channels[1]);
+  c.z = softraster::FloatBatch::load(channels[2]);
+  c.w = softraster::FloatBatch::load(channels[3]);
+  fast::storeBlock(out, 4, 0xffu, fast::packColour(c, swapRedBlue));
+}
+
 }  // namespace
+
+// packColour leaves the clamp below 0 to saturating packs: NaN, -inf, -0, negatives tiny and huge,
+// the rounding ties around every byte, values just over 1, +inf and random bit patterns of every
+// exponent must all give unorm8FromFloat's byte, in RGBA8 and BGRA8 order.
+TEST(Blend, FastPathPacksColoursAsTheScalarConversion) {
+  if (!softraster::detail::fast::cpuRunsFastPath()) GTEST_SKIP() << "no AVX2 and FMA";
+  constexpr float kInf = std::numeric_limits<float>::infinity();
+  std::vector<float> values = {std::numeric_limits<float>::quiet_NaN(), -std::numeric_limits<float>::quiet_NaN(),
+                               kInf, -kInf, 0.0f, -0.0f, 1.0f, -1.0f, std::nextafter(1.0f, 2.0f), 2.0f, 1e30f, -1e30f,
+                               std::numeric_limits<float>::denorm_min(), -std::numeric_limits<float>::denorm_min(),
+                               -0.5f / 255.0f, std::nextafter(-0.5f / 255.0f, 0.0f), std::nextafter(-0.5f / 255.0f, -1.0f),
+                               -1.5f / 255.0f, 4294967296.0f, -2147483648.0f};
+  for (int k = 0; k <= 255; ++k) {  // each byte's tie and its neighbours
+    const float tie = (static_cast<float>(k) + 0.5f) / 255.0f;
+    values.insert(values.end(), {tie, std::nextafter(tie, 0.0f), std::nextafter(tie, 1.0f), static_cast<float>(k) / 255.0f});
+  }
+  std::mt19937 random(17);
+  for (int i = 0; i < 20000; ++i) values.push_back(std::bit_cast<float>(static_cast<std::uint32_t>(random())));
+  for (int i = 0; i < 20000; ++i) values.push_back(std::uniform_real_distribution<float>(-0.1f, 1.1f)(random));
+  float channels[4][8];
+  std::uint32_t out[8];
+  for (std::size_t first = 0; first < values.size(); first += 8) {
+    for (int c = 0; c < 4; ++c) {
+      for (int lane = 0; lane < 8; ++lane) {  // each channel sees every value, in a different lane
+        channels[c][lane] = values[(first + static_cast<std::size_t>(lane) + 97 * static_cast<std::size_t>(c)) % values.size()];
+      }
+    }
+    for (const bool swap : {false, true}) {
+      fastPack(channels, swap, out);
+      for (int lane = 0; lane < 8; ++lane) {
+        for (int c = 0; c < 4; ++c) {
+          const int stored = swap && c != 1 && c != 3 ? 2 - c : c;  // BGRA8 swaps red and blue
+          ASSERT_EQ(static_cast<std::uint8_t>(out[lane] >> (8 * stored)), softraster::detail::unorm8FromFloat(channels[c][lane]))
+              << "value " << channels[c][lane] << " (bits 0x" << std::hex << std::bit_cast<std::uint32_t>(channels[c][lane])
+              << std::dec << ") lane " << lane << " channel " << c << (swap ? " swapped" : "");
+        }
+      }
+    }
+  }
+}
 
 TEST(Blend, FastPathIsTheScalarBlendForEveryFactorOpAndMask) {
   if (!softraster::detail::fast::cpuRunsFastPath()) GTEST_SKIP() << "no AVX2 and FMA";

@@ -59,6 +59,12 @@ inline constexpr Floats kLaneY = {0, 0, 0, 0, 1, 1, 1, 1};
   return (b & Mask{1, 2, 4, 8, 16, 32, 64, 128}) != 0;
 }
 
+// Per lane: `yes` where `mask` is set (all ones), `no` where it is clear (one blend).
+[[SOFTRASTER_FAST_TARGET]] inline Words selectLanes(Mask mask, Words yes, Words no) {
+  return reinterpret_cast<Words>(_mm256_blendv_epi8(reinterpret_cast<__m256i>(no), reinterpret_cast<__m256i>(yes),
+                                                    reinterpret_cast<__m256i>(mask)));
+}
+
 [[SOFTRASTER_FAST_TARGET]] inline unsigned maskBits(Mask m) {
   return static_cast<unsigned>(_mm256_movemask_ps(reinterpret_cast<__m256>(m)));
 }
@@ -146,6 +152,7 @@ template <DepthFormat Format>
 // while its AVX2 callers pass them in registers.)
 template <class V>
 [[SOFTRASTER_FAST_TARGET]] inline Mask compareLanes(CompareOp op, V incoming, V stored) {
+  if (op == CompareOp::Less) return reinterpret_cast<Mask>(incoming < stored);  // the common op, without the jump table
   switch (op) {
     case CompareOp::Never: return Mask{};
     case CompareOp::Less: return reinterpret_cast<Mask>(incoming < stored);
@@ -179,10 +186,27 @@ template <DepthFormat Format>
 }
 
 // The lanes' colours as stored: RGBA8, or with swapRedBlue BGRA8 (ColourBlend::swapRedBlue).
+// unorm8FromFloat but for the clamp below 0 (packColour's packs do it), as a signed 32-bit integer.
+[[SOFTRASTER_FAST_TARGET]] inline __m256i unorm8BeforePacking(Floats v) {
+  return _mm256_cvtps_epi32(
+      _mm256_mul_ps(_mm256_min_ps(_mm256_set1_ps(1.0f), reinterpret_cast<__m256>(v)), _mm256_set1_ps(255.0f)));
+}
+
+// Each channel as unorm8FromFloat, with the clamp below 0 left to the packs: min(1, v) keeps a
+// NaN (minps returns its second operand), and cvtps2dq makes a NaN, -inf or any negative product
+// a negative integer (or 0 for a product rounding to -0), which the signed-saturating packs take to 0,
+// as the clamp would; [0, 1] is multiplied and rounded exactly as there. The packs interleave
+// per 128-bit half (four pixels of a row: r0-3 g0-3 b0-3 a0-3), and one byte shuffle per half
+// puts each pixel's four bytes together.
 [[SOFTRASTER_FAST_TARGET]] inline Words packColour(const Vec4T<FloatBatch>& c, bool swapRedBlue) {
-  const Words red = unorm8FromFloat(c.x.native()), blue = unorm8FromFloat(c.z.native());
-  return (swapRedBlue ? blue : red) | (unorm8FromFloat(c.y.native()) << 8) | ((swapRedBlue ? red : blue) << 16) |
-         (unorm8FromFloat(c.w.native()) << 24);
+  const __m256i red = unorm8BeforePacking(c.x.native()), green = unorm8BeforePacking(c.y.native()),
+                blue = unorm8BeforePacking(c.z.native()), alpha = unorm8BeforePacking(c.w.native());
+  const __m256i low = _mm256_packus_epi32(swapRedBlue ? blue : red, green);
+  const __m256i high = _mm256_packus_epi32(swapRedBlue ? red : blue, alpha);
+  const __m256i channelMajor = _mm256_packus_epi16(low, high);
+  const __m256i pixelMajor = _mm256_setr_epi8(0, 4, 8, 12, 1, 5, 9, 13, 2, 6, 10, 14, 3, 7, 11, 15,  //
+                                              0, 4, 8, 12, 1, 5, 9, 13, 2, 6, 10, 14, 3, 7, 11, 15);
+  return reinterpret_cast<Words>(_mm256_shuffle_epi8(channelMajor, pixelMajor));
 }
 
 // blendColour per lane on packed RGBA8 (fragment/colour.hpp's arithmetic, 32 bytes at a time):

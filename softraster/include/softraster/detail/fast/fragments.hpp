@@ -7,11 +7,14 @@
 //     no edge value can wrap around 64 bits, each row of blocks is first cut exactly (integer
 //     division) into the blocks wholly outside an edge (skipped) and those wholly inside every
 //     edge (every lane covered, no per-lane test); other blocks take their coverage from the
-//     64-bit edge functions at their eight pixel centres;
+//     64-bit edge functions at their eight pixel centres; in a cut row, the run of blocks inside
+//     every edge and the box's columns goes to the block with no per-block test;
 //   - what a block reads of the target (pointers, width, the depth state, flags) is copied into a
 //     local once per primitive (a block's stores could alias it where it lies) and branched on per
 //     block, branches the predictor learns (one block loop per stage, not one per state, keeps a
-//     shader's compile time down);
+//     shader's compile time down); the common state (depth tested and written, no stencil,
+//     blending or discards: BlockTarget::plain) tests one flag before and after the shader
+//     instead of each feature's (the shader is still inlined once);
 //     a block wholly inside the box reads and writes with plain loads and stores;
 //   - depth per lane at the integer pixel coordinates (no incremental stepping: the plane is
 //     evaluated per pixel exactly as the scalar path does), the depth test before shading;
@@ -136,6 +139,9 @@ class FastFragmentStage {
     bool shadesFirst;       // shaded before the tests: the built-ins, or alpha to coverage
     bool alphaToOne;
     bool swapRedBlue;
+    // Depth tested and written, from the planes, and nothing else that reads the framebuffer or
+    // drops lanes: no stencil, blending, partial write mask, 1/z buffer or shading first.
+    bool plain;
     unsigned sampleMask;            // 4x MSAA: bit s keeps sample s
     int partialColumn, partialRow;  // 4x MSAA: MsaaRegionEdges's
   };
@@ -152,6 +158,8 @@ class FastFragmentStage {
             .shadesFirst = kBuiltins || target_.coverage.shadesFirst(),
             .alphaToOne = target_.coverage.alphaToOne,
             .swapRedBlue = target_.blend.swapRedBlue,
+            .plain = target_.depth.testEnable && target_.depth.writeEnable && !target_.inverseZ && !target_.stencil.enable &&
+                     !target_.blend.readsDestination && !(kBuiltins || target_.coverage.shadesFirst()),
             .sampleMask = target_.coverage.sampleMask,
             .partialColumn = target_.msaa.partialColumn,
             .partialRow = target_.msaa.partialRow};
@@ -261,6 +269,11 @@ class FastFragmentStage {
     const std::int64_t blocks = (walked.x1 - walked.x0) / kBatchWidth + 1;
     // Six divisions per row pay off over a wide row; a narrow one tests each block's corners.
     const bool cut = corners && blocks > kCutBlocks;
+    // The blocks whose four columns lie inside the box: in a cut row, those of them wholly inside
+    // every edge go straight to `block`, without the per-block tests below (most blocks of a
+    // large primitive; the tests were an eighth of a full-screen quad's instructions).
+    const std::int64_t columnsFirst = (keep.x0 - walked.x0 + kBatchWidth - 1) / kBatchWidth;
+    const std::int64_t columnsLast = keep.x1 - walked.x0 >= kBatchWidth - 1 ? (keep.x1 - walked.x0 - (kBatchWidth - 1)) / kBatchWidth : -1;
     for (int py = walked.y0; py <= walked.y1; py += kBatchHeight) {
       const unsigned rows = (py >= keep.y0 ? 0x0fu : 0u) | (py + 1 <= keep.y1 ? 0xf0u : 0u);
       std::int64_t first = 0, last = blocks - 1, innerFirst = 1, innerLast = 0;
@@ -271,10 +284,16 @@ class FastFragmentStage {
           positiveRun(rowStart[i] + lowest[i], stepX[i], innerFirst, innerLast);
         }
       }
+      const std::int64_t plainFirst = std::max(innerFirst, columnsFirst), plainLast = std::min(innerLast, columnsLast);
       __m256i values = edgeLanes<E>([&](int i) { return rowStart[i] - first * stepX[i]; }, 0);
       alignas(32) std::int64_t value[4];
       for (std::int64_t k = first; k <= last; ++k) {
         const int px = walked.x0 + static_cast<int>(k) * kBatchWidth;
+        if (k >= plainFirst && k <= plainLast) {  // inside the box's columns and every edge
+          block(px, py, rows, true, reinterpret_cast<const std::int64_t(&)[E]>(value));
+          values = _mm256_sub_epi64(values, stepLanes);
+          continue;
+        }
         unsigned inBox = rows;
         if (px < keep.x0 || px + kBatchWidth - 1 > keep.x1) {  // a block at the box's left or right edge
           const int columns = std::min(kBatchWidth, keep.x1 - px + 1);
@@ -349,6 +368,8 @@ class FastFragmentStage {
 
   // Depth test, shading and writes of the lanes `covered` of the block whose lane 0 is (px, py);
   // `whole`: all eight lanes are inside the box (so inside the image), read and written plainly.
+  // The common state (BlockTarget::plain) takes a path of its own before and after the shader,
+  // with a branch or two where the general path tests each feature; the shader is inlined once.
   [[SOFTRASTER_FAST_TARGET]] void shadeBlock(int px, int py, unsigned covered, bool whole, const BlockPlanes& t,
                                              const BlockTarget& to) const {
     const Floats fx = broadcast(static_cast<float>(px)) + kLaneX;
@@ -357,15 +378,54 @@ class FastFragmentStage {
     Words shaded{};
     [[maybe_unused]] Floats fragDepth{};
     const bool shadedFirst = to.shadesFirst;
-    if (shadedFirst) {  // discarded lanes, and those alpha to coverage drops, test and write nothing (as the scalar stage)
-      std::uint32_t kept = 0xffu;
-      shaded = shadeFirst<1>(t, fx, fy, fx, fy, kept, fragDepth);
-      covered &= kept;
-      if (covered == 0) return;
-    }
     Words stored{}, current{};
     Mask passes = ~Mask{};
-    const unsigned rasterized = covered;  // the stencil is tested and updated for all of them
+    unsigned rasterized = covered;  // the lanes tested (after any discards)
+    if (kPlainBlocks && to.plain) {
+      current = whole ? loadFullBlock(to.depthStorage + first, to.width) : loadBlock(to.depthStorage + first, to.width, covered);
+      stored = depthToStorage<Format>(clampDepth(evaluatePlane(t.depth, fx, fy) + t.depthOffset, to.depthRange));
+      passes = depthTestPasses<Format>(to.depth.compareOp, stored, current);
+      covered &= maskBits(passes);  // all lanes pass Always
+      if (covered == 0) return;
+    } else {
+      if (shadedFirst) {  // discarded lanes, and those alpha to coverage drops, test and write nothing (as the scalar stage)
+        std::uint32_t kept = 0xffu;
+        shaded = shadeFirst<1>(t, fx, fy, fx, fy, kept, fragDepth);
+        covered &= kept;
+        if (covered == 0) return;
+        rasterized = covered;
+      }
+      if (!depthAndStencil(t, fx, fy, first, whole, fragDepth, to, covered, stored, current, passes)) return;
+    }
+    Words colour = shaded;
+    if constexpr (!kBuiltins) {  // (a shader with the built-ins is always shaded first)
+      if (!shadedFirst) colour = shadeLanes(t, fx, fy, to);
+    }
+    if (!(kPlainBlocks && to.plain) && to.readsDestination) {
+      colour = blendColour(colour, loadBlock(to.colour + first, to.width, covered), target_.blend);
+    }
+    if (covered == 0xffu) {
+      storeFullBlock(to.colour + first, to.width, colour);
+    } else {
+      storeBlock(to.colour + first, to.width, covered, colour);
+    }
+    if ((kPlainBlocks && to.plain) || (to.depth.testEnable && to.depth.writeEnable)) {
+      if (whole) {  // lanes that fail keep the value just read: one plain store
+        // A block covered whole, without the stencil: the lanes written are those that pass.
+        const Mask written = rasterized == 0xffu && !to.stencil ? passes : laneMask(covered);
+        storeFullBlock(to.depthStorage + first, to.width, selectLanes(written, stored, current));
+      } else {
+        storeBlock(to.depthStorage + first, to.width, covered, stored);
+      }
+    }
+  }
+
+  // shadeBlock's depth and stencil tests outside the plain state: false when no lane is left to
+  // shade (the stencil, tested and updated for every lane `covered` holds on entry, is written first).
+  [[SOFTRASTER_FAST_TARGET]] bool depthAndStencil(const BlockPlanes& t, Floats fx, Floats fy, std::size_t first, bool whole,
+                                                  [[maybe_unused]] Floats fragDepth, const BlockTarget& to,
+                                                  unsigned& covered, Words& stored, Words& current, Mask& passes) const {
+    const unsigned rasterized = covered;
     if (to.depth.testEnable) {
       if (to.depth.compareOp != CompareOp::Always || to.depth.writeEnable) {
         current = whole ? loadFullBlock(to.depthStorage + first, to.width)
@@ -382,7 +442,7 @@ class FastFragmentStage {
       }
       if (to.depth.compareOp != CompareOp::Always) {
         covered &= maskBits(passes);
-        if (covered == 0 && !to.stencil) return;
+        if (covered == 0 && !to.stencil) return false;
       }
     }
     if (to.stencil) {
@@ -394,26 +454,9 @@ class FastFragmentStage {
       const Mask stencilPasses = stencilTestLanes(face, s);
       storeStencil(at, rasterized, stencilUpdateLanes(face, s, stencilPasses, passes), offset);
       covered &= maskBits(stencilPasses);
-      if (covered == 0) return;
+      if (covered == 0) return false;
     }
-    Words colour = shaded;
-    if constexpr (!kBuiltins) {  // (a shader with the built-ins is always shaded first)
-      if (!shadedFirst) colour = shadeLanes(t, fx, fy, to);
-    }
-    if (to.readsDestination) colour = blendColour(colour, loadBlock(to.colour + first, to.width, covered), target_.blend);
-    if (covered == 0xffu) {
-      storeFullBlock(to.colour + first, to.width, colour);
-    } else {
-      storeBlock(to.colour + first, to.width, covered, colour);
-    }
-    if (to.depth.testEnable && to.depth.writeEnable) {
-      if (whole) {  // lanes that fail keep the value just read: one plain store
-        const Words written = reinterpret_cast<Words>(laneMask(covered));
-        storeFullBlock(to.depthStorage + first, to.width, (stored & written) | (current & ~written));
-      } else {
-        storeBlock(to.depthStorage + first, to.width, covered, stored);
-      }
-    }
+    return true;
   }
 
   // 4x MSAA. A block is the same 4x2 pixels, seen two ways: the shader's lanes (one per pixel,
@@ -545,9 +588,13 @@ class FastFragmentStage {
       if (covered == 0) return;
     }
     std::uint32_t passed = covered;
+    // The pair loops are unrolled (GCC 12 at -O2 kept them loops, with these arrays in memory:
+    // a third of a 4x MSAA block's instructions).
     Words stored[4]{}, current[4]{};
+    Mask passes[4]{};
     if (to.depth.testEnable) {
       passed = 0;
+#pragma GCC unroll 4
       for (int pair = 0; pair < 4; ++pair) {
         const unsigned bits = (covered >> (8 * pair)) & 0xffu;
         if (bits == 0) continue;
@@ -566,7 +613,8 @@ class FastFragmentStage {
           z = evaluatePlane(t.depth, fx, fy) + t.depthOffset;
         }
         stored[pair] = depthToStorage<Format>(clampDepth(z, to.depthRange));
-        passed |= (bits & maskBits(depthTestPasses<Format>(to.depth.compareOp, stored[pair], current[pair]))) << (8 * pair);
+        passes[pair] = depthTestPasses<Format>(to.depth.compareOp, stored[pair], current[pair]);
+        passed |= (bits & maskBits(passes[pair])) << (8 * pair);
       }
       if (passed == 0 && !to.stencil) return;
     }
@@ -594,6 +642,7 @@ class FastFragmentStage {
         colour = reinterpret_cast<__m256i>(shadeLanes(t, (x0 + kLaneX) + broadcast(0.5f), (y0 + kLaneY) + broadcast(0.5f), to));
       }
     }
+#pragma GCC unroll 4
     for (int pair = 0; pair < 4; ++pair) {
       const unsigned bits = (passed >> (8 * pair)) & 0xffu;
       if (bits == 0) continue;
@@ -606,8 +655,9 @@ class FastFragmentStage {
       storeWords(to.colour + first, bits, c);
       if (to.depth.testEnable && to.depth.writeEnable) {
         if (whole) {  // samples that fail keep the value just read: one plain store
-          const Words written = reinterpret_cast<Words>(laneMask(bits));
-          storeWords(to.depthStorage + first, 0xffu, (stored[pair] & written) | (current[pair] & ~written));
+          // A pair covered whole, without the stencil: the samples written are those that pass.
+          const Mask written = ((covered >> (8 * pair)) & 0xffu) == 0xffu && !to.stencil ? passes[pair] : laneMask(bits);
+          storeWords(to.depthStorage + first, 0xffu, selectLanes(written, stored[pair], current[pair]));
         } else {
           storeWords(to.depthStorage + first, bits, stored[pair]);
         }
@@ -690,6 +740,7 @@ class FastFragmentStage {
 
   static constexpr bool kBuiltins = UsesFragmentBuiltins<Shader>;
   static constexpr bool kWritesDepth = WritesFragDepth<Shader>;
+  static constexpr bool kPlainBlocks = !kBuiltins;  // BlockTarget::plain can hold
   static constexpr bool kWritesSampleMask = WritesSampleMask<Shader>;
 
   FragmentStage<Shader, true, Format> scalar_;
