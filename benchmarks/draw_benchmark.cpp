@@ -3,8 +3,8 @@
 // For profiling and tuning the exact method's fast path between full benches: frames of
 // the shapes crosscheck bench's scenes stress (a full-screen quad: pixels; spheres of 100k and 1M
 // triangles: the front end and the band queue; the 100k sphere in polygon mode line: lines;
-// stacked quads: overdraw; 20k small triangles in 10 draws: the walk of a triangle of a few
-// blocks), at 1 and 2 threads.
+// stacked quads: overdraw, and with 4x MSAA the per-sample walk; 20k small triangles in 10
+// draws: the walk of a triangle of a few blocks), at 1 and 2 threads.
 //   softraster_benchmarks --benchmark_filter=Sphere --benchmark_repetitions=5
 // Deliberately not a replacement for `crosscheck bench`: no lavapipe beside it, no agreement
 // check; times are the machine's (shared and noisy: compare medians, side by side). "CPU" is the
@@ -98,11 +98,11 @@ std::vector<Mesh> smallTriangles(std::uint32_t count, std::uint32_t draws) {
 // One frame per iteration: clear, then each mesh as one indexed draw (depth LESS, no culling),
 // its triangles filled or as lines.
 void drawFrames(benchmark::State& bench, std::span<const Mesh> meshes,
-                softraster::PolygonMode mode = softraster::PolygonMode::Fill) {
+                softraster::PolygonMode mode = softraster::PolygonMode::Fill, std::uint32_t samples = 1) {
   softraster::ContextOptions options;
   options.threads = static_cast<unsigned>(bench.range(0));
   const softraster::Context context(options);
-  auto framebuffer = softraster::Framebuffer::create(kWidth, kHeight);
+  auto framebuffer = softraster::Framebuffer::create(kWidth, kHeight, softraster::DepthFormat::D32Sfloat, samples);
   if (!framebuffer) {
     bench.SkipWithError(framebuffer.error().c_str());
     return;
@@ -130,8 +130,8 @@ void drawFrames(benchmark::State& bench, std::span<const Mesh> meshes,
   bench.counters["triangles"] = static_cast<double>(triangles);
 }
 void drawFrames(benchmark::State& bench, const Mesh& mesh,
-                softraster::PolygonMode mode = softraster::PolygonMode::Fill) {
-  drawFrames(bench, std::span(&mesh, 1), mode);
+                softraster::PolygonMode mode = softraster::PolygonMode::Fill, std::uint32_t samples = 1) {
+  drawFrames(bench, std::span(&mesh, 1), mode, samples);
 }
 
 void Sphere100k(benchmark::State& bench) {
@@ -158,6 +158,10 @@ void QuadStackFrontToBack(benchmark::State& bench) {
   static const Mesh mesh = quads(10, false);
   drawFrames(bench, mesh);
 }
+void QuadStackBackToFrontMsaa(benchmark::State& bench) {
+  static const Mesh mesh = quads(4, true);
+  drawFrames(bench, mesh, softraster::PolygonMode::Fill, 4);
+}
 void SmallTriangles(benchmark::State& bench) {
   static const std::vector<Mesh> meshes = smallTriangles(20'000, 10);
   drawFrames(bench, meshes);
@@ -170,6 +174,7 @@ BENCHMARK(WireframeSphere100k)->ArgName("threads")->Arg(1)->Arg(2)->Unit(benchma
 BENCHMARK(Sphere1M)->ArgName("threads")->Arg(1)->Arg(2)->Unit(benchmark::kMillisecond)->MeasureProcessCPUTime()->UseRealTime();
 BENCHMARK(FullScreenQuad)->ArgName("threads")->Arg(1)->Arg(2)->Unit(benchmark::kMillisecond)->MeasureProcessCPUTime()->UseRealTime();
 BENCHMARK(QuadStackBackToFront)->ArgName("threads")->Arg(1)->Arg(2)->Unit(benchmark::kMillisecond)->MeasureProcessCPUTime()->UseRealTime();
+BENCHMARK(QuadStackBackToFrontMsaa)->ArgName("threads")->Arg(1)->Arg(2)->Unit(benchmark::kMillisecond)->MeasureProcessCPUTime()->UseRealTime();
 BENCHMARK(SmallTriangles)->ArgName("threads")->Arg(1)->Arg(2)->Unit(benchmark::kMillisecond)->MeasureProcessCPUTime()->UseRealTime();
 BENCHMARK(QuadStackFrontToBack)->ArgName("threads")->Arg(1)->Arg(2)->Unit(benchmark::kMillisecond)->MeasureProcessCPUTime()->UseRealTime();
 
