@@ -2,15 +2,23 @@
 // fragment's depth as the fast path computes it; a tile behind a whole tile's depth is not
 // walked; and sequences of random draws (every compare op, writes on and off, bias, clamp,
 // scissors, stencil, the mutable depthStorage() in between) give the fast path the scalar
-// method's bytes on 1 and 3 threads while every tile's bounds hold every stored depth.
+// method's bytes on 1 and 3 threads while every tile's bounds hold every stored depth. Also: the
+// fast path's one-clamp clampDepth gives the scalar two-clamp bits for every depth range a draw
+// can have.
+// depth_tiles.hpp before batch.hpp: its unqualified scalar clampDepth and depthToStorage calls
+// would find batch.hpp's SIMD overloads in namespace fast first.
 #include <softraster/detail/fast/depth_tiles.hpp>
+// (keep this order)
+#include <softraster/detail/fast/batch.hpp>
 #include <softraster/pipeline.hpp>
 
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <bit>
 #include <cmath>
 #include <cstdint>
+#include <limits>
 #include <random>
 #include <string>
 #include <vector>
@@ -115,6 +123,47 @@ std::vector<Colour::Vertex> quad(float z, softraster::Vec4 c) {
 }
 
 }  // namespace
+
+#if SOFTRASTER_HAS_FAST_PATH
+namespace {
+[[SOFTRASTER_FAST_TARGET]] void fastClampDepth(const float (&z)[8], softraster::detail::DepthRange range, float (&out)[8]) {
+  const auto clamped = softraster::detail::fast::clampDepth(softraster::FloatBatch::load(z).native(), range);
+  for (int lane = 0; lane < 8; ++lane) out[lane] = clamped[lane];
+}
+}  // namespace
+
+TEST(DepthTiles, FastClampDepthIsTheScalarClampForEveryRange) {
+  if (!fastPathHere()) GTEST_SKIP() << "no AVX2 and FMA";
+  constexpr float kInf = std::numeric_limits<float>::infinity();
+  std::vector<float> depths = {std::numeric_limits<float>::quiet_NaN(), -std::numeric_limits<float>::quiet_NaN(), kInf, -kInf,
+                               0.0f, -0.0f, 1.0f, -1.0f, 2.0f, 0.25f, 0.5f, 0.75f, std::nextafter(1.0f, 2.0f),
+                               std::nextafter(0.0f, 1.0f), std::nextafter(0.0f, -1.0f), 1e30f, -1e30f};
+  std::mt19937 random(23);
+  for (int i = 0; i < 2000; ++i) depths.push_back(std::bit_cast<float>(static_cast<std::uint32_t>(random())));
+  for (int i = 0; i < 2000; ++i) depths.push_back(std::uniform_real_distribution<float>(-0.5f, 1.5f)(random));
+  // Every range fragmentDepthRange gives: [0, 1] without depth clamp; with it, min <= max from a
+  // viewport's two depths in [0, 1], zeros of either sign included.
+  std::vector<softraster::detail::DepthRange> ranges = {{0.0f, 1.0f}, {-0.0f, 1.0f}, {0.0f, 0.0f}, {-0.0f, -0.0f}, {-0.0f, 0.0f},
+                                                        {0.0f, -0.0f}, {1.0f, 1.0f}, {0.25f, 0.75f}, {0.5f, 0.5f}, {0.0f, 0.5f},
+                                                        {0.5f, 1.0f}};
+  for (int i = 0; i < 50; ++i) {
+    const float a = std::uniform_real_distribution<float>(0.0f, 1.0f)(random), b = std::uniform_real_distribution<float>(0.0f, 1.0f)(random);
+    ranges.push_back({std::fmin(a, b), std::fmax(a, b)});
+  }
+  float z[8], out[8];
+  for (const auto& range : ranges) {
+    for (std::size_t first = 0; first < depths.size(); first += 8) {
+      for (std::size_t lane = 0; lane < 8; ++lane) z[lane] = depths[(first + lane) % depths.size()];
+      fastClampDepth(z, range, out);
+      for (std::size_t lane = 0; lane < 8; ++lane) {
+        ASSERT_EQ(std::bit_cast<std::uint32_t>(out[lane]), std::bit_cast<std::uint32_t>(softraster::detail::clampDepth(z[lane], range)))
+            << "z " << z[lane] << " (bits 0x" << std::hex << std::bit_cast<std::uint32_t>(z[lane]) << std::dec << ") range ["
+            << range.min << ", " << range.max << "]";
+      }
+    }
+  }
+}
+#endif
 
 TEST(DepthTiles, BoundsHoldEveryFragmentsDepth) {
   std::mt19937 random(20261205);

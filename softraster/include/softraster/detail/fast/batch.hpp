@@ -28,6 +28,7 @@
 #include <softraster/simd.hpp>
 #include <softraster/state.hpp>
 
+#include <cassert>
 #include <cstddef>
 #include <cstdint>
 
@@ -124,11 +125,15 @@ template <int E>
   return bits0 | (bits1 << 4);
 }
 
-// clampDepth per lane: SSE max(min(z, 1), 0), then max(min(z, range.max), range.min).
+// clampDepth per lane: the scalar max(min(max(min(z, 1), 0), range.max), range.min) in one clamp,
+// max(min(z, range.max), range.min), which gives the same bits whenever 0 <= range.min and
+// range.max <= 1 (a NaN or z >= 1 gives range.max, z <= 0 range.min, signed zeros as the scalar's:
+// minps(a, b) is a < b ? a : b and maxps(a, b) a > b ? a : b). A DepthRange always is in [0, 1]:
+// fragmentDepthRange takes it from a viewport the draw checked to be
+// (tests/softraster/depth_tiles_test.cpp compares the two over every class of z).
 [[SOFTRASTER_FAST_TARGET]] inline Floats clampDepth(Floats z, DepthRange range) {
-  // minps(a, b) is a < b ? a : b and maxps(a, b) a > b ? a : b, NaN included: one instruction each.
-  __m256 v = _mm256_max_ps(_mm256_min_ps(reinterpret_cast<__m256>(z), _mm256_set1_ps(1.0f)), _mm256_setzero_ps());
-  v = _mm256_max_ps(_mm256_min_ps(v, _mm256_set1_ps(range.max)), _mm256_set1_ps(range.min));
+  assert(range.min >= 0.0f && range.max <= 1.0f);
+  const __m256 v = _mm256_max_ps(_mm256_min_ps(reinterpret_cast<__m256>(z), _mm256_set1_ps(range.max)), _mm256_set1_ps(range.min));
   return reinterpret_cast<Floats>(v);
 }
 
