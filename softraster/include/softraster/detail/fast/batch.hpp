@@ -4,7 +4,9 @@
 // path uses, the depth range clamp, depth storage conversion and test, UNORM8 colour conversion,
 // blending, and masked loads and stores of one block's colour and depth.
 // Every operation is the scalar path's operation per lane (same order, same rounding, FMA exactly
-// where the scalar path fuses), so the results are the same bits.
+// where the scalar path fuses), so the results are the same bits; two are shorter but give the
+// same bits for every input they can get, each checked over every class of float by a test: the
+// depth clamp (one clamp for a range inside [0, 1]) and UNORM8 packing (the packs clamp below 0).
 // AVX2 + FMA code (SOFTRASTER_FAST_TARGET), inlined into the fast path's entry point only; GCC
 // only (Clang rejects the by-value batches across targets) and not at -O0 (no inlining, so ABIs differ).
 // Deliberately absent: coverage walking and shading (fast/fragments.hpp), AVX-512 (16 lanes).
