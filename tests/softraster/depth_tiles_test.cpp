@@ -5,11 +5,8 @@
 // method's bytes on 1 and 3 threads while every tile's bounds hold every stored depth. Also: the
 // fast path's one-clamp clampDepth gives the scalar two-clamp bits for every depth range a draw
 // can have.
-// depth_tiles.hpp before batch.hpp: its unqualified scalar clampDepth and depthToStorage calls
-// would find batch.hpp's SIMD overloads in namespace fast first.
-#include <softraster/detail/fast/depth_tiles.hpp>
-// (keep this order)
 #include <softraster/detail/fast/batch.hpp>
+#include <softraster/detail/fast/depth_tiles.hpp>
 #include <softraster/pipeline.hpp>
 
 #include <gtest/gtest.h>

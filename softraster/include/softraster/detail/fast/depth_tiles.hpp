@@ -128,8 +128,8 @@ inline bool depthKeyBounds(const PlaneEquation& depth, float depthOffset, DepthR
   const double zLo = a0 + std::min(x0, x1) + std::min(y0, y1) + offset - slack;
   const double zHi = a0 + std::max(x0, x1) + std::max(y0, y1) + offset + slack;
   // Clamping and conversion keep the order (never reversing two depths), so they map the bounds.
-  lo = depthTileKey(Format, depthToStorage<Format>(clampDepth(static_cast<float>(zLo), range)));
-  hi = depthTileKey(Format, depthToStorage<Format>(clampDepth(static_cast<float>(zHi), range)));
+  lo = depthTileKey(Format, detail::depthToStorage<Format>(detail::clampDepth(static_cast<float>(zLo), range)));
+  hi = depthTileKey(Format, detail::depthToStorage<Format>(detail::clampDepth(static_cast<float>(zHi), range)));
   return true;
 }
 
