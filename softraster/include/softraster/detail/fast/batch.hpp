@@ -192,13 +192,13 @@ template <DepthFormat Format>
   return reinterpret_cast<Words>(_mm256_cvtps_epi32(_mm256_mul_ps(clamped, _mm256_set1_ps(255.0f))));
 }
 
-// The lanes' colours as stored: RGBA8, or with swapRedBlue BGRA8 (ColourBlend::swapRedBlue).
 // unorm8FromFloat but for the clamp below 0 (packColour's packs do it), as a signed 32-bit integer.
 [[SOFTRASTER_FAST_TARGET]] inline __m256i unorm8BeforePacking(Floats v) {
   return _mm256_cvtps_epi32(
       _mm256_mul_ps(_mm256_min_ps(_mm256_set1_ps(1.0f), reinterpret_cast<__m256>(v)), _mm256_set1_ps(255.0f)));
 }
 
+// The lanes' colours as stored: RGBA8, or with swapRedBlue BGRA8 (ColourBlend::swapRedBlue).
 // Each channel as unorm8FromFloat, with the clamp below 0 left to the packs: min(1, v) keeps a
 // NaN (minps returns its second operand), and cvtps2dq makes a NaN, -inf or any negative product
 // a negative integer (or 0 for a product rounding to -0), which the signed-saturating packs take to 0,
