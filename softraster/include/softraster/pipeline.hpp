@@ -44,6 +44,7 @@
 #include <softraster/detail/exact/draw.hpp>
 #include <softraster/detail/exact/scratch.hpp>
 #include <softraster/detail/fast/fragments.hpp>
+#include <softraster/detail/geometry/largest_index.hpp>
 #include <softraster/detail/instruction_set.hpp>
 #include <softraster/framebuffer.hpp>
 #include <softraster/limits.hpp>
@@ -126,15 +127,13 @@ class Context {
     if constexpr (!checkShaderInterface<Shader>()) {
       return Status::error("not a shader");  // unreachable: checkShaderInterface has failed the build
     } else {
-      // The largest index first (a loop the compiler vectorises; a restart index counts as 0), the
-      // offending one only on failure.
+      // The largest index first (detail/geometry/largest_index.hpp; a restart index counts as 0),
+      // the offending one only on failure.
       const bool restart = state.primitiveRestartEnable;
       const auto outOfRange = [&](std::uint32_t index) {
         return index >= vertices.size() && !(restart && index == kPrimitiveRestartIndex);
       };
-      std::uint32_t largest = 0;
-      for (const std::uint32_t index : indices) largest = std::max(largest, restart && index == kPrimitiveRestartIndex ? 0u : index);
-      if (!indices.empty() && largest >= vertices.size()) {
+      if (!indices.empty() && detail::largestIndex(indices, restart) >= vertices.size()) {
         const auto past = std::find_if(indices.begin(), indices.end(), outOfRange);
         const auto i = static_cast<std::size_t>(past - indices.begin());
         return Status::error("index " + std::to_string(i) + " (" + std::to_string(*past) +

@@ -5,9 +5,10 @@
 //   modes (geometry/unfilled) -> snapping, the fixed-point cull
 //   and setup (exact/triangle_setup, exact/line_point_setup) -> coverage and fragments
 //   (fragment/shade, over exact/rasterizer and exact/interpolation).
-// A draw of filled triangles snaps each vertex once, beside its shading; the triangles that need
-// no clipping are culled from those snapped positions (the same bits as snapping per triangle),
-// so a culled triangle reads 24 bytes of its vertices and nothing else.
+// A draw of filled triangles snaps each vertex once, beside its shading, into a compact copy of
+// its position and clip mask; a batch is clip-tested and the triangles that need no clipping are
+// culled from it (the same bits as snapping per triangle), so a culled triangle reads 12 bytes of
+// each vertex and nothing else.
 // Primitives reach the fragment stage in submission order; with more than one thread the band
 // queue (fast/bands.hpp) draws them band by band in parallel, each band in that order.
 // With more than one thread the front end runs in parallel too, in rounds of kRoundPrimitives
@@ -53,6 +54,7 @@
 #include <softraster/state.hpp>
 
 #include <algorithm>
+#include <array>
 #include <cassert>
 #include <cstdint>
 #include <span>
@@ -94,8 +96,7 @@ class ExactDraw {
                    multisample_ ? msaaRegionEdges(region_, state.scissor, options.deviations).rasterRegion : region_,
                    inverseZ, options.deviations),
         shaded_(scratch.vector<Vertex>(ScratchSlot::ShadedVertices)),
-        snapped_(scratch.vector<FixedPoint>(ScratchSlot::SnappedVertices)),
-        triangles_(scratch.vector<TriangleIndices>(ScratchSlot::Triangles)),
+        snapped_(scratch.vector<SnappedVertex>(ScratchSlot::SnappedVertices)),
         lines_(scratch.vector<LineIndices>(ScratchSlot::Lines)),
         course_(makeCourse(state, uniforms, framebuffer, inverseZ, options, scratch)) {
     fast::prepareDepthTiles(framebuffer, state.depth, kKeepsDepthTiles && !inverseZ);
@@ -212,7 +213,7 @@ class ExactDraw {
     }
     for (std::size_t i = begin; i < end; ++i) {  // snapped while the vertex is at hand
       const Vertex v = shadeVertex<Shader, Fused>(uniforms_, vertices[i], transform_, clipDepth);
-      snapped_[i] = snapVertex(v.window, pixelOffset_);
+      snapped_[i] = {snapVertex(v.window, pixelOffset_), v.clipMask};
       shaded_[i] = v;
     }
   }
@@ -283,25 +284,29 @@ class ExactDraw {
   void drawTriangles(std::span<const std::uint32_t> indices) {
     winding_ = windingFilter(rs_);
     if (!winding_.drawClockwise && !winding_.drawCounterClockwise) return;
-    assembleTriangles(state_.topology, indices, triangles_, provokingLast_);
     const std::size_t batchSize = trianglesPerBatch(state_.topology);
     // Stippled polygon-mode lines: the stipple counter may run on from one triangle to the next
     // (drawCulled), so the draw is one range.
     const bool oneRange = rs_.lineStipple.enable && rs_.polygonMode == PolygonMode::Line;
-    forEachRange(triangles_.size(), batchSize, oneRange, [&](Worker& worker, std::size_t begin, std::size_t end) {
-      runRange<&ExactDraw::drawTriangleRange>(worker, indices, begin, end);
-    });
+    forEachRange(triangleCount(state_.topology, indices.size()), batchSize, oneRange,
+                 [&](Worker& worker, std::size_t begin, std::size_t end) {
+                   runRange<&ExactDraw::drawTriangleRange>(worker, indices, begin, end);
+                 });
   }
 
-  // Triangles [begin, end) of triangles_, assembled from `indices`; begin starts a vertex batch.
+  // Triangles [begin, end) of the draw, assembled from `indices` batch by batch as the range is
+  // drawn (on the worker's thread, not beforehand on the calling one); begin starts a vertex batch.
   void drawTriangleRange(Worker& worker, std::span<const std::uint32_t> indices, std::size_t begin, std::size_t end) {
     const bool unfilled = rs_.polygonMode != PolygonMode::Fill;
     const std::size_t batchSize = trianglesPerBatch(state_.topology);
-    const std::span<const TriangleIndices> triangles(triangles_);
+    std::array<TriangleIndices, kMaxTrianglesPerBatch> assembled;
     for (std::size_t start = begin; start < end; start += batchSize) {
-      const auto batch = triangles.subspan(start, std::min(batchSize, end - start));
-      const bool throughDrawPipeline = unfilled || batchNeedsClipping(batch, shaded_) ||
-                                       adjacencyNeedsClipping(state_.topology, indices, start, batch.size(), shaded_);
+      const std::size_t count = std::min(batchSize, end - start);
+      assembleTriangleRange(state_.topology, indices, start, count, assembled.data(), provokingLast_);
+      const std::span<const TriangleIndices> batch(assembled.data(), count);
+      const bool throughDrawPipeline =
+          unfilled || (snapsVertices_ ? batchNeedsClipping(batch, snapped_) : batchNeedsClipping(batch, shaded_)) ||
+          adjacencyNeedsClipping(state_.topology, indices, start, batch.size(), shaded_);
       for (const TriangleIndices& t : batch) {
         const Vertex& v0 = shaded_[t[0]];
         const Vertex& v1 = shaded_[t[1]];
@@ -311,7 +316,8 @@ class ExactDraw {
         } else if constexpr (kCourse) {
           drawTriangleHere(worker, v0, v1, v2);
         } else {  // snapped with the vertices: culled before any other vertex data is read
-          drawFixedTriangle(worker, fixedTriangle(snapped_[t[0]], snapped_[t[1]], snapped_[t[2]]), v0, v1, v2);
+          drawFixedTriangle(worker, fixedTriangle(snapped_[t[0]].position, snapped_[t[1]].position, snapped_[t[2]].position),
+                            v0, v1, v2);
         }
       }
     }
@@ -515,11 +521,16 @@ class ExactDraw {
   WindingFilter winding_{true, true};
   // Scratch: the Context's, reused across draws.
   std::vector<Vertex>& shaded_;
-  // shaded_'s window x and y snapped, for a draw of filled triangles by the exact method (whose
-  // straight path culls a triangle from them): each vertex snapped once, not once per triangle.
-  std::vector<FixedPoint>& snapped_;
+  // shaded_'s window x and y snapped, and its clip mask, for a draw of filled triangles by the
+  // exact method: each vertex snapped once, not once per triangle; a batch is clip-tested and its
+  // triangles culled from these 12 bytes a vertex, and only a triangle that may cover a pixel
+  // centre reads its shaded vertices (a million-triangle sphere's 60-byte vertices miss the cache).
+  struct SnappedVertex {
+    FixedPoint position;
+    std::uint32_t clipMask;
+  };
+  std::vector<SnappedVertex>& snapped_;
   bool snapsVertices_ = !kCourse && isTriangleTopology(state_.topology) && rs_.polygonMode == PolygonMode::Fill;
-  std::vector<TriangleIndices>& triangles_;
   std::vector<LineIndices>& lines_;
   [[no_unique_address]] Course course_;  // after viewport_ and region_, which it is made from
 };

@@ -1,4 +1,4 @@
-// DrawScratch: the vectors a draw fills and empties (shaded vertices, assembled primitives, the
+// DrawScratch: the vectors a draw fills and empties (shaded vertices, assembled lines, the
 // band queue's records and bins, a non-indexed draw's index sequence), kept between draws so that
 // a steady-state draw allocates nothing: each vector keeps its capacity for the next draw that
 // asks for the same slot and element type. ScratchPool is the Context's store of them: a draw
@@ -23,7 +23,6 @@ enum class ScratchSlot : std::uint8_t {
   IndexSequence,
   ShadedVertices,
   SnappedVertices,
-  Triangles,
   Lines,
   BandLists,
   CourseRows

@@ -88,66 +88,87 @@ inline std::vector<LineIndices> assembleLines(Topology topology, std::span<const
   return lines;
 }
 
+// The most triangles a batch holds, of any topology.
+inline constexpr std::size_t kMaxTrianglesPerBatch = 1022;
+
 inline std::size_t trianglesPerBatch(Topology t) {
   switch (t) {
     case Topology::TriangleList: return 341;
     case Topology::TriangleListWithAdjacency: return 170;
     case Topology::TriangleStripWithAdjacency: return 510;
-    default: return 1022;
+    default: return kMaxTrianglesPerBatch;
   }
 }
 
-// The triangles of a draw, as vertex numbers (`indices`: an indexed draw's, or 0..count-1), into
-// `triangles` (emptied first; its capacity is reused), in Mesa's order for the provoking vertex
-// mode (provokingLast: VK_PROVOKING_VERTEX_MODE_LAST_VERTEX_EXT).
-inline void assembleTriangles(Topology topology, std::span<const std::uint32_t> indices,
-                              std::vector<TriangleIndices>& triangles, bool provokingLast = false) {
-  triangles.clear();
-  const std::size_t n = indices.size();
-  if (n < 3) return;
-  triangles.reserve(topology == Topology::TriangleList ? n / 3 : n - 2);
+// How many triangles `n` indices of a triangle topology make (0 for any other topology).
+inline std::size_t triangleCount(Topology topology, std::size_t n) {
+  switch (topology) {
+    case Topology::TriangleList: return n / 3;
+    case Topology::TriangleStrip:
+    case Topology::TriangleFan: return n < 3 ? 0 : n - 2;
+    case Topology::TriangleListWithAdjacency: return n / 6;
+    case Topology::TriangleStripWithAdjacency: return n < 6 ? 0 : (n - 6) / 2 + 1;
+    default: return 0;
+  }
+}
+
+// Triangles [first, first + count) of a draw (count no more than triangleCount leaves), as vertex
+// numbers (`indices`: an indexed draw's, or 0..count-1), into out[0, count), in Mesa's order for
+// the provoking vertex mode (provokingLast: VK_PROVOKING_VERTEX_MODE_LAST_VERTEX_EXT). Triangle k
+// depends on k alone, so a draw's ranges are assembled apart, each by the worker that draws it.
+inline void assembleTriangleRange(Topology topology, std::span<const std::uint32_t> indices, std::size_t first,
+                                  std::size_t count, TriangleIndices* out, bool provokingLast = false) {
   const auto at = [&](std::size_t k) { return indices[k]; };
+  const std::size_t end = first + count;
   switch (topology) {
     case Topology::TriangleList:
-      for (std::size_t k = 0; k + 2 < n; k += 3) triangles.push_back({at(k), at(k + 1), at(k + 2)});
+      for (std::size_t t = first; t < end; ++t) *out++ = {at(3 * t), at(3 * t + 1), at(3 * t + 2)};
       break;
     case Topology::TriangleStrip:
-      for (std::size_t k = 0; k + 2 < n; ++k) {
+      for (std::size_t k = first; k < end; ++k) {
         if (k % 2 == 0) {
-          triangles.push_back({at(k), at(k + 1), at(k + 2)});
+          *out++ = {at(k), at(k + 1), at(k + 2)};
         } else if (provokingLast) {
-          triangles.push_back({at(k + 1), at(k), at(k + 2)});
+          *out++ = {at(k + 1), at(k), at(k + 2)};
         } else {
-          triangles.push_back({at(k), at(k + 2), at(k + 1)});
+          *out++ = {at(k), at(k + 2), at(k + 1)};
         }
       }
       break;
     case Topology::TriangleFan:
-      for (std::size_t k = 0; k + 2 < n; ++k) {
+      for (std::size_t k = first; k < end; ++k) {
         if (provokingLast) {
-          triangles.push_back({at(0), at(k + 1), at(k + 2)});
+          *out++ = {at(0), at(k + 1), at(k + 2)};
         } else {
-          triangles.push_back({at(k + 1), at(k + 2), at(0)});
+          *out++ = {at(k + 1), at(k + 2), at(0)};
         }
       }
       break;
     case Topology::TriangleListWithAdjacency:
-      for (std::size_t k = 0; k + 5 < n; k += 6) triangles.push_back({at(k), at(k + 2), at(k + 4)});
+      for (std::size_t t = first; t < end; ++t) *out++ = {at(6 * t), at(6 * t + 2), at(6 * t + 4)};
       break;
     case Topology::TriangleStripWithAdjacency:
-      for (std::size_t k = 0; k + 5 < n; k += 2) {  // triangle k/2 on vertices k, k+2, k+4
-        if ((k & 2) == 0) {
-          triangles.push_back({at(k), at(k + 2), at(k + 4)});
+      for (std::size_t t = first; t < end; ++t) {  // triangle t on vertices 2t, 2t+2, 2t+4
+        const std::size_t k = 2 * t;
+        if (t % 2 == 0) {
+          *out++ = {at(k), at(k + 2), at(k + 4)};
         } else if (provokingLast) {
-          triangles.push_back({at(k + 2), at(k), at(k + 4)});
+          *out++ = {at(k + 2), at(k), at(k + 4)};
         } else {
-          triangles.push_back({at(k), at(k + 4), at(k + 2)});
+          *out++ = {at(k), at(k + 4), at(k + 2)};
         }
       }
       break;
     default:
       break;
   }
+}
+
+// The triangles of a whole draw into `triangles` (emptied first; its capacity is reused).
+inline void assembleTriangles(Topology topology, std::span<const std::uint32_t> indices,
+                              std::vector<TriangleIndices>& triangles, bool provokingLast = false) {
+  triangles.resize(triangleCount(topology, indices.size()));
+  assembleTriangleRange(topology, indices, 0, triangles.size(), triangles.data(), provokingLast);
 }
 
 inline std::vector<TriangleIndices> assembleTriangles(Topology topology, std::span<const std::uint32_t> indices,
@@ -159,9 +180,11 @@ inline std::vector<TriangleIndices> assembleTriangles(Topology topology, std::sp
 
 // The adjacency topologies' batches also fetch, and clip-test, the adjacent vertices of their
 // triangles [first, first + count): is any of those outside the frustum?
-template <int N>
+// `vertices`: the shaded vertices, or anything else with their clipMask (exact/draw.hpp's compact
+// copy of each vertex's snapped position and clip mask).
+template <class Vertex>
 inline bool adjacencyNeedsClipping(Topology topology, std::span<const std::uint32_t> indices, std::size_t first,
-                                   std::size_t count, const std::vector<ShadedVertex<N>>& vertices) {
+                                   std::size_t count, const std::vector<Vertex>& vertices) {
   std::size_t begin = 0, end = 0;
   if (topology == Topology::TriangleListWithAdjacency) {
     begin = 6 * first;
@@ -175,8 +198,8 @@ inline bool adjacencyNeedsClipping(Topology topology, std::span<const std::uint3
   return mask != 0;
 }
 
-template <int N>
-inline bool batchNeedsClipping(std::span<const TriangleIndices> batch, const std::vector<ShadedVertex<N>>& vertices) {
+template <class Vertex>
+inline bool batchNeedsClipping(std::span<const TriangleIndices> batch, const std::vector<Vertex>& vertices) {
   std::uint32_t mask = 0;
   for (const TriangleIndices& t : batch) mask |= vertices[t[0]].clipMask | vertices[t[1]].clipMask | vertices[t[2]].clipMask;
   return mask != 0;
