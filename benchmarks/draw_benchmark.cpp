@@ -2,7 +2,7 @@
 // (vertex_color, D32_SFLOAT), so it builds in a minute where crosscheck bench needs every model.
 // For profiling and tuning the exact method's fast path between full benches: frames of
 // the shapes crosscheck bench's scenes stress (a full-screen quad: pixels; spheres of 100k and 1M
-// triangles: the front end and the band queue; the 100k sphere in polygon mode line: lines;
+// triangles: the front end and the band queue, the 1M one also with back faces culled; the 100k sphere in polygon mode line: lines;
 // stacked quads: overdraw, and with 4x MSAA the per-sample walk; 20k small triangles in 10
 // draws: the walk of a triangle of a few blocks), at 1 and 2 threads.
 //   softraster_benchmarks --benchmark_filter=Sphere --benchmark_repetitions=5
@@ -95,10 +95,11 @@ std::vector<Mesh> smallTriangles(std::uint32_t count, std::uint32_t draws) {
   return meshes;
 }
 
-// One frame per iteration: clear, then each mesh as one indexed draw (depth LESS, no culling),
-// its triangles filled or as lines.
+// One frame per iteration: clear, then each mesh as one indexed draw (depth LESS, no culling
+// unless `cull` says), its triangles filled or as lines.
 void drawFrames(benchmark::State& bench, std::span<const Mesh> meshes,
-                softraster::PolygonMode mode = softraster::PolygonMode::Fill, std::uint32_t samples = 1) {
+                softraster::PolygonMode mode = softraster::PolygonMode::Fill, std::uint32_t samples = 1,
+                softraster::CullMode cull = softraster::CullMode::None) {
   softraster::ContextOptions options;
   options.threads = static_cast<unsigned>(bench.range(0));
   const softraster::Context context(options);
@@ -108,7 +109,7 @@ void drawFrames(benchmark::State& bench, std::span<const Mesh> meshes,
     return;
   }
   softraster::PipelineState state;
-  state.rasterization.cullMode = softraster::CullMode::None;
+  state.rasterization.cullMode = cull;
   state.rasterization.polygonMode = mode;
   Shader::Uniforms uniforms;
   uniforms.modelViewProjection = softraster::Mat4::identity();
@@ -130,8 +131,9 @@ void drawFrames(benchmark::State& bench, std::span<const Mesh> meshes,
   bench.counters["triangles"] = static_cast<double>(triangles);
 }
 void drawFrames(benchmark::State& bench, const Mesh& mesh,
-                softraster::PolygonMode mode = softraster::PolygonMode::Fill, std::uint32_t samples = 1) {
-  drawFrames(bench, std::span(&mesh, 1), mode, samples);
+                softraster::PolygonMode mode = softraster::PolygonMode::Fill, std::uint32_t samples = 1,
+                softraster::CullMode cull = softraster::CullMode::None) {
+  drawFrames(bench, std::span(&mesh, 1), mode, samples, cull);
 }
 
 void Sphere100k(benchmark::State& bench) {
@@ -145,6 +147,10 @@ void WireframeSphere100k(benchmark::State& bench) {
 void Sphere1M(benchmark::State& bench) {
   static const Mesh mesh = sphere(1'000'000);
   drawFrames(bench, mesh);
+}
+void Sphere1MCulled(benchmark::State& bench) {  // as scenes/bench/sphere_1m.json: back faces culled
+  static const Mesh mesh = sphere(1'000'000);
+  drawFrames(bench, mesh, softraster::PolygonMode::Fill, 1, softraster::CullMode::Back);
 }
 void FullScreenQuad(benchmark::State& bench) {
   static const Mesh mesh = quads(1, true);
@@ -172,6 +178,7 @@ void SmallTriangles(benchmark::State& bench) {
 BENCHMARK(Sphere100k)->ArgName("threads")->Arg(1)->Arg(2)->Unit(benchmark::kMillisecond)->MeasureProcessCPUTime()->UseRealTime();
 BENCHMARK(WireframeSphere100k)->ArgName("threads")->Arg(1)->Arg(2)->Unit(benchmark::kMillisecond)->MeasureProcessCPUTime()->UseRealTime();
 BENCHMARK(Sphere1M)->ArgName("threads")->Arg(1)->Arg(2)->Unit(benchmark::kMillisecond)->MeasureProcessCPUTime()->UseRealTime();
+BENCHMARK(Sphere1MCulled)->ArgName("threads")->Arg(1)->Arg(2)->Unit(benchmark::kMillisecond)->MeasureProcessCPUTime()->UseRealTime();
 BENCHMARK(FullScreenQuad)->ArgName("threads")->Arg(1)->Arg(2)->Unit(benchmark::kMillisecond)->MeasureProcessCPUTime()->UseRealTime();
 BENCHMARK(QuadStackBackToFront)->ArgName("threads")->Arg(1)->Arg(2)->Unit(benchmark::kMillisecond)->MeasureProcessCPUTime()->UseRealTime();
 BENCHMARK(QuadStackBackToFrontMsaa)->ArgName("threads")->Arg(1)->Arg(2)->Unit(benchmark::kMillisecond)->MeasureProcessCPUTime()->UseRealTime();
