@@ -1,5 +1,6 @@
-// Context::draw refuses states outside softraster's device limits (limits.hpp, lavapipe's) with
-// an error instead of drawing them, and states at the edge of what 32-bit integers hold draw
+// Context::draw refuses states outside softraster's device limits (limits.hpp, lavapipe's), and
+// drawIndexed an index past the last vertex (named wherever it lies), with an error instead of
+// drawing them, and states at the edge of what 32-bit integers hold draw
 // without overflow (run under UBSan in the sanitizer build).
 #include <softraster/limits.hpp>
 #include <softraster/pipeline.hpp>
@@ -153,6 +154,24 @@ TEST(DrawState, PrimitiveRestartIndexIsNoVertex) {
   const softraster::Status list = drawIndexed(state);
   ASSERT_FALSE(list.ok());
   EXPECT_NE(list.message().find("topology-06252"), std::string::npos) << list.message();
+}
+
+TEST(DrawState, DrawIndexedNamesTheOffendingIndexWhereverItLies) {
+  softraster::Framebuffer framebuffer = softraster::Framebuffer::create(8, 8).value();
+  const std::vector<White::Vertex> vertices{{{-1, -1, 0.5f}}, {{1, -1, 0.5f}}, {{-1, 1, 0.5f}}};
+  const softraster::Context context;
+  // 3 * 11 = 33 indices: 32 in largestIndex's AVX2 vectors and one in its tail.
+  for (const std::size_t at : {std::size_t{0}, std::size_t{9}, std::size_t{31}, std::size_t{32}}) {
+    std::vector<std::uint32_t> indices(33);
+    for (std::size_t i = 0; i < indices.size(); ++i) indices[i] = static_cast<std::uint32_t>(i % 3);
+    indices[at] = 3;
+    const softraster::Status status = context.drawIndexed<White>(
+        softraster::PipelineState{}, {}, std::span<const White::Vertex>(vertices), indices, framebuffer);
+    ASSERT_FALSE(status.ok()) << "index " << at;
+    EXPECT_NE(status.message().find("index " + std::to_string(at) + " (3) is past the last vertex (3 vertices)"),
+              std::string::npos)
+        << status.message();
+  }
 }
 
 TEST(DrawState, LineStippleAndTopologyRefusals) {

@@ -3,11 +3,11 @@
 //     exact/draw.hpp) are the whole draw's, and those follow Mesa's order as primitive_assembly.hpp
 //     writes it down, for every triangle topology, both provoking vertex modes and every length;
 //   - largestIndex (the AVX2 pass and its tail) is the plain maximum for every length, for values
-//     past 2^31 (an unsigned maximum), with and without primitive restart;
-//   - Context::drawIndexed names the offending index wherever it lies (in a vector, in the tail).
+//     past 2^31 (an unsigned maximum), with and without primitive restart (draw_state_test.cpp
+//     checks that Context::drawIndexed names the offending index wherever it lies).
 #include <softraster/detail/geometry/largest_index.hpp>
 #include <softraster/detail/geometry/primitive_assembly.hpp>
-#include <softraster/pipeline.hpp>
+#include <softraster/state.hpp>
 
 #include <gtest/gtest.h>
 
@@ -60,18 +60,6 @@ std::vector<TriangleIndices> reference(Topology topology, const std::vector<std:
   return out;
 }
 
-struct White {
-  struct Vertex {
-    softraster::Vec3 position;
-  };
-  struct Uniforms {};
-  static constexpr int kVaryings = 0;
-  static softraster::Vec4 vertex(const Uniforms&, const Vertex& v, float*) {
-    return {v.position.x, v.position.y, v.position.z, 1.0f};
-  }
-  static softraster::Vec4 fragment(const Uniforms&, const float*) { return {1, 1, 1, 1}; }
-};
-
 }  // namespace
 
 TEST(PrimitiveAssembly, RangesAssembledApartAreTheDrawInMesasOrder) {
@@ -87,8 +75,8 @@ TEST(PrimitiveAssembly, RangesAssembledApartAreTheDrawInMesasOrder) {
         SCOPED_TRACE("topology " + std::to_string(static_cast<int>(topology)) + ", " + std::to_string(n) +
                      " indices, provoking " + (last ? "last" : "first"));
         ASSERT_EQ(softraster::detail::triangleCount(topology, n), expected.size());
-        std::vector<TriangleIndices> whole;
-        softraster::detail::assembleTriangles(topology, indices, whole, last);
+        std::vector<TriangleIndices> whole(expected.size());
+        softraster::detail::assembleTriangleRange(topology, indices, 0, whole.size(), whole.data(), last);
         EXPECT_EQ(whole, expected);
         // Every cut into two ranges, each assembled on its own.
         for (std::size_t cut = 0; cut <= expected.size(); ++cut) {
@@ -128,22 +116,4 @@ TEST(LargestIndex, IsThePlainMaximumForEveryLengthAndRestart) {
   EXPECT_EQ(softraster::detail::largestIndex(std::vector<std::uint32_t>(37, kRestart), true), 0u);
   EXPECT_EQ(softraster::detail::largestIndex(std::vector<std::uint32_t>(37, kRestart), false), kRestart);
   EXPECT_EQ(softraster::detail::largestIndex({}, true), 0u);
-}
-
-TEST(LargestIndex, DrawIndexedNamesTheOffendingIndexWhereverItLies) {
-  softraster::Framebuffer framebuffer = softraster::Framebuffer::create(8, 8).value();
-  const std::vector<White::Vertex> vertices{{{-1, -1, 0.5f}}, {{1, -1, 0.5f}}, {{-1, 1, 0.5f}}};
-  const softraster::Context context;
-  // 3 * 11 = 33 indices: 32 in AVX2 vectors and one in the tail.
-  for (const std::size_t at : {std::size_t{0}, std::size_t{9}, std::size_t{31}, std::size_t{32}}) {
-    std::vector<std::uint32_t> indices(33);
-    for (std::size_t i = 0; i < indices.size(); ++i) indices[i] = static_cast<std::uint32_t>(i % 3);
-    indices[at] = 3;
-    const softraster::Status status = context.drawIndexed<White>(
-        softraster::PipelineState{}, {}, std::span<const White::Vertex>(vertices), indices, framebuffer);
-    ASSERT_FALSE(status.ok()) << "index " << at;
-    EXPECT_NE(status.message().find("index " + std::to_string(at) + " (3) is past the last vertex (3 vertices)"),
-              std::string::npos)
-        << status.message();
-  }
 }

@@ -164,20 +164,6 @@ inline void assembleTriangleRange(Topology topology, std::span<const std::uint32
   }
 }
 
-// The triangles of a whole draw into `triangles` (emptied first; its capacity is reused).
-inline void assembleTriangles(Topology topology, std::span<const std::uint32_t> indices,
-                              std::vector<TriangleIndices>& triangles, bool provokingLast = false) {
-  triangles.resize(triangleCount(topology, indices.size()));
-  assembleTriangleRange(topology, indices, 0, triangles.size(), triangles.data(), provokingLast);
-}
-
-inline std::vector<TriangleIndices> assembleTriangles(Topology topology, std::span<const std::uint32_t> indices,
-                                                      bool provokingLast = false) {
-  std::vector<TriangleIndices> triangles;
-  assembleTriangles(topology, indices, triangles, provokingLast);
-  return triangles;
-}
-
 // The adjacency topologies' batches also fetch, and clip-test, the adjacent vertices of their
 // triangles [first, first + count): is any of those outside the frustum?
 // `vertices`: the shaded vertices, or anything else with their clipMask (exact/draw.hpp's compact
