@@ -457,15 +457,16 @@ class ExactDraw {
   void drawLineHere(Worker& worker, const Vertex& a, const Vertex& b) {
     const bool sampled = multisample_ && !broadcastLines_;
     const float snapOffset = sampled ? 0.0f : kPixelCentreOffset;
-    const auto line = rs_.lineRasterization == LineRasterization::Bresenham
-                          ? setupBresenhamLine(a.window, b.window, rs_.lineWidth, snapOffset)
-                          : setupRectangularLine(a.window, b.window, rs_.lineWidth, snapOffset);
-    if (!line) return;
+    LineSetup line;
+    const bool drawn = rs_.lineRasterization == LineRasterization::Bresenham
+                           ? setupBresenhamLine(a.window, b.window, rs_.lineWidth, line, snapOffset)
+                           : setupRectangularLine(a.window, b.window, rs_.lineWidth, line, snapOffset);
+    if (!drawn) return;
     const bool specLines = sampled && specDeviations_;
     TriangleInterpolants<N> interpolants =
-        setupLineInterpolants(a, b, *line, kInterpolation, provokingLast_, specLines ? 0.0f : kPixelCentreOffset);
+        setupLineInterpolants(a, b, line, kInterpolation, provokingLast_, specLines ? 0.0f : kPixelCentreOffset);
     interpolants.frontFacing = worker.facingFront;
-    const QuadEdges& quad = line->quad;
+    const QuadEdges& quad = line.quad;
     if (!sampled) {
       if (broadcastLines_) {
         worker.sink.shadeBroadcast(quad.edges, quad.bounds, interpolants);

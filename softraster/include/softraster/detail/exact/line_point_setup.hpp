@@ -33,7 +33,6 @@
 #include <cmath>
 #include <cstdint>
 #include <initializer_list>
-#include <optional>
 
 namespace softraster::detail {
 
@@ -53,8 +52,14 @@ struct QuadEdges {
   PixelRect sampleBounds;  // every pixel a 4x sample inside the quad may be in (conservative)
 };
 
-inline QuadEdges quadEdges(const std::array<std::int32_t, 4>& x, const std::array<std::int32_t, 4>& y) {
-  QuadEdges q;
+// Written into q in place: a QuadEdges built in a temporary and copied (std::optional's
+// constructor copies) is read back with 16-byte loads over its 4- and 8-byte stores, a stalled
+// store forward per load (a fifth of a wireframe's line setup).
+// The short loops in this file are unrolled with #pragma GCC unroll: GCC 12 at -O2 keeps them as
+// loops, and a line's setup spent a quarter of its instructions on their control and on a switch
+// over the shader's constant interpolation it could not fold.
+inline void quadEdges(const std::array<std::int32_t, 4>& x, const std::array<std::int32_t, 4>& y, QuadEdges& q) {
+#pragma GCC unroll 4
   for (int i = 0; i < 4; ++i) {
     const int j = (i + 1) % 4;
     const std::int64_t dcdx = std::int64_t{y[i]} - y[j];
@@ -68,7 +73,6 @@ inline QuadEdges quadEdges(const std::array<std::int32_t, 4>& x, const std::arra
   q.bounds = {(minX + 255) >> kSubpixelBits, (minY + 255) >> kSubpixelBits, ((maxX + 255) >> kSubpixelBits) - 1,
               ((maxY + 255) >> kSubpixelBits) - 1};
   q.sampleBounds = {minX >> kSubpixelBits, minY >> kSubpixelBits, (maxX - 1) >> kSubpixelBits, (maxY - 1) >> kSubpixelBits};
-  return q;
 }
 
 // Snapped line coordinates beyond this (1/256 px; 2^20 pixels) are not drawn: clipping keeps real
@@ -77,10 +81,10 @@ inline QuadEdges quadEdges(const std::array<std::int32_t, 4>& x, const std::arra
 inline constexpr std::int32_t kMaxLineCoordinate = 1 << 28;
 
 inline bool lineCoordinatesInRange(std::initializer_list<std::int32_t> values) {
-  for (const std::int32_t v : values) {
-    if (v < -kMaxLineCoordinate || v > kMaxLineCoordinate) return false;
-  }
-  return true;
+  bool inRange = true;  // one branch for all of them
+#pragma GCC unroll 8
+  for (const std::int32_t v : values) inRange &= v >= -kMaxLineCoordinate && v <= kMaxLineCoordinate;
+  return inRange;
 }
 
 // A line's quad and the (possibly adjusted) deltas its attribute planes use.
@@ -90,30 +94,37 @@ struct LineSetup {
 };
 
 // pixelOffset: subtracted before snapping, kPixelCentreOffset with one sample, 0 with 4x MSAA.
-inline std::optional<LineSetup> setupRectangularLine(Vec4 v1, Vec4 v2, float width,
-                                                     float pixelOffset = kPixelCentreOffset) {
+// The two line setups fill `line` in place (no copy, no zeroing: see quadEdges) and return
+// whether the line is drawn: false for a line of no length or one beyond kMaxLineCoordinate.
+inline bool setupRectangularLine(Vec4 v1, Vec4 v2, float width, LineSetup& line,
+                                 float pixelOffset = kPixelCentreOffset) {
   const float dx = v1.x - v2.x, dy = v1.y - v2.y;
   const float area = dx * dx + dy * dy;
-  if (area == 0) return std::nullopt;
+  if (area == 0) return false;
   const float scale = (width * 0.5f) / std::sqrt(area);
   const std::int32_t tx = snapLineCoordinate(-dy * scale);
   const std::int32_t ty = snapLineCoordinate(dx * scale);
   const std::int32_t x1 = snapLineCoordinate(v1.x - pixelOffset), y1 = snapLineCoordinate(v1.y - pixelOffset);
   const std::int32_t x2 = snapLineCoordinate(v2.x - pixelOffset), y2 = snapLineCoordinate(v2.y - pixelOffset);
-  if (!lineCoordinatesInRange({tx, ty, x1, y1, x2, y2})) return std::nullopt;
-  return LineSetup{quadEdges({x1 - tx, x2 - tx, x2 + tx, x1 + tx}, {y1 - ty, y2 - ty, y2 + ty, y1 + ty}), dx, dy,
-                   1.0f / area};
+  if (!lineCoordinatesInRange({tx, ty, x1, y1, x2, y2})) return false;
+  quadEdges({x1 - tx, x2 - tx, x2 + tx, x1 + tx}, {y1 - ty, y2 - ty, y2 + ty, y1 + ty}, line.quad);
+  line.dx = dx;
+  line.dy = dy;
+  line.oneOverArea = 1.0f / area;
+  return true;
 }
 
 // GL's diamond-exit line (VK_EXT_line_rasterization BRESENHAM), following lp_setup_line.c.
 // pixelOffset as for setupRectangularLine (polygon mode line with 4x MSAA snaps without it).
-inline std::optional<LineSetup> setupBresenhamLine(Vec4 v1, Vec4 v2, float lineWidth, float pixelOffset = kPixelCentreOffset) {
+inline bool setupBresenhamLine(Vec4 v1, Vec4 v2, float lineWidth, LineSetup& line, float pixelOffset = kPixelCentreOffset) {
   const auto positive = [](float x) { return x >= 0; };  // Mesa's sign()
   const auto fracf = [](float f) { return f - std::floor(f); };
   float dx = v1.x - v2.x, dy = v1.y - v2.y;
   const float area = dx * dx + dy * dy;
-  if (area == 0) return std::nullopt;
-  LineSetup line{{}, dx, dy, 1.0f / area};
+  if (area == 0) return false;
+  line.dx = dx;
+  line.dy = dy;
+  line.oneOverArea = 1.0f / area;
   const std::int32_t fixedWidth = iroundHalfAway(std::max(1.0f, lineWidth)) * 256;
   float xOffset = 0, yOffset = 0, xOffsetEnd = 0, yOffsetEnd = 0;
   float x1diff = v1.x - std::floor(v1.x) - 0.5f, y1diff = v1.y - std::floor(v1.y) - 0.5f;
@@ -162,7 +173,7 @@ inline std::optional<LineSetup> setupBresenhamLine(Vec4 v1, Vec4 v2, float lineW
     const std::int32_t bx = snapLineCoordinate(v2.x + xOffsetEnd - pixelOffset);
     const std::int32_t ay = snapLineCoordinate(v1.y + yOffset - pixelOffset);
     const std::int32_t by = snapLineCoordinate(v2.y + yOffsetEnd - pixelOffset);
-    if (!lineCoordinatesInRange({ax, bx, ay, by, fixedWidth})) return std::nullopt;
+    if (!lineCoordinatesInRange({ax, bx, ay, by, fixedWidth})) return false;
     x = {ax, bx, bx, ax};
     y = {ay - fixedWidth / 2, by - fixedWidth / 2, by + fixedWidth / 2, ay + fixedWidth / 2};
   } else {  // y-major
@@ -207,12 +218,12 @@ inline std::optional<LineSetup> setupBresenhamLine(Vec4 v1, Vec4 v2, float lineW
     const std::int32_t bx = snapLineCoordinate(v2.x + xOffsetEnd - pixelOffset);
     const std::int32_t ay = snapLineCoordinate(v1.y + yOffset - pixelOffset);
     const std::int32_t by = snapLineCoordinate(v2.y + yOffsetEnd - pixelOffset);
-    if (!lineCoordinatesInRange({ax, bx, ay, by, fixedWidth})) return std::nullopt;
+    if (!lineCoordinatesInRange({ax, bx, ay, by, fixedWidth})) return false;
     x = {ax - fixedWidth / 2, bx - fixedWidth / 2, bx + fixedWidth / 2, ax + fixedWidth / 2};
     y = {ay, by, by, ay};
   }
-  line.quad = quadEdges(x, y);
-  return line;
+  quadEdges(x, y, line.quad);
+  return true;
 }
 
 // Attribute planes of a line from its first vertex v1 (lp_setup_line.c linear_coef):
@@ -236,6 +247,7 @@ inline TriangleInterpolants<N> setupLineInterpolants(const ShadedVertex<N>& v1, 
   TriangleInterpolants<N> t;
   t.depth = linear(v1.window.z, v2.window.z);
   t.oneOverW = linear(v1.window.w, v2.window.w);
+#pragma GCC unroll 16
   for (int i = 0; i < N; ++i) {
     switch (interpolation[static_cast<std::size_t>(i)]) {
       case Interpolation::Perspective:
@@ -304,6 +316,7 @@ inline TriangleInterpolants<N> setupPointInterpolants(const ShadedVertex<N>& v, 
   TriangleInterpolants<N> t;
   t.depth = {v.window.z, 0.0f, 0.0f};
   t.oneOverW = {v.window.w, 0.0f, 0.0f};
+#pragma GCC unroll 16
   for (int i = 0; i < N; ++i) {
     const bool perspective = interpolation[static_cast<std::size_t>(i)] == Interpolation::Perspective;
     t.varyings[i] = {perspective ? v.varyings[i] * v.window.w : v.varyings[i], 0.0f, 0.0f};
