@@ -4,7 +4,7 @@
 // scissors, stencil, the mutable depthStorage() in between) give the fast path the scalar
 // method's bytes on 1 and 3 threads while every tile's bounds hold every stored depth. Also: the
 // fast path's one-clamp clampDepth gives the scalar two-clamp bits for every depth range a draw
-// can have.
+// can have. And the parallel front end's rounds of every size give the scalar method's bytes.
 #include <softraster/detail/fast/batch.hpp>
 #include <softraster/detail/fast/depth_tiles.hpp>
 #include <softraster/pipeline.hpp>
@@ -14,10 +14,12 @@
 #include <algorithm>
 #include <bit>
 #include <cmath>
+#include <cstddef>
 #include <cstdint>
 #include <limits>
 #include <random>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace {
@@ -306,5 +308,55 @@ TEST(DepthTiles, RandomDrawsMatchTheScalarMethodAndKeepTrueBounds) {
         }
       }
     }
+  }
+}
+
+// The parallel front end's rounds (exact/draw.hpp) are sized by the records the round before
+// kept: a draw whose culled and visible runs of small triangles give rounds of every size, filled
+// and in polygon mode line (three records a triangle), gives the fast path on 2 and 3 threads the
+// scalar method's bytes.
+TEST(ParallelFrontEnd, RoundsOfEverySizeMatchTheScalarMethod) {
+  if (!fastPathHere()) GTEST_SKIP() << "no fast path here";
+  std::mt19937 random(11);
+  std::uniform_real_distribution<float> unit(0.0f, 1.0f);
+  // Runs of tiny triangles of one winding, then the other (one of the two is culled).
+  std::vector<Colour::Vertex> vertices;
+  for (const auto& [count, clockwise] : {std::pair{40000, true}, std::pair{90000, false}, std::pair{30000, true},
+                                        std::pair{20000, false}}) {
+    for (int t = 0; t < count; ++t) {
+      const float x = -1.0f + 2.0f * unit(random), y = -1.0f + 2.0f * unit(random), z = unit(random);
+      const float size = 0.004f + 0.02f * unit(random);
+      const softraster::Vec4 c{unit(random), unit(random), unit(random), 1};
+      vertices.push_back({{x, y, z}, c});
+      vertices.push_back(clockwise ? Colour::Vertex{{x, y + size, z}, c} : Colour::Vertex{{x + size, y, z}, c});
+      vertices.push_back(clockwise ? Colour::Vertex{{x + size, y, z}, c} : Colour::Vertex{{x, y + size, z}, c});
+    }
+  }
+  const std::span<const Colour::Vertex> span(vertices);
+  for (const softraster::PolygonMode mode : {softraster::PolygonMode::Fill, softraster::PolygonMode::Line}) {
+    softraster::PipelineState state;
+    state.rasterization.cullMode = softraster::CullMode::Back;
+    state.rasterization.polygonMode = mode;
+    softraster::ContextOptions options;
+    options.method = softraster::Method::ExactScalar;
+    options.threads = 1;
+    Framebuffer scalar = Framebuffer::create(320, 240, DepthFormat::D32Sfloat).value();
+    scalar.clear({0, 0, 0, 1}, 1.0f);
+    ASSERT_TRUE(softraster::Context(options).draw<Colour>(state, {}, span, scalar).ok());
+    for (const unsigned threads : {2u, 3u}) {
+      options.method = softraster::Method::Exact;
+      options.threads = threads;
+      Framebuffer fast = Framebuffer::create(320, 240, DepthFormat::D32Sfloat).value();
+      fast.clear({0, 0, 0, 1}, 1.0f);
+      ASSERT_TRUE(softraster::Context(options).draw<Colour>(state, {}, span, fast).ok());
+      const std::string where = std::to_string(threads) + " threads, polygon mode " + std::to_string(static_cast<int>(mode));
+      EXPECT_TRUE(std::equal(FramebufferAccess::depthWords(fast), FramebufferAccess::depthWords(fast) + 320 * 240,
+                             FramebufferAccess::depthWords(scalar)))
+          << where << ": depth differs";
+      EXPECT_TRUE(fast.colour() == scalar.colour()) << where << ": colour differs";
+    }
+    // Something was drawn, and something culled.
+    EXPECT_NE(std::count(scalar.colour().begin(), scalar.colour().end(), std::uint8_t{0}),
+              static_cast<std::ptrdiff_t>(scalar.colour().size()) * 3 / 4);
   }
 }

@@ -10,7 +10,7 @@
 // then list 1's, and so on; worker k's primitives come after worker k-1's in the draw, so that is
 // submission order. Every pixel belongs to exactly one band and sees its primitives in submission
 // order, so the output is the same bits whatever the thread count (tests/crosscheck/fast_path_test.cpp).
-// Rounds are bounded by the draw loop (kRoundPrimitives there), so memory stays bounded for any
+// Rounds are bounded by the draw loop (kMaxRoundPrimitives there), so memory stays bounded for any
 // draw; the records and bins are the Context's scratch (exact/scratch.hpp), so a draw allocates none.
 // A clear pending on the framebuffer (Framebuffer::clear) is written by the first round, each
 // band's rows (full width) by the band's thread just before it draws them; rows outside the
@@ -178,12 +178,14 @@ class BandQueue {
   }
 
   // Draws what the recorders recorded in this round; the front end calls it between rounds and
-  // once at the end of the draw.
-  void endRound() {
-    if (direct_) return;
-    bool empty = true;
-    for (const List& list : lists_) empty = empty && list.records.empty();
-    if (!empty || framebuffer_.clearPending()) flush();
+  // once at the end of the draw. Returns the bytes of records the round kept (the draw loop
+  // sizes its next round by them).
+  std::size_t endRound() {
+    if (direct_) return 0;
+    std::size_t records = 0;
+    for (const List& list : lists_) records += list.records.size();
+    if (records != 0 || framebuffer_.clearPending()) flush();
+    return records * sizeof(Record);
   }
 
  private:
