@@ -12,8 +12,8 @@
 // Primitives reach the fragment stage in submission order; with more than one thread the band
 // queue (fast/bands.hpp) draws them band by band in parallel, each band in that order.
 // With more than one thread the front end runs in parallel too, in rounds of primitives sized
-// by the records they keep: the vertices are shaded in ranges, and a round's primitives are cut into
-// consecutive ranges (whole vertex batches for triangles), each run by one front-end worker
+// by the records they keep: the vertices are shaded in ranges, and a round's primitives are cut
+// into consecutive ranges (whole vertex batches for triangles), each run by one front-end worker
 // (its clipping scratch, and a recorder of the band queue with a list of its own); then the
 // band queue draws the round. A worker's range follows the one before it in the draw, so the
 // bands see the primitives in submission order and the output does not depend on the threads.
@@ -166,6 +166,14 @@ class ExactDraw {
   static constexpr std::size_t kRoundRecordBytes = std::size_t{12} << 20;
   static constexpr std::size_t kMinRoundPrimitives = 1u << 12, kMaxRoundPrimitives = 1u << 17;
   static constexpr std::size_t kFirstRoundPrimitives = 1u << 15;
+
+  // The primitives of the round after one of `primitives` that kept `bytes` of records.
+  static std::size_t nextRoundPrimitives(std::size_t bytes, std::size_t primitives) {
+    if (bytes == 0) return kMaxRoundPrimitives;
+    const double next = static_cast<double>(kRoundRecordBytes) * static_cast<double>(primitives) / static_cast<double>(bytes);
+    return static_cast<std::size_t>(
+        std::clamp(next, static_cast<double>(kMinRoundPrimitives), static_cast<double>(kMaxRoundPrimitives)));
+  }
   // The fewest primitives a draw needs before its front end is shared out: fewer are set up by
   // the calling thread in one round. A batch of the pool costs a few microseconds (its threads
   // spin between batches), so a draw of a few hundred primitives already gains from sharing its
@@ -195,10 +203,7 @@ class ExactDraw {
         Worker worker{fragments_.recorder(static_cast<unsigned>(k)), {}, true, 0};
         range(worker, begin, std::min(end, begin + per));
       });
-      const std::size_t bytes = fragments_.endRound();
-      const double perPrimitive = static_cast<double>(bytes) / static_cast<double>(end - start);
-      const double next = perPrimitive > 0 ? static_cast<double>(kRoundRecordBytes) / perPrimitive : double(kMaxRoundPrimitives);
-      round = static_cast<std::size_t>(std::clamp(next, double(kMinRoundPrimitives), double(kMaxRoundPrimitives)));
+      round = nextRoundPrimitives(fragments_.endRound(), end - start);
     }
   }
 
