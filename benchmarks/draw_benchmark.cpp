@@ -2,9 +2,11 @@
 // (vertex_color, D32_SFLOAT), so it builds in a minute where crosscheck bench needs every model.
 // For profiling and tuning the exact method's fast path between full benches: frames of
 // the shapes crosscheck bench's scenes stress (a full-screen quad: pixels; spheres of 100k and 1M
-// triangles: the front end and the band queue, the 1M one also with back faces culled; the 100k sphere in polygon mode line: lines;
-// stacked quads: overdraw, and with 4x MSAA the per-sample walk; 20k small triangles in 10
-// draws: the walk of a triangle of a few blocks), at 1 and 2 threads.
+// triangles: the front end and the band queue, the 1M one also with back faces culled; the 100k
+// sphere in polygon mode line: lines; stacked quads: overdraw, and with 4x MSAA the per-sample
+// walk; 20k small triangles in 10 draws: the walk of a triangle of a few blocks), at 1 and 2
+// threads. The three whose time is most per primitive also run cold (`...Cold`: the caches
+// filled with other data before each frame, as the bench's alternating frames leave them).
 //   softraster_benchmarks --benchmark_filter=Sphere --benchmark_repetitions=5
 // Deliberately not a replacement for `crosscheck bench`: no lavapipe beside it, no agreement
 // check; times are the machine's (shared and noisy: compare medians, side by side). "CPU" is the
@@ -95,27 +97,51 @@ std::vector<Mesh> smallTriangles(std::uint32_t count, std::uint32_t draws) {
   return meshes;
 }
 
-// One frame per iteration: clear, then each mesh as one indexed draw (depth LESS, no culling
-// unless `cull` says), its triangles filled or as lines.
-void drawFrames(benchmark::State& bench, std::span<const Mesh> meshes,
-                softraster::PolygonMode mode = softraster::PolygonMode::Fill, std::uint32_t samples = 1,
-                softraster::CullMode cull = softraster::CullMode::None) {
+// How drawFrames draws: its triangles filled or as lines, the samples, the culling, and whether
+// each frame starts cold.
+struct FrameOptions {
+  softraster::PolygonMode mode = softraster::PolygonMode::Fill;
+  std::uint32_t samples = 1;
+  softraster::CullMode cull = softraster::CullMode::None;
+  // Before each frame (untimed), write a buffer far larger than the last-level cache, so the frame
+  // finds neither the framebuffer nor the vertices in any cache: as in `crosscheck bench`, where
+  // lavapipe's frame runs between two of softraster's. Warm frames hide the wait on memory that
+  // a small primitive's first depth read has there (20k small triangles: 3.4-3.7 ms warm,
+  // 4.7 ms in the bench, 2 threads).
+  bool cold = false;
+};
+
+// Writes one byte in every 64 of `buffer`: each of its cache lines once.
+void writeEveryLine(std::vector<unsigned char>& buffer) {
+  for (std::size_t i = 0; i < buffer.size(); i += 64) buffer[i] = static_cast<unsigned char>(buffer[i] + 1);
+  benchmark::DoNotOptimize(buffer.data());
+  benchmark::ClobberMemory();
+}
+
+// One frame per iteration: clear, then each mesh as one indexed draw (depth LESS).
+void drawFrames(benchmark::State& bench, std::span<const Mesh> meshes, const FrameOptions& how = {}) {
   softraster::ContextOptions options;
   options.threads = static_cast<unsigned>(bench.range(0));
   const softraster::Context context(options);
-  auto framebuffer = softraster::Framebuffer::create(kWidth, kHeight, softraster::DepthFormat::D32Sfloat, samples);
+  auto framebuffer = softraster::Framebuffer::create(kWidth, kHeight, softraster::DepthFormat::D32Sfloat, how.samples);
   if (!framebuffer) {
     bench.SkipWithError(framebuffer.error().c_str());
     return;
   }
   softraster::PipelineState state;
-  state.rasterization.cullMode = cull;
-  state.rasterization.polygonMode = mode;
+  state.rasterization.cullMode = how.cull;
+  state.rasterization.polygonMode = how.mode;
   Shader::Uniforms uniforms;
   uniforms.modelViewProjection = softraster::Mat4::identity();
   std::size_t triangles = 0;
   for (const Mesh& mesh : meshes) triangles += mesh.indices.size() / 3;
+  std::vector<unsigned char> evict(how.cold ? std::size_t{256} << 20 : 0);
   for (auto _ : bench) {
+    if (how.cold) {
+      bench.PauseTiming();
+      writeEveryLine(evict);
+      bench.ResumeTiming();
+    }
     framebuffer->clear({0, 0, 0, 1}, 1.0f);
     for (const Mesh& mesh : meshes) {
       const softraster::Status status = context.drawIndexed<Shader, softraster::DepthFormat::D32Sfloat>(
@@ -130,10 +156,8 @@ void drawFrames(benchmark::State& bench, std::span<const Mesh> meshes,
   }
   bench.counters["triangles"] = static_cast<double>(triangles);
 }
-void drawFrames(benchmark::State& bench, const Mesh& mesh,
-                softraster::PolygonMode mode = softraster::PolygonMode::Fill, std::uint32_t samples = 1,
-                softraster::CullMode cull = softraster::CullMode::None) {
-  drawFrames(bench, std::span(&mesh, 1), mode, samples, cull);
+void drawFrames(benchmark::State& bench, const Mesh& mesh, const FrameOptions& how = {}) {
+  drawFrames(bench, std::span(&mesh, 1), how);
 }
 
 void Sphere100k(benchmark::State& bench) {
@@ -142,7 +166,7 @@ void Sphere100k(benchmark::State& bench) {
 }
 void WireframeSphere100k(benchmark::State& bench) {
   static const Mesh mesh = sphere(100'000);
-  drawFrames(bench, mesh, softraster::PolygonMode::Line);
+  drawFrames(bench, mesh, {.mode = softraster::PolygonMode::Line});
 }
 void Sphere1M(benchmark::State& bench) {
   static const Mesh mesh = sphere(1'000'000);
@@ -150,7 +174,7 @@ void Sphere1M(benchmark::State& bench) {
 }
 void Sphere1MCulled(benchmark::State& bench) {  // as scenes/bench/sphere_1m.json: back faces culled
   static const Mesh mesh = sphere(1'000'000);
-  drawFrames(bench, mesh, softraster::PolygonMode::Fill, 1, softraster::CullMode::Back);
+  drawFrames(bench, mesh, {.cull = softraster::CullMode::Back});
 }
 void FullScreenQuad(benchmark::State& bench) {
   static const Mesh mesh = quads(1, true);
@@ -166,11 +190,24 @@ void QuadStackFrontToBack(benchmark::State& bench) {
 }
 void QuadStackBackToFrontMsaa(benchmark::State& bench) {
   static const Mesh mesh = quads(4, true);
-  drawFrames(bench, mesh, softraster::PolygonMode::Fill, 4);
+  drawFrames(bench, mesh, {.samples = 4});
 }
 void SmallTriangles(benchmark::State& bench) {
   static const std::vector<Mesh> meshes = smallTriangles(20'000, 10);
   drawFrames(bench, meshes);
+}
+// Cold frames (FrameOptions::cold) of the scenes whose time is most per primitive.
+void SmallTrianglesCold(benchmark::State& bench) {
+  static const std::vector<Mesh> meshes = smallTriangles(20'000, 10);
+  drawFrames(bench, meshes, {.cold = true});
+}
+void Sphere100kCold(benchmark::State& bench) {
+  static const Mesh mesh = sphere(100'000);
+  drawFrames(bench, mesh, {.cold = true});
+}
+void WireframeSphere100kCold(benchmark::State& bench) {
+  static const Mesh mesh = sphere(100'000);
+  drawFrames(bench, mesh, {.mode = softraster::PolygonMode::Line, .cold = true});
 }
 
 }  // namespace
@@ -184,5 +221,8 @@ BENCHMARK(QuadStackBackToFront)->ArgName("threads")->Arg(1)->Arg(2)->Unit(benchm
 BENCHMARK(QuadStackBackToFrontMsaa)->ArgName("threads")->Arg(1)->Arg(2)->Unit(benchmark::kMillisecond)->MeasureProcessCPUTime()->UseRealTime();
 BENCHMARK(SmallTriangles)->ArgName("threads")->Arg(1)->Arg(2)->Unit(benchmark::kMillisecond)->MeasureProcessCPUTime()->UseRealTime();
 BENCHMARK(QuadStackFrontToBack)->ArgName("threads")->Arg(1)->Arg(2)->Unit(benchmark::kMillisecond)->MeasureProcessCPUTime()->UseRealTime();
+BENCHMARK(SmallTrianglesCold)->ArgName("threads")->Arg(1)->Arg(2)->Unit(benchmark::kMillisecond)->MeasureProcessCPUTime()->UseRealTime();
+BENCHMARK(Sphere100kCold)->ArgName("threads")->Arg(1)->Arg(2)->Unit(benchmark::kMillisecond)->MeasureProcessCPUTime()->UseRealTime();
+BENCHMARK(WireframeSphere100kCold)->ArgName("threads")->Arg(1)->Arg(2)->Unit(benchmark::kMillisecond)->MeasureProcessCPUTime()->UseRealTime();
 
 BENCHMARK_MAIN();
