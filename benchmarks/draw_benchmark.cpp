@@ -160,21 +160,31 @@ void drawFrames(benchmark::State& bench, const Mesh& mesh, const FrameOptions& h
   drawFrames(bench, std::span(&mesh, 1), how);
 }
 
-void Sphere100k(benchmark::State& bench) {
+// The meshes several benchmarks draw, each made once (on first use).
+const Mesh& sphere100k() {
   static const Mesh mesh = sphere(100'000);
-  drawFrames(bench, mesh);
+  return mesh;
+}
+const Mesh& sphere1M() {
+  static const Mesh mesh = sphere(1'000'000);
+  return mesh;
+}
+const std::vector<Mesh>& smallTriangles20k() {
+  static const std::vector<Mesh> meshes = smallTriangles(20'000, 10);
+  return meshes;
+}
+
+void Sphere100k(benchmark::State& bench) {
+  drawFrames(bench, sphere100k());
 }
 void WireframeSphere100k(benchmark::State& bench) {
-  static const Mesh mesh = sphere(100'000);
-  drawFrames(bench, mesh, {.mode = softraster::PolygonMode::Line});
+  drawFrames(bench, sphere100k(), {.mode = softraster::PolygonMode::Line});
 }
 void Sphere1M(benchmark::State& bench) {
-  static const Mesh mesh = sphere(1'000'000);
-  drawFrames(bench, mesh);
+  drawFrames(bench, sphere1M());
 }
 void Sphere1MCulled(benchmark::State& bench) {  // as scenes/bench/sphere_1m.json: back faces culled
-  static const Mesh mesh = sphere(1'000'000);
-  drawFrames(bench, mesh, {.cull = softraster::CullMode::Back});
+  drawFrames(bench, sphere1M(), {.cull = softraster::CullMode::Back});
 }
 void FullScreenQuad(benchmark::State& bench) {
   static const Mesh mesh = quads(1, true);
@@ -193,21 +203,17 @@ void QuadStackBackToFrontMsaa(benchmark::State& bench) {
   drawFrames(bench, mesh, {.samples = 4});
 }
 void SmallTriangles(benchmark::State& bench) {
-  static const std::vector<Mesh> meshes = smallTriangles(20'000, 10);
-  drawFrames(bench, meshes);
+  drawFrames(bench, smallTriangles20k());
 }
 // Cold frames (FrameOptions::cold) of the scenes whose time is most per primitive.
 void SmallTrianglesCold(benchmark::State& bench) {
-  static const std::vector<Mesh> meshes = smallTriangles(20'000, 10);
-  drawFrames(bench, meshes, {.cold = true});
+  drawFrames(bench, smallTriangles20k(), {.cold = true});
 }
 void Sphere100kCold(benchmark::State& bench) {
-  static const Mesh mesh = sphere(100'000);
-  drawFrames(bench, mesh, {.cold = true});
+  drawFrames(bench, sphere100k(), {.cold = true});
 }
 void WireframeSphere100kCold(benchmark::State& bench) {
-  static const Mesh mesh = sphere(100'000);
-  drawFrames(bench, mesh, {.mode = softraster::PolygonMode::Line, .cold = true});
+  drawFrames(bench, sphere100k(), {.mode = softraster::PolygonMode::Line, .cold = true});
 }
 
 }  // namespace
