@@ -1,5 +1,6 @@
-// softraster's draw loop timed with Google Benchmark, one translation unit with one shading model
-// (vertex_color, D32_SFLOAT), so it builds in a minute where crosscheck bench needs every model.
+// softraster's draw loop timed with Google Benchmark, one translation unit with two shading models
+// (vertex_color, and Blinn-Phong per pixel for one quad; D32_SFLOAT), so it builds in a minute
+// where crosscheck bench needs every model.
 // For profiling and tuning the exact method's fast path between full benches: frames of
 // the shapes crosscheck bench's scenes stress (a full-screen quad: pixels; spheres of 100k and 1M
 // triangles: the front end and the band queue, the 1M one also with back faces culled; the 100k
@@ -7,10 +8,12 @@
 // walk; 20k small triangles in 10 draws: the walk of a triangle of a few blocks), at 1 and 2
 // threads. The three whose time is most per primitive also run cold (`...Cold`: the caches
 // filled with other data before each frame, as the bench's alternating frames leave them).
+// PhongQuad: a full-screen quad lit per pixel, the cost of a real fragment shader.
 //   softraster_benchmarks --benchmark_filter=Sphere --benchmark_repetitions=5
 // Deliberately not a replacement for `crosscheck bench`: no lavapipe beside it, no agreement
 // check; times are the machine's (shared and noisy: compare medians, side by side). "CPU" is the
 // whole process's (every thread's), so a thread count's overhead shows even on a loaded machine.
+#include "lit.hpp"
 #include "vertex_color.hpp"
 
 #include <softraster/pipeline.hpp>
@@ -21,17 +24,21 @@
 #include <cstdint>
 #include <numbers>
 #include <span>
+#include <utility>
 #include <vector>
 
 namespace {
 
 using Shader = shaders::VertexColor;
+using PhongShader = shaders::BlinnPhongPixel;
 constexpr std::uint32_t kWidth = 1920, kHeight = 1080;
 
-struct Mesh {
-  std::vector<Shader::Vertex> vertices;
+template <class S>
+struct MeshOf {
+  std::vector<typename S::Vertex> vertices;
   std::vector<std::uint32_t> indices;
 };
+using Mesh = MeshOf<Shader>;
 
 // A sphere of about `triangles` triangles in clip space (x, y in [-0.9, 0.9] scaled to the
 // aspect ratio, z in [0.1, 0.9]), latitude by longitude, coloured by position.
@@ -119,7 +126,9 @@ void writeEveryLine(std::vector<unsigned char>& buffer) {
 }
 
 // One frame per iteration: clear, then each mesh as one indexed draw (depth LESS).
-void drawFrames(benchmark::State& bench, std::span<const Mesh> meshes, const FrameOptions& how = {}) {
+template <class S>
+void drawFrames(benchmark::State& bench, std::span<const MeshOf<S>> meshes, const typename S::Uniforms& uniforms,
+                const FrameOptions& how) {
   softraster::ContextOptions options;
   options.threads = static_cast<unsigned>(bench.range(0));
   const softraster::Context context(options);
@@ -131,10 +140,8 @@ void drawFrames(benchmark::State& bench, std::span<const Mesh> meshes, const Fra
   softraster::PipelineState state;
   state.rasterization.cullMode = how.cull;
   state.rasterization.polygonMode = how.mode;
-  Shader::Uniforms uniforms;
-  uniforms.modelViewProjection = softraster::Mat4::identity();
   std::size_t triangles = 0;
-  for (const Mesh& mesh : meshes) triangles += mesh.indices.size() / 3;
+  for (const MeshOf<S>& mesh : meshes) triangles += mesh.indices.size() / 3;
   std::vector<unsigned char> evict(how.cold ? std::size_t{256} << 20 : 0);
   for (auto _ : bench) {
     if (how.cold) {
@@ -143,8 +150,8 @@ void drawFrames(benchmark::State& bench, std::span<const Mesh> meshes, const Fra
       bench.ResumeTiming();
     }
     framebuffer->clear({0, 0, 0, 1}, 1.0f);
-    for (const Mesh& mesh : meshes) {
-      const softraster::Status status = context.drawIndexed<Shader, softraster::DepthFormat::D32Sfloat>(
+    for (const MeshOf<S>& mesh : meshes) {
+      const softraster::Status status = context.drawIndexed<S, softraster::DepthFormat::D32Sfloat>(
           state, uniforms, mesh.vertices, mesh.indices, *framebuffer);
       if (!status) {
         bench.SkipWithError(status.message().c_str());
@@ -155,6 +162,12 @@ void drawFrames(benchmark::State& bench, std::span<const Mesh> meshes, const Fra
     benchmark::ClobberMemory();
   }
   bench.counters["triangles"] = static_cast<double>(triangles);
+}
+// vertex_color's meshes, in clip space.
+void drawFrames(benchmark::State& bench, std::span<const Mesh> meshes, const FrameOptions& how = {}) {
+  Shader::Uniforms uniforms;
+  uniforms.modelViewProjection = softraster::Mat4::identity();
+  drawFrames<Shader>(bench, meshes, uniforms, how);
 }
 void drawFrames(benchmark::State& bench, const Mesh& mesh, const FrameOptions& how = {}) {
   drawFrames(bench, std::span(&mesh, 1), how);
@@ -216,8 +229,32 @@ void WireframeSphere100kCold(benchmark::State& bench) {
   drawFrames(bench, sphere100k(), {.mode = softraster::PolygonMode::Line, .cold = true});
 }
 
+// A full-screen quad lit per pixel with Blinn-Phong (as scenes/bench/phong_quad_1080p.json):
+// the shader's arithmetic on every pixel. Clip space is the lighting space here, so the eye
+// looks from the origin at a plane facing it, with the light in front of it.
+void PhongQuad(benchmark::State& bench) {
+  static const MeshOf<PhongShader> mesh = [] {
+    MeshOf<PhongShader> m;
+    for (const auto& [x, y] : {std::pair{-1.0f, -1.0f}, {1.0f, -1.0f}, {-1.0f, 1.0f}, {1.0f, 1.0f}}) {
+      m.vertices.push_back({{x, y, 0.5f}, {0.0f, 0.0f, -1.0f}, {0.5f + 0.4f * x, 0.5f + 0.4f * y, 0.6f, 1.0f}});
+    }
+    m.indices = {0, 2, 1, 1, 2, 3};
+    return m;
+  }();
+  PhongShader::Uniforms u;
+  u.modelViewProjection = softraster::Mat4::identity();
+  u.modelToLighting = softraster::Mat4::identity();
+  u.normalToLighting = softraster::Mat4::identity();
+  u.lightPosition = {0.4f, -0.3f, -0.1f, 1.0f};
+  u.lightPower = {1.0f, 0.95f, 0.9f, 0.0f};
+  u.indirect = {0.1f, 0.1f, 0.1f, 0.0f};
+  u.specular = {0.6f, 0.6f, 0.6f, 48.0f};
+  drawFrames<PhongShader>(bench, std::span(&mesh, 1), u, {});
+}
+
 }  // namespace
 
+BENCHMARK(PhongQuad)->ArgName("threads")->Arg(1)->Arg(2)->Unit(benchmark::kMillisecond)->MeasureProcessCPUTime()->UseRealTime();
 BENCHMARK(Sphere100k)->ArgName("threads")->Arg(1)->Arg(2)->Unit(benchmark::kMillisecond)->MeasureProcessCPUTime()->UseRealTime();
 BENCHMARK(WireframeSphere100k)->ArgName("threads")->Arg(1)->Arg(2)->Unit(benchmark::kMillisecond)->MeasureProcessCPUTime()->UseRealTime();
 BENCHMARK(Sphere1M)->ArgName("threads")->Arg(1)->Arg(2)->Unit(benchmark::kMillisecond)->MeasureProcessCPUTime()->UseRealTime();
