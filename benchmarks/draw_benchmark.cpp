@@ -8,7 +8,9 @@
 // walk; 20k small triangles in 10 draws: the walk of a triangle of a few blocks), at 1 and 2
 // threads. The three whose time is most per primitive also run cold (`...Cold`: the caches
 // filled with other data before each frame, as the bench's alternating frames leave them).
-// PhongQuad: a full-screen quad lit per pixel, the cost of a real fragment shader.
+// SmallTrianglesOneDraw and ...HundredDraws: the same triangles in 1 and in 100 draws, what
+// cutting a frame into draws costs. PhongQuad: a full-screen quad lit per pixel, the cost of a
+// real fragment shader.
 //   softraster_benchmarks --benchmark_filter=Sphere --benchmark_repetitions=5
 // Deliberately not a replacement for `crosscheck bench`: no lavapipe beside it, no agreement
 // check; times are the machine's (shared and noisy: compare medians, side by side). "CPU" is the
@@ -215,6 +217,18 @@ void QuadStackBackToFrontMsaa(benchmark::State& bench) {
   static const Mesh mesh = quads(4, true);
   drawFrames(bench, mesh, {.samples = 4});
 }
+// The same 20k small triangles in one draw and in 100 draws: what cutting a frame into draws
+// costs. Each draw is finished before the next starts, so with two threads a band sees one
+// draw's triangles at a time, and its rows leave the core's cache between draws; a draw under
+// 512 primitives also runs its front end on the calling thread alone.
+void SmallTrianglesOneDraw(benchmark::State& bench) {
+  static const std::vector<Mesh> meshes = smallTriangles(20'000, 1);
+  drawFrames(bench, meshes);
+}
+void SmallTrianglesHundredDraws(benchmark::State& bench) {
+  static const std::vector<Mesh> meshes = smallTriangles(20'000, 100);
+  drawFrames(bench, meshes);
+}
 void SmallTriangles(benchmark::State& bench) {
   drawFrames(bench, smallTriangles20k());
 }
@@ -254,7 +268,6 @@ void PhongQuad(benchmark::State& bench) {
 
 }  // namespace
 
-BENCHMARK(PhongQuad)->ArgName("threads")->Arg(1)->Arg(2)->Unit(benchmark::kMillisecond)->MeasureProcessCPUTime()->UseRealTime();
 BENCHMARK(Sphere100k)->ArgName("threads")->Arg(1)->Arg(2)->Unit(benchmark::kMillisecond)->MeasureProcessCPUTime()->UseRealTime();
 BENCHMARK(WireframeSphere100k)->ArgName("threads")->Arg(1)->Arg(2)->Unit(benchmark::kMillisecond)->MeasureProcessCPUTime()->UseRealTime();
 BENCHMARK(Sphere1M)->ArgName("threads")->Arg(1)->Arg(2)->Unit(benchmark::kMillisecond)->MeasureProcessCPUTime()->UseRealTime();
@@ -267,5 +280,8 @@ BENCHMARK(QuadStackFrontToBack)->ArgName("threads")->Arg(1)->Arg(2)->Unit(benchm
 BENCHMARK(SmallTrianglesCold)->ArgName("threads")->Arg(1)->Arg(2)->Unit(benchmark::kMillisecond)->MeasureProcessCPUTime()->UseRealTime();
 BENCHMARK(Sphere100kCold)->ArgName("threads")->Arg(1)->Arg(2)->Unit(benchmark::kMillisecond)->MeasureProcessCPUTime()->UseRealTime();
 BENCHMARK(WireframeSphere100kCold)->ArgName("threads")->Arg(1)->Arg(2)->Unit(benchmark::kMillisecond)->MeasureProcessCPUTime()->UseRealTime();
+BENCHMARK(SmallTrianglesOneDraw)->ArgName("threads")->Arg(1)->Arg(2)->Unit(benchmark::kMillisecond)->MeasureProcessCPUTime()->UseRealTime();
+BENCHMARK(SmallTrianglesHundredDraws)->ArgName("threads")->Arg(1)->Arg(2)->Unit(benchmark::kMillisecond)->MeasureProcessCPUTime()->UseRealTime();
+BENCHMARK(PhongQuad)->ArgName("threads")->Arg(1)->Arg(2)->Unit(benchmark::kMillisecond)->MeasureProcessCPUTime()->UseRealTime();
 
 BENCHMARK_MAIN();
