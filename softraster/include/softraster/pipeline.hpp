@@ -25,7 +25,8 @@
 // draws from several threads take turns where they use the Context's threads), but one Context
 // per thread, each with its own Framebuffer, avoids that wait; a Framebuffer must not be drawn
 // into or read from two threads at once. A steady-state draw allocates nothing: its vectors are
-// the Context's scratch (detail/exact/scratch.hpp).
+// the Context's scratch (detail/exact/scratch.hpp). A Pass (pass.hpp) keeps a render pass's
+// draws and draws them together, band by band (the same bits, fewer trips over the framebuffer).
 // Exactness needs every float operation rounded on its own: the installed target passes
 // -ffp-contract=off to its users (CMake and pkg-config); under Clang the library's own code is
 // also compiled with `#pragma clang fp contract(off)`, whatever the flags.
@@ -63,6 +64,8 @@
 #include <vector>
 
 namespace softraster {
+
+class Pass;  // pass.hpp
 
 class Context {
  public:
@@ -107,15 +110,7 @@ class Context {
   template <class Shader, DepthFormat... Formats>
   Status draw(const PipelineState& state, const typename detail::ShaderParameters<Shader>::Uniforms& uniforms,
               typename detail::ShaderParameters<Shader>::Vertices vertices, Framebuffer& framebuffer) const {
-    if constexpr (!checkShaderInterface<Shader>()) {
-      return Status::error("not a shader");  // unreachable: checkShaderInterface has failed the build
-    } else {
-      const detail::ScratchPool::Lease scratch = scratch_->lease();
-      std::vector<std::uint32_t>& sequence = (*scratch).vector<std::uint32_t>(detail::ScratchSlot::IndexSequence);
-      sequence.resize(vertices.size());
-      for (std::size_t i = 0; i < sequence.size(); ++i) sequence[i] = static_cast<std::uint32_t>(i);
-      return drawPrimitives<Shader, Formats...>(state, uniforms, vertices, sequence, framebuffer, *scratch);
-    }
+    return drawSequence<Shader, Formats...>(state, uniforms, vertices, framebuffer, nullptr);
   }
 
   // vkCmdDrawIndexed. An index past the end of `vertices` is an error and nothing is drawn.
@@ -124,6 +119,35 @@ class Context {
   Status drawIndexed(const PipelineState& state, const typename detail::ShaderParameters<Shader>::Uniforms& uniforms,
                      typename detail::ShaderParameters<Shader>::Vertices vertices,
                      std::span<const std::uint32_t> indices, Framebuffer& framebuffer) const {
+    return drawIndices<Shader, Formats...>(state, uniforms, vertices, indices, framebuffer, nullptr);
+  }
+
+ private:
+  friend class Pass;
+  static constexpr std::uint32_t kResolveRows = 32;  // rows per task of resolveInto
+
+  // draw(), deferred into `pass` where it can be (fast/deferred_draws.hpp; nullptr: not).
+  template <class Shader, DepthFormat... Formats>
+  Status drawSequence(const PipelineState& state, const typename detail::ShaderParameters<Shader>::Uniforms& uniforms,
+                      typename detail::ShaderParameters<Shader>::Vertices vertices, Framebuffer& framebuffer,
+                      detail::PassRecording* pass) const {
+    if constexpr (!checkShaderInterface<Shader>()) {
+      return Status::error("not a shader");  // unreachable: checkShaderInterface has failed the build
+    } else {
+      const detail::ScratchPool::Lease scratch = scratch_->lease();
+      std::vector<std::uint32_t>& sequence = (*scratch).vector<std::uint32_t>(detail::ScratchSlot::IndexSequence);
+      sequence.resize(vertices.size());
+      for (std::size_t i = 0; i < sequence.size(); ++i) sequence[i] = static_cast<std::uint32_t>(i);
+      return drawPrimitives<Shader, Formats...>(state, uniforms, vertices, sequence, framebuffer, *scratch, pass);
+    }
+  }
+
+  // drawIndexed(), deferred into `pass` where it can be.
+  template <class Shader, DepthFormat... Formats>
+  Status drawIndices(const PipelineState& state, const typename detail::ShaderParameters<Shader>::Uniforms& uniforms,
+                     typename detail::ShaderParameters<Shader>::Vertices vertices,
+                     std::span<const std::uint32_t> indices, Framebuffer& framebuffer,
+                     detail::PassRecording* pass) const {
     if constexpr (!checkShaderInterface<Shader>()) {
       return Status::error("not a shader");  // unreachable: checkShaderInterface has failed the build
     } else {
@@ -140,12 +164,9 @@ class Context {
                              ") is past the last vertex (" + std::to_string(vertices.size()) + " vertices)");
       }
       const detail::ScratchPool::Lease scratch = scratch_->lease();
-      return drawPrimitives<Shader, Formats...>(state, uniforms, vertices, indices, framebuffer, *scratch);
+      return drawPrimitives<Shader, Formats...>(state, uniforms, vertices, indices, framebuffer, *scratch, pass);
     }
   }
-
- private:
-  static constexpr std::uint32_t kResolveRows = 32;  // rows per task of resolveInto
 
   // Whether this context can draw `state` into `framebuffer` at all: one error, before any work.
   Status validate(const PipelineState& state, const Framebuffer& framebuffer) const {
@@ -253,7 +274,7 @@ class Context {
   template <class Shader, DepthFormat... Formats>
   Status drawPrimitives(const PipelineState& state, const typename Shader::Uniforms& uniforms,
                         std::span<const typename Shader::Vertex> vertices, std::span<const std::uint32_t> indices,
-                        Framebuffer& framebuffer, detail::DrawScratch& scratch) const {
+                        Framebuffer& framebuffer, detail::DrawScratch& scratch, detail::PassRecording* pass) const {
     if (Status status = validate(state, framebuffer); !status) return status;
     constexpr std::uint32_t kOutputs = static_cast<std::uint32_t>(colourOutputsOf<Shader>());
     for (std::uint32_t a = kOutputs; a < framebuffer.colourAttachments(); ++a) {
@@ -277,10 +298,12 @@ class Context {
         return Status::error("gl_FragDepth needs the Vulkan depth mode, not the 1/z depth buffer");
       }
     }
-    if (drawIfFormat<Shader, DepthFormat::D16Unorm, Formats...>(state, uniforms, vertices, indices, framebuffer, scratch) ||
+    if (drawIfFormat<Shader, DepthFormat::D16Unorm, Formats...>(state, uniforms, vertices, indices, framebuffer, scratch,
+                                                                pass) ||
         drawIfFormat<Shader, DepthFormat::X8D24UnormPack32, Formats...>(state, uniforms, vertices, indices, framebuffer,
-                                                                        scratch) ||
-        drawIfFormat<Shader, DepthFormat::D32Sfloat, Formats...>(state, uniforms, vertices, indices, framebuffer, scratch)) {
+                                                                        scratch, pass) ||
+        drawIfFormat<Shader, DepthFormat::D32Sfloat, Formats...>(state, uniforms, vertices, indices, framebuffer, scratch,
+                                                                 pass)) {
       return {};
     }
     return Status::error("the draw was compiled for other depth formats than the framebuffer's (Context::draw's Formats)");
@@ -290,10 +313,10 @@ class Context {
   template <class Shader, DepthFormat Format, DepthFormat... Formats>
   bool drawIfFormat(const PipelineState& state, const typename Shader::Uniforms& uniforms,
                     std::span<const typename Shader::Vertex> vertices, std::span<const std::uint32_t> indices,
-                    Framebuffer& framebuffer, detail::DrawScratch& scratch) const {
+                    Framebuffer& framebuffer, detail::DrawScratch& scratch, detail::PassRecording* pass) const {
     if constexpr (sizeof...(Formats) == 0 || ((depthAspect(Formats) == Format) || ...)) {
       if (depthAspect(framebuffer.depthFormat()) != Format) return false;
-      drawWithFormat<Shader, Format>(state, uniforms, vertices, indices, framebuffer, scratch);
+      drawWithFormat<Shader, Format>(state, uniforms, vertices, indices, framebuffer, scratch, pass);
       return true;
     } else {
       return false;
@@ -303,13 +326,14 @@ class Context {
   template <class Shader, DepthFormat Format>
   void drawWithFormat(const PipelineState& state, const typename Shader::Uniforms& uniforms,
                       std::span<const typename Shader::Vertex> vertices, std::span<const std::uint32_t> indices,
-                      Framebuffer& framebuffer, detail::DrawScratch& scratch) const {
+                      Framebuffer& framebuffer, detail::DrawScratch& scratch, detail::PassRecording* pass) const {
     // A shader with the fragment built-ins is drawn by the exact method whatever the method. A
     // course method draws filled triangles; its lines, points and polygon modes line and point
     // are the exact method's, drawn by the scalar path below (as Method::ExactScalar draws them).
     if constexpr (!UsesFragmentBuiltins<Shader>) {
       if (isCourseMethod(options_.method) && detail::isTriangleTopology(state.topology) &&
           state.rasterization.polygonMode == PolygonMode::Fill) {
+        if (pass != nullptr) pass->flush();  // drawn now: after the pass's deferred draws
         if (options_.fusedMultiplyAdd) {
           drawCourseFused<Shader, Format>(state, uniforms, vertices, indices, framebuffer, scratch);
         } else {
@@ -325,11 +349,12 @@ class Context {
       const ColourFormat colour = framebuffer.colourFormat();
       if (options_.method == Method::Exact && options_.fusedMultiplyAdd && detail::fast::cpuRunsFastPath() &&
           (colour == ColourFormat::R8G8B8A8Unorm || colour == ColourFormat::B8G8R8A8Unorm)) {
-        drawFast<Shader, Format>(state, uniforms, vertices, indices, framebuffer, scratch);
+        drawFast<Shader, Format>(state, uniforms, vertices, indices, framebuffer, scratch, pass);
         return;
       }
     }
 #endif
+    if (pass != nullptr) pass->flush();  // drawn now: after the pass's deferred draws
     if (options_.fusedMultiplyAdd) {
       drawFused<Shader, Format>(state, uniforms, vertices, indices, framebuffer, scratch);
     } else {
@@ -388,9 +413,9 @@ class Context {
   [[gnu::target("avx2,fma"), SOFTRASTER_FLATTEN]]
   void drawFast(const PipelineState& state, const typename Shader::Uniforms& uniforms,
                 std::span<const typename Shader::Vertex> vertices, std::span<const std::uint32_t> indices,
-                Framebuffer& framebuffer, detail::DrawScratch& scratch) const {
+                Framebuffer& framebuffer, detail::DrawScratch& scratch, detail::PassRecording* pass) const {
     detail::ExactDraw<Shader, true, Format, detail::fast::FastFragmentStage<Shader, Format>>(
-        state, uniforms, framebuffer, options_.depthMode == DepthMode::InverseZ, scratch, pool_.get(), options_)
+        state, uniforms, framebuffer, options_.depthMode == DepthMode::InverseZ, scratch, pool_.get(), options_, pass)
         .run(vertices, indices);
   }
 #endif

@@ -80,8 +80,10 @@ class ExactDraw {
   // pool: the Context's threads (nullptr or one thread: everything on the calling thread);
   // scratch: the vectors this draw fills, kept by the Context between draws; options: the
   // Context's: its deviations, and a course method's method and affineVaryings.
+  // pass: a pass the band queue may defer the draw into (fast/deferred_draws.hpp), or nullptr.
   ExactDraw(const PipelineState& state, const typename Shader::Uniforms& uniforms, Framebuffer& framebuffer,
-            bool inverseZ, DrawScratch& scratch, ThreadPool* pool = nullptr, const ContextOptions& options = {})
+            bool inverseZ, DrawScratch& scratch, ThreadPool* pool = nullptr, const ContextOptions& options = {},
+            PassRecording* pass = nullptr)
       : state_(state),
         rs_(state.rasterization),
         uniforms_(uniforms),
@@ -94,12 +96,14 @@ class ExactDraw {
         // planes reach (MsaaRegionEdges); the bands (fast/bands.hpp) cover them too.
         fragments_(pool, scratch, state, uniforms, framebuffer, viewport_,
                    multisample_ ? msaaRegionEdges(region_, state.scissor, options.deviations).rasterRegion : region_,
-                   inverseZ, options.deviations),
+                   inverseZ, options.deviations, pass),
         shaded_(scratch.vector<Vertex>(ScratchSlot::ShadedVertices)),
         snapped_(scratch.vector<SnappedVertex>(ScratchSlot::SnappedVertices)),
         lines_(scratch.vector<LineIndices>(ScratchSlot::Lines)),
         course_(makeCourse(state, uniforms, framebuffer, inverseZ, options, scratch)) {
-    fast::prepareDepthTiles(framebuffer, state.depth, kKeepsDepthTiles && !inverseZ);
+    // A deferred draw that keeps the bounds opens them band by band as it is drawn (bands.hpp).
+    const bool keeps = kKeepsDepthTiles && !inverseZ;
+    if (!keeps || !fragments_.deferred()) fast::prepareDepthTiles(framebuffer, state.depth, keeps);
   }
 
   // Draws vertices[indices[k]] in order, assembled by the state's topology.

@@ -25,6 +25,7 @@ enum class ScratchSlot : std::uint8_t {
   SnappedVertices,
   Lines,
   BandLists,
+  BandCursors,
   CourseRows
 };
 

@@ -78,6 +78,23 @@ inline void prepareDepthTiles(Framebuffer& framebuffer, const DepthState& depth,
   }
 }
 
+// prepareDepthTiles for a draw that keeps them, on the tiles of rows [y0, y1] only: a pass's
+// deferred draw (fast/deferred_draws.hpp) opens a band's tiles just before it draws there, after
+// the draws before it have drawn there.
+inline void prepareDepthTileRows(Framebuffer& framebuffer, const DepthState& depth, int y0, int y1) {
+  if (!depth.testEnable || !depth.writeEnable) return;
+  const DepthWriteDirection direction = depthWriteDirection(depth.compareOp);
+  if (!direction.down && !direction.up) return;
+  const std::span<DepthTileRange> tiles = FramebufferAccess::depthTiles(framebuffer);
+  const std::size_t perRow = FramebufferAccess::depthTilesPerRow(framebuffer);
+  const auto first = static_cast<std::size_t>(y0 / kDepthTileSize) * perRow;
+  const std::size_t last = std::min(tiles.size(), static_cast<std::size_t>(y1 / kDepthTileSize + 1) * perRow);
+  for (std::size_t i = first; i < last; ++i) {
+    if (direction.down) tiles[i].lo = -kNoDepthBound;
+    if (direction.up) tiles[i].hi = kNoDepthBound;
+  }
+}
+
 // Whether every fragment with a key in [lo, hi] fails `op` against every stored key in `tile`.
 inline bool everyFragmentFails(CompareOp op, float lo, float hi, const DepthTileRange& tile) {
   switch (op) {
