@@ -91,13 +91,12 @@ struct Prepared {
 };
 
 template <class Shader>
-softraster::Status drawPrepared(const std::any& prepared, const softraster::Context& context,
-                                const softraster::PipelineState& state, bool indexed,
-                                std::span<const std::uint32_t> indices, softraster::Framebuffer& framebuffer) {
+softraster::Status drawPrepared(const std::any& prepared, softraster::Pass& pass, const softraster::PipelineState& state,
+                                bool indexed, std::span<const std::uint32_t> indices) {
   const auto& p = std::any_cast<const Prepared<Shader>&>(prepared);
   const std::span<const typename Shader::Vertex> vertices(p.vertices);
-  return indexed ? context.drawIndexed<Shader>(state, p.uniforms, vertices, indices, framebuffer)
-                 : context.draw<Shader>(state, p.uniforms, vertices, framebuffer);
+  return indexed ? pass.drawIndexed<Shader>(state, p.uniforms, vertices, indices)
+                 : pass.draw<Shader>(state, p.uniforms, vertices);
 }
 
 template <class Shader>

@@ -23,6 +23,7 @@
 #include "draw_inputs.hpp"
 
 #include <softraster/framebuffer.hpp>
+#include <softraster/pass.hpp>
 #include <softraster/pipeline.hpp>
 #include <softraster/shader.hpp>
 #include <softraster/state.hpp>
@@ -38,19 +39,18 @@
 namespace shaders {
 
 // One draw made ready for softraster by a row: the twin's vertices and uniforms, built before
-// the draw is timed, and the twin's Context::draw / drawIndexed.
+// the draw is timed, and the twin's Pass::draw / drawIndexed (softraster/pass.hpp).
 class SoftrasterDraw {
  public:
-  using DrawFunction = softraster::Status (*)(const std::any& prepared, const softraster::Context& context,
+  using DrawFunction = softraster::Status (*)(const std::any& prepared, softraster::Pass& pass,
                                               const softraster::PipelineState& state, bool indexed,
-                                              std::span<const std::uint32_t> indices,
-                                              softraster::Framebuffer& framebuffer);
+                                              std::span<const std::uint32_t> indices);
   SoftrasterDraw(std::any prepared, DrawFunction draw) : prepared_(std::move(prepared)), draw_(draw) {}
 
-  // vkCmdDrawIndexed with `indices` when `indexed`, else vkCmdDraw of every vertex.
-  softraster::Status draw(const softraster::Context& context, const softraster::PipelineState& state, bool indexed,
-                          std::span<const std::uint32_t> indices, softraster::Framebuffer& framebuffer) const {
-    return draw_(prepared_, context, state, indexed, indices, framebuffer);
+  // vkCmdDrawIndexed with `indices` when `indexed`, else vkCmdDraw of every vertex, in `pass`.
+  softraster::Status draw(softraster::Pass& pass, const softraster::PipelineState& state, bool indexed,
+                          std::span<const std::uint32_t> indices) const {
+    return draw_(prepared_, pass, state, indexed, indices);
   }
 
  private:

@@ -2,6 +2,7 @@
 // its row of the shading-model table (shaders/shading_models.hpp); neither knows a model by name.
 #include "render/render.hpp"
 
+#include <softraster/pass.hpp>
 #include <softraster/pipeline.hpp>
 
 #include <shading_models.hpp>
@@ -50,7 +51,8 @@ vkref::ShaderProgram programOf(const shaders::ShadingModel& model) {
 SoftrasterScene::SoftrasterScene(const Scene& scene, const softraster::ContextOptions& options)
     : scene_(scene),
       options_(options),
-      context_(options) {
+      context_(options),
+      pass_(context_) {
   std::vector<softraster::ColourFormat> formats{scene.colourFormat};
   for (const SceneColourAttachment& more : scene.moreColour) formats.push_back(more.format);
   softraster::Result<softraster::Framebuffer> framebuffer =
@@ -94,11 +96,13 @@ softraster::Status SoftrasterScene::render() {
     const DepthPass& pass = scene_.passes[k];
     Pass& p = passes_[k];
     p.framebuffer.clear({0, 0, 0, 0}, pass.clearDepth);
+    pass_.begin(p.framebuffer);
     for (std::size_t i = 0; i < p.draws.size(); ++i) {
       const Draw& draw = scene_.draws[pass.draws[i]];
-      const softraster::Status status = p.draws[i].draw(context_, p.states[i], draw.indexed, draw.indices, p.framebuffer);
+      const softraster::Status status = p.draws[i].draw(pass_, p.states[i], draw.indexed, draw.indices);
       if (!status) return status.prefixed("softraster: pass '" + pass.name + "': draw '" + draw.name + "'");
     }
+    pass_.end();
     softraster::Result<softraster::Texture> depth = softraster::Texture::fromDepth(p.framebuffer);
     if (!depth) return depth.status().prefixed("softraster: pass '" + pass.name + "'");
     *p.depth = std::move(*depth);
@@ -108,11 +112,13 @@ softraster::Status SoftrasterScene::render() {
   for (const SceneColourAttachment& more : scene_.moreColour) clearColours_.push_back(more.clearColour);
   framebuffer_.clear(clearColours_, options_.depthMode == softraster::DepthMode::InverseZ ? 0.0f : scene_.clearDepth,
                      scene_.clearStencil);
+  pass_.begin(framebuffer_);
   for (std::size_t i = 0; i < scene_.draws.size(); ++i) {
     const Draw& draw = scene_.draws[i];
-    const softraster::Status status = draws_[i].draw(context_, draw.state, draw.indexed, draw.indices, framebuffer_);
+    const softraster::Status status = draws_[i].draw(pass_, draw.state, draw.indexed, draw.indices);
     if (!status) return status.prefixed("softraster: draw '" + draw.name + "'");
   }
+  pass_.end();
   if (scene_.samples > 1) context_.resolveInto(framebuffer_, resolved_);  // as vkref reads Vulkan's back
   milliseconds_ = millisecondsSince(start);
   return {};

@@ -14,6 +14,7 @@
 
 #include <shading_models.hpp>
 
+#include <softraster/pass.hpp>
 #include <softraster/pipeline.hpp>
 #include <softraster/status.hpp>
 #include <vkref/renderer.hpp>
@@ -103,6 +104,9 @@ class SoftrasterScene {
   std::vector<shaders::SoftrasterDraw> draws_;
   std::vector<softraster::Vec4> clearColours_;  // one per colour attachment (kept: no allocation per frame)
   double milliseconds_ = 0;
+  // Each framebuffer's draws of a frame as one pass (softraster/pass.hpp); last, so that it ends
+  // (draws what an interrupted frame kept) before the framebuffers go.
+  softraster::Pass pass_;
 };
 
 // The scene made ready on `renderer` (images, uploads, pipelines, recorded commands), to be
