@@ -9,7 +9,7 @@
 // threads. The three whose time is most per primitive also run cold (`...Cold`: the caches
 // filled with other data before each frame, as the bench's alternating frames leave them).
 // SmallTrianglesOneDraw and ...HundredDraws: the same triangles in 1 and in 100 draws, what
-// cutting a frame into draws costs. PhongQuad: a full-screen quad lit per pixel, the cost of a
+// cutting a frame into draws costs; ...InAPass: the 10 and the 100 draws as one softraster::Pass. PhongQuad: a full-screen quad lit per pixel, the cost of a
 // real fragment shader.
 //   softraster_benchmarks --benchmark_filter=Sphere --benchmark_repetitions=5
 // Deliberately not a replacement for `crosscheck bench`: no lavapipe beside it, no agreement
@@ -18,6 +18,7 @@
 #include "lit.hpp"
 #include "vertex_color.hpp"
 
+#include <softraster/pass.hpp>
 #include <softraster/pipeline.hpp>
 
 #include <benchmark/benchmark.h>
@@ -118,6 +119,8 @@ struct FrameOptions {
   // a small primitive's first depth read has there (20k small triangles: 3.4-3.7 ms warm,
   // 4.7 ms in the bench, 2 threads).
   bool cold = false;
+  // The meshes drawn as one softraster::Pass (pass.hpp) instead of draw by draw.
+  bool pass = false;
 };
 
 // Writes one byte in every 64 of `buffer`: each of its cache lines once.
@@ -145,6 +148,7 @@ void drawFrames(benchmark::State& bench, std::span<const MeshOf<S>> meshes, cons
   std::size_t triangles = 0;
   for (const MeshOf<S>& mesh : meshes) triangles += mesh.indices.size() / 3;
   std::vector<unsigned char> evict(how.cold ? std::size_t{256} << 20 : 0);
+  softraster::Pass pass(context);
   for (auto _ : bench) {
     if (how.cold) {
       bench.PauseTiming();
@@ -152,14 +156,18 @@ void drawFrames(benchmark::State& bench, std::span<const MeshOf<S>> meshes, cons
       bench.ResumeTiming();
     }
     framebuffer->clear({0, 0, 0, 1}, 1.0f);
+    if (how.pass) pass.begin(*framebuffer);
     for (const MeshOf<S>& mesh : meshes) {
-      const softraster::Status status = context.drawIndexed<S, softraster::DepthFormat::D32Sfloat>(
-          state, uniforms, mesh.vertices, mesh.indices, *framebuffer);
+      const softraster::Status status =
+          how.pass ? pass.drawIndexed<S, softraster::DepthFormat::D32Sfloat>(state, uniforms, mesh.vertices, mesh.indices)
+                   : context.drawIndexed<S, softraster::DepthFormat::D32Sfloat>(state, uniforms, mesh.vertices,
+                                                                                mesh.indices, *framebuffer);
       if (!status) {
         bench.SkipWithError(status.message().c_str());
         return;
       }
     }
+    pass.end();
     benchmark::DoNotOptimize(framebuffer->colour().data());
     benchmark::ClobberMemory();
   }
@@ -232,6 +240,14 @@ void SmallTrianglesHundredDraws(benchmark::State& bench) {
 void SmallTriangles(benchmark::State& bench) {
   drawFrames(bench, smallTriangles20k());
 }
+// The same draws as one pass: each band sees every draw's triangles at once.
+void SmallTrianglesInAPass(benchmark::State& bench) {
+  drawFrames(bench, smallTriangles20k(), {.pass = true});
+}
+void SmallTrianglesHundredDrawsInAPass(benchmark::State& bench) {
+  static const std::vector<Mesh> meshes = smallTriangles(20'000, 100);
+  drawFrames(bench, meshes, {.pass = true});
+}
 // Cold frames (FrameOptions::cold) of the scenes whose time is most per primitive.
 void SmallTrianglesCold(benchmark::State& bench) {
   drawFrames(bench, smallTriangles20k(), {.cold = true});
@@ -289,5 +305,7 @@ FRAME_BENCHMARK(WireframeSphere100kCold);
 FRAME_BENCHMARK(SmallTrianglesOneDraw);
 FRAME_BENCHMARK(SmallTrianglesHundredDraws);
 FRAME_BENCHMARK(PhongQuad);
+FRAME_BENCHMARK(SmallTrianglesInAPass);
+FRAME_BENCHMARK(SmallTrianglesHundredDrawsInAPass);
 
 BENCHMARK_MAIN();
