@@ -5,6 +5,8 @@
 // method's bytes on 1 and 3 threads while every tile's bounds hold every stored depth. Also: the
 // fast path's one-clamp clampDepth gives the scalar two-clamp bits for every depth range a draw
 // can have. And the parallel front end's rounds of every size give the scalar method's bytes.
+#include "random_draws.hpp"
+
 #include <softraster/detail/fast/batch.hpp>
 #include <softraster/detail/fast/depth_tiles.hpp>
 #include <softraster/pipeline.hpp>
@@ -24,38 +26,16 @@
 
 namespace {
 
-using softraster::CompareOp;
 using softraster::DepthFormat;
 using softraster::Framebuffer;
 using softraster::detail::DepthTileRange;
 using softraster::detail::FramebufferAccess;
 using softraster::detail::kDepthTileSize;
 
-// The colour of each vertex interpolated: every draw leaves its own colours where it passes.
-struct Colour {
-  struct Vertex {
-    softraster::Vec3 position;
-    softraster::Vec4 colour;
-  };
-  struct Uniforms {};
-  static constexpr int kVaryings = 4;
-  static softraster::Vec4 vertex(const Uniforms&, const Vertex& v, float* out) {
-    out[0] = v.colour.x, out[1] = v.colour.y, out[2] = v.colour.z, out[3] = v.colour.w;
-    return {v.position.x, v.position.y, v.position.z, 1.0f};
-  }
-  template <class F>
-  static softraster::Vec4T<F> fragment(const Uniforms&, const F* in) {
-    return {in[0], in[1], in[2], in[3]};
-  }
-};
-
-bool fastPathHere() {
-#if SOFTRASTER_HAS_FAST_PATH
-  return softraster::detail::fast::cpuRunsFastPath();
-#else
-  return false;
-#endif
-}
+using random_draws::Colour;
+using random_draws::expectTilesHold;
+using random_draws::fastPathHere;
+using random_draws::quad;
 
 // The key of a fragment at pixel (x, y) as the fast path computes its depth (two fmuladds at
 // the integer coordinates, the bias, the clamp, the conversion).
@@ -96,29 +76,6 @@ void expectBoundsHold(std::mt19937& random) {
     }
   }
   EXPECT_EQ(checked, 4000 * 24);
-}
-
-// Every tile's bounds hold every depth stored in it.
-void expectTilesHold(Framebuffer& framebuffer, const std::string& where) {
-  const auto tiles = FramebufferAccess::depthTiles(framebuffer);
-  const std::uint32_t* depth = FramebufferAccess::depthWords(framebuffer);
-  const std::uint32_t perRow = FramebufferAccess::depthTilesPerRow(framebuffer);
-  for (std::uint32_t y = 0; y < framebuffer.height(); ++y) {
-    for (std::uint32_t x = 0; x < framebuffer.width(); ++x) {
-      const DepthTileRange& t = tiles[(y / kDepthTileSize) * perRow + x / kDepthTileSize];
-      const float key = softraster::detail::depthTileKey(framebuffer.depthFormat(), depth[y * framebuffer.width() + x]);
-      if (!(t.lo <= key && key <= t.hi)) {
-        ADD_FAILURE() << where << ": pixel (" << x << ", " << y << ") key " << key << " outside its tile's [" << t.lo
-                      << ", " << t.hi << "]";
-        return;
-      }
-    }
-  }
-}
-
-// Two triangles covering the viewport at depth z (a flat quad), in colour c.
-std::vector<Colour::Vertex> quad(float z, softraster::Vec4 c) {
-  return {{{-1, -1, z}, c}, {{1, -1, z}, c}, {{1, 1, z}, c}, {{-1, -1, z}, c}, {{1, 1, z}, c}, {{-1, 1, z}, c}};
 }
 
 }  // namespace
@@ -232,15 +189,59 @@ TEST(DepthTiles, TilesBehindAWholeTileAreNotWalked) {
 
 // Random sequences of large triangles, the fast path on 1 and 3 threads against the scalar
 // method after every draw, with the tiles' bounds checked to hold every stored depth.
+// One draw under ALWAYS or NOT_EQUAL: a quad covering whole tiles at 0.25, then, in the same
+// draw, a small triangle inside one of them at 0.75. The quad's whole tiles must not be closed to
+// its depth while the draw may still write there (found by the random draws below: bounds of
+// [0.24, 0.51] over a stored 0.61).
+TEST(DepthTiles, OpsThatMoveDepthBothWaysKeepTheBoundsOpenForTheRestOfTheDraw) {
+  if (!fastPathHere()) GTEST_SKIP() << "no fast path here";
+  for (const softraster::CompareOp op : {softraster::CompareOp::Always, softraster::CompareOp::NotEqual}) {
+    for (const unsigned threads : {1u, 2u}) {
+      Framebuffer framebuffer = Framebuffer::create(128, 128, DepthFormat::D32Sfloat).value();
+      framebuffer.clear({0, 0, 0, 1}, 1.0f);
+      softraster::PipelineState state;
+      state.rasterization.cullMode = softraster::CullMode::None;
+      state.depth.compareOp = op;
+      softraster::ContextOptions options;
+      options.threads = threads;
+      const softraster::Context context(options);
+      std::vector<Colour::Vertex> vertices = quad(0.25f, {1, 0, 0, 1});
+      // Inside tile (2, 0), which the quad's first triangle covers whole.
+      for (const Colour::Vertex& v : {Colour::Vertex{{0.1f, -0.9f, 0.75f}, {0, 1, 0, 1}},
+                                      Colour::Vertex{{0.3f, -0.9f, 0.75f}, {0, 1, 0, 1}},
+                                      Colour::Vertex{{0.1f, -0.7f, 0.75f}, {0, 1, 0, 1}}}) {
+        vertices.push_back(v);
+      }
+      ASSERT_TRUE(context.draw<Colour>(state, {}, std::span<const Colour::Vertex>(vertices), framebuffer).ok());
+      const std::string where =
+          std::string(op == softraster::CompareOp::Always ? "always" : "not_equal") + ", " + std::to_string(threads) + " threads";
+      expectTilesHold(framebuffer, where);
+      // A LESS wall at 0.5 then passes over the small triangle (0.75) alone: with the tile closed
+      // to the quad's 0.25 it would have been skipped there.
+      softraster::PipelineState less;
+      less.rasterization.cullMode = softraster::CullMode::None;
+      const std::vector<Colour::Vertex> wall = quad(0.5f, {0, 0, 1, 1});
+      ASSERT_TRUE(context.draw<Colour>(less, {}, std::span<const Colour::Vertex>(wall), framebuffer).ok());
+      Framebuffer reference = Framebuffer::create(128, 128, DepthFormat::D32Sfloat).value();
+      reference.clear({0, 0, 0, 1}, 1.0f);
+      softraster::ContextOptions scalar;
+      scalar.method = softraster::Method::ExactScalar;
+      const softraster::Context scalarContext(scalar);
+      ASSERT_TRUE(scalarContext.draw<Colour>(state, {}, std::span<const Colour::Vertex>(vertices), reference).ok());
+      ASSERT_TRUE(scalarContext.draw<Colour>(less, {}, std::span<const Colour::Vertex>(wall), reference).ok());
+      EXPECT_TRUE(framebuffer.colour() == reference.colour()) << where << ": colour differs";
+      const std::size_t inside = 4 * (8 * 128 + 72);  // pixel (72, 8), inside the small triangle: the wall's blue
+      EXPECT_EQ(reference.colour()[inside], 0);
+      EXPECT_EQ(reference.colour()[inside + 2], 255);
+    }
+  }
+}
+
 TEST(DepthTiles, RandomDrawsMatchTheScalarMethodAndKeepTrueBounds) {
   if (!fastPathHere()) GTEST_SKIP() << "no fast path here";
-  const CompareOp ops[] = {CompareOp::Never,   CompareOp::Less,     CompareOp::Equal,          CompareOp::LessOrEqual,
-                           CompareOp::Greater, CompareOp::NotEqual, CompareOp::GreaterOrEqual, CompareOp::Always};
   const DepthFormat formats[] = {DepthFormat::D16Unorm, DepthFormat::X8D24UnormPack32, DepthFormat::D32Sfloat,
                                  DepthFormat::D24UnormS8Uint};
   std::mt19937 random(7);
-  std::uniform_real_distribution<float> unit(0.0f, 1.0f);
-  const float levels[] = {0.125f, 0.25f, 0.5f, 0.75f, 1.0f};  // flat depths that meet exactly
   for (const DepthFormat format : formats) {
     for (const unsigned threads : {1u, 3u}) {
       Framebuffer fast = Framebuffer::create(173, 151, format).value();
@@ -256,41 +257,10 @@ TEST(DepthTiles, RandomDrawsMatchTheScalarMethodAndKeepTrueBounds) {
         fast.clear({0, 0, 0, 1}, clearDepth);
         scalar.clear({0, 0, 0, 1}, clearDepth);
         for (int draw = 0; draw < 40; ++draw) {
-          softraster::PipelineState state;
-          state.rasterization.cullMode = softraster::CullMode::None;
-          state.depth.compareOp = ops[random() % 8];
-          state.depth.writeEnable = random() % 4 != 0;
-          state.depth.testEnable = random() % 10 != 0;
-          if (random() % 5 == 0) {
-            state.rasterization.depthBias = {true, static_cast<float>(random() % 200) - 100.0f, 0.0f, unit(random) * 4 - 2};
-          }
-          if (random() % 5 == 0) {
-            state.rasterization.depthClampEnable = true;
-            state.viewport = {0, 0, 173, 151, 0.2f + 0.2f * unit(random), 0.6f + 0.3f * unit(random)};
-          }
-          if (random() % 4 == 0) {
-            state.scissor = {static_cast<std::int32_t>(random() % 60), static_cast<std::int32_t>(random() % 60),
-                             static_cast<std::uint32_t>(40 + random() % 120), static_cast<std::uint32_t>(40 + random() % 100)};
-          }
-          if (format == DepthFormat::D24UnormS8Uint && random() % 2 == 0) {
-            state.depth.stencilTestEnable = true;
-            state.depth.front.passOp = softraster::StencilOp::IncrementAndClamp;
-            state.depth.front.depthFailOp = softraster::StencilOp::Invert;
-            state.depth.back = state.depth.front;
-          }
-          std::vector<Colour::Vertex> vertices;
-          const softraster::Vec4 c{unit(random), unit(random), unit(random), 1};
-          if (random() % 3 == 0) {  // a flat quad over everything, at a level
-            vertices = quad(levels[random() % 5], c);
-          } else {
-            for (int v = 0; v < 3 * (1 + static_cast<int>(random() % 2)); ++v) {
-              const float z = random() % 3 == 0 ? levels[random() % 5] : -0.1f + 1.2f * unit(random);
-              vertices.push_back({{-2.0f + 4.0f * unit(random), -2.0f + 4.0f * unit(random), z}, c});
-            }
-          }
-          const std::span<const Colour::Vertex> span(vertices);
-          ASSERT_TRUE(fastContext.draw<Colour>(state, {}, span, fast).ok());
-          ASSERT_TRUE(scalarContext.draw<Colour>(state, {}, span, scalar).ok());
+          const random_draws::RandomDraw d = random_draws::randomDraw(random, format, 173, 151);
+          const std::span<const Colour::Vertex> span(d.vertices);
+          ASSERT_TRUE(fastContext.draw<Colour>(d.state, {d.alpha}, span, fast).ok());
+          ASSERT_TRUE(scalarContext.draw<Colour>(d.state, {d.alpha}, span, scalar).ok());
           const std::string where = "format " + std::to_string(static_cast<int>(format)) + ", " +
                                     std::to_string(threads) + " threads, frame " + std::to_string(frame) + ", draw " +
                                     std::to_string(draw);

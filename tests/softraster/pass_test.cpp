@@ -8,7 +8,8 @@
 //   - a pass repeated frame after frame gives the same bytes each time.
 // And its errors: a draw before begin() is an error; a draw that fails leaves the pass's kept
 // draws to be drawn at end(); end() without a pass does nothing.
-#include <softraster/detail/fast/depth_tiles.hpp>
+#include "random_draws.hpp"
+
 #include <softraster/pass.hpp>
 #include <softraster/pipeline.hpp>
 
@@ -25,32 +26,13 @@
 
 namespace {
 
+using random_draws::Colour;
+using random_draws::expectTilesHold;
+using random_draws::fastPathHere;
+using random_draws::quad;
 using softraster::CompareOp;
 using softraster::DepthFormat;
 using softraster::Framebuffer;
-using softraster::detail::DepthTileRange;
-using softraster::detail::FramebufferAccess;
-using softraster::detail::kDepthTileSize;
-
-// The colour of each vertex interpolated, shaded in batches (deferred in a pass).
-struct Colour {
-  struct Vertex {
-    softraster::Vec3 position;
-    softraster::Vec4 colour;
-  };
-  struct Uniforms {
-    float alpha = 1;  // multiplies the colour: each draw's own copy must be the one it is drawn with
-  };
-  static constexpr int kVaryings = 4;
-  static softraster::Vec4 vertex(const Uniforms&, const Vertex& v, float* out) {
-    out[0] = v.colour.x, out[1] = v.colour.y, out[2] = v.colour.z, out[3] = v.colour.w;
-    return {v.position.x, v.position.y, v.position.z, 1.0f};
-  }
-  template <class F>
-  static softraster::Vec4T<F> fragment(const Uniforms& u, const F* in) {
-    return {in[0] * u.alpha, in[1], in[2], in[3]};
-  }
-};
 
 // The same, with a fragment function for floats only: drawn at its call, on the scalar stage.
 struct ScalarColour {
@@ -80,88 +62,21 @@ struct PinnedColour {
   }
 };
 
-bool fastPathHere() {
-#if SOFTRASTER_HAS_FAST_PATH
-  return softraster::detail::fast::cpuRunsFastPath();
-#else
-  return false;
-#endif
-}
-
-void expectTilesHold(Framebuffer& framebuffer, const std::string& where) {
-  const auto tiles = FramebufferAccess::depthTiles(framebuffer);
-  const std::uint32_t* depth = FramebufferAccess::depthWords(framebuffer);
-  const std::uint32_t perRow = FramebufferAccess::depthTilesPerRow(framebuffer);
-  for (std::uint32_t y = 0; y < framebuffer.height(); ++y) {
-    for (std::uint32_t x = 0; x < framebuffer.width(); ++x) {
-      const DepthTileRange& t = tiles[(y / kDepthTileSize) * perRow + x / kDepthTileSize];
-      const float key = softraster::detail::depthTileKey(framebuffer.depthFormat(), depth[y * framebuffer.width() + x]);
-      if (!(t.lo <= key && key <= t.hi)) {
-        ADD_FAILURE() << where << ": pixel (" << x << ", " << y << ") key " << key << " outside its tile's [" << t.lo
-                      << ", " << t.hi << "]";
-        return;
-      }
-    }
-  }
-}
-
 void expectSameBytes(const Framebuffer& fast, const Framebuffer& scalar, const std::string& where) {
   EXPECT_TRUE(fast.depthStorage() == scalar.depthStorage()) << where << ": depth differs";
   EXPECT_TRUE(fast.colour() == scalar.colour()) << where << ": colour differs";
   EXPECT_TRUE(fast.stencilStorage() == scalar.stencilStorage()) << where << ": stencil differs";
 }
 
-std::vector<Colour::Vertex> quad(float z, softraster::Vec4 c) {
-  return {{{-1, -1, z}, c}, {{1, -1, z}, c}, {{1, 1, z}, c}, {{-1, -1, z}, c}, {{1, 1, z}, c}, {{-1, 1, z}, c}};
-}
-
-// One random draw, as depth_tiles_test.cpp makes them.
-struct RandomDraw {
-  softraster::PipelineState state;
-  std::vector<Colour::Vertex> vertices;
-  float alpha = 1;
+// A random draw (random_draws.hpp) and the shader it is drawn with: one in eight is drawn by a
+// shader the pass cannot keep.
+struct RandomDraw : random_draws::RandomDraw {
   int shader = 0;  // 0: Colour, 1: ScalarColour, 2: PinnedColour
 };
 
 RandomDraw randomDraw(std::mt19937& random, DepthFormat format, std::uint32_t width, std::uint32_t height) {
-  const CompareOp ops[] = {CompareOp::Never,   CompareOp::Less,     CompareOp::Equal,          CompareOp::LessOrEqual,
-                           CompareOp::Greater, CompareOp::NotEqual, CompareOp::GreaterOrEqual, CompareOp::Always};
-  const float levels[] = {0.125f, 0.25f, 0.5f, 0.75f, 1.0f};  // flat depths that meet exactly
-  std::uniform_real_distribution<float> unit(0.0f, 1.0f);
   RandomDraw d;
-  softraster::PipelineState& state = d.state;
-  state.rasterization.cullMode = softraster::CullMode::None;
-  state.depth.compareOp = ops[random() % 8];
-  state.depth.writeEnable = random() % 4 != 0;
-  state.depth.testEnable = random() % 10 != 0;
-  if (random() % 5 == 0) {
-    state.rasterization.depthBias = {true, static_cast<float>(random() % 200) - 100.0f, 0.0f, unit(random) * 4 - 2};
-  }
-  if (random() % 5 == 0) {
-    state.rasterization.depthClampEnable = true;
-    state.viewport = {0, 0, static_cast<float>(width), static_cast<float>(height), 0.2f + 0.2f * unit(random),
-                      0.6f + 0.3f * unit(random)};
-  }
-  if (random() % 4 == 0) {
-    state.scissor = {static_cast<std::int32_t>(random() % 60), static_cast<std::int32_t>(random() % 60),
-                     static_cast<std::uint32_t>(40 + random() % 120), static_cast<std::uint32_t>(40 + random() % 100)};
-  }
-  if (format == DepthFormat::D24UnormS8Uint && random() % 2 == 0) {
-    state.depth.stencilTestEnable = true;
-    state.depth.front.passOp = softraster::StencilOp::IncrementAndClamp;
-    state.depth.front.depthFailOp = softraster::StencilOp::Invert;
-    state.depth.back = state.depth.front;
-  }
-  const softraster::Vec4 c{unit(random), unit(random), unit(random), 1};
-  if (random() % 3 == 0) {  // a flat quad over everything, at a level
-    d.vertices = quad(levels[random() % 5], c);
-  } else {
-    for (int v = 0; v < 3 * (1 + static_cast<int>(random() % 4)); ++v) {
-      const float z = random() % 3 == 0 ? levels[random() % 5] : -0.1f + 1.2f * unit(random);
-      d.vertices.push_back({{-2.0f + 4.0f * unit(random), -2.0f + 4.0f * unit(random), z}, c});
-    }
-  }
-  d.alpha = 0.25f + 0.75f * unit(random);
+  static_cast<random_draws::RandomDraw&>(d) = random_draws::randomDraw(random, format, width, height);
   d.shader = random() % 8 == 0 ? 1 + static_cast<int>(random() % 2) : 0;
   return d;
 }

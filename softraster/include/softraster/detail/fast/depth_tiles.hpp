@@ -12,8 +12,11 @@
 //     +inf; NotEqual, Always: both), so a primitive that covers a tile in part changes nothing.
 //     One that covers a whole tile, each of its fragments tested and written as the op says (no
 //     stencil, nothing discarded, depth from the planes), narrows it: after Less every stored
-//     value is min(old, new), so hi = min(hi, the primitive's hi); after Always lo and hi are
-//     the primitive's.
+//     value is min(old, new), so hi = min(hi, the primitive's hi), and the draw's later
+//     primitives only lower values, which the open lo allows. Under NotEqual and Always a whole
+//     tile would hold the primitive's range, but a later primitive of the same draw may write
+//     anything in part of it, so those ops leave the tile open (closing it to the primitive's
+//     range broke the bounds; tests/softraster/depth_tiles_test.cpp has the case).
 //   - Draws that do not keep the bounds (the scalar method, the course's methods, the 1/z
 //     buffer) forget them when they write depth; 4x MSAA framebuffers have none.
 // It never changes a pixel: a skipped tile is one where every fragment fails the depth test, and
@@ -118,8 +121,8 @@ inline DepthTileRange narrowedByWholeTile(CompareOp op, float lo, float hi, Dept
     case CompareOp::LessOrEqual: tile.hi = std::min(tile.hi, hi); break;  // each value min(old, new)
     case CompareOp::Greater:
     case CompareOp::GreaterOrEqual: tile.lo = std::max(tile.lo, lo); break;  // max(old, new)
-    case CompareOp::NotEqual:  // the new value, or the old one where they are equal
-    case CompareOp::Always: tile = {lo, hi}; break;
+    case CompareOp::NotEqual:  // open in both directions for the rest of the draw (top comment)
+    case CompareOp::Always:
     case CompareOp::Equal:
     case CompareOp::Never: break;
   }
@@ -207,7 +210,7 @@ class DepthTiles {
                         framebuffer.samples() == 1 && !tiles_.empty();
     skips_ = tested && op_ != CompareOp::NotEqual && op_ != CompareOp::Always;
     const DepthWriteDirection direction = depthWriteDirection(op_);
-    narrows_ = tested && target.depth.writeEnable && !shadesFirst && (direction.down || direction.up);
+    narrows_ = tested && target.depth.writeEnable && !shadesFirst && direction.down != direction.up;
   }
 
   // The primitive (its edges, its box clipped to the stage's region, its depth plane and bias)
