@@ -20,8 +20,9 @@
 // A clear pending on the framebuffer (Framebuffer::clear) is written by the first round, each
 // band's rows (full width) by the band's thread just before it draws them; rows outside the
 // draw region by the calling thread.
-// Thread k draws the k-th of equal runs of bands first, then helps with the others' (flush()), so
-// the same rows tend to stay in the same core's cache draw after draw. A band asks for the
+// Thread k draws the k-th of equal runs of bands first, then helps with the others'
+// (drawBandsInParallel, fast/deferred_draws.hpp), so the same rows tend to stay in the same
+// core's cache draw after draw. A band asks for the
 // colour and depth lines of its next small primitive while it draws the one before; a recorder
 // asks for the lines of the record it will write a few records on, for writing (PREFETCHW).
 // With no pool (one thread) every Recorder forwards its calls straight to one stage (whose
