@@ -154,8 +154,6 @@ class BandQueue {
       }
     }
 
-    std::vector<List>& lists() const { return *lists_; }
-    int firstBand() const { return firstBand_; }
     int bands() const { return bands_; }
     const PixelRect& region() const { return region_; }
     std::size_t records() const {

@@ -76,7 +76,6 @@ class PassRecording {
   PassRecording(const PassRecording&) = delete;
   PassRecording& operator=(const PassRecording&) = delete;
 
-  ThreadPool& pool() const { return pool_; }
   // A pass on `framebuffer` starts; finish() draws what it kept and ends it (a pass keeps no
   // pointer to a framebuffer after it: the framebuffer may go).
   void start(Framebuffer& framebuffer) {

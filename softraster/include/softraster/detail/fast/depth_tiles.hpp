@@ -64,26 +64,9 @@ inline DepthWriteDirection depthWriteDirection(CompareOp op) {
   return {true, true};
 }
 
-// Once per draw, on the calling thread, before any fragment: a draw that writes depth opens the
-// bounds its compare op may move (keeps: its fragment stage keeps them, top of this file), or
-// forgets them all.
-inline void prepareDepthTiles(Framebuffer& framebuffer, const DepthState& depth, bool keeps) {
-  if (!depth.testEnable || !depth.writeEnable) return;  // nothing is written
-  if (!keeps) {
-    FramebufferAccess::forgetDepthTiles(framebuffer);
-    return;
-  }
-  const DepthWriteDirection direction = depthWriteDirection(depth.compareOp);
-  if (!direction.down && !direction.up) return;
-  for (DepthTileRange& tile : FramebufferAccess::depthTiles(framebuffer)) {
-    if (direction.down) tile.lo = -kNoDepthBound;
-    if (direction.up) tile.hi = kNoDepthBound;
-  }
-}
-
-// prepareDepthTiles for a draw that keeps them, on the tiles of rows [y0, y1] only: a pass's
-// deferred draw (fast/deferred_draws.hpp) opens a band's tiles just before it draws there, after
-// the draws before it have drawn there.
+// A draw that keeps the bounds opens those of the tiles of rows [y0, y1] its compare op may
+// move (prepareDepthTiles, below: all of them). A pass's deferred draw (fast/deferred_draws.hpp)
+// opens a band's tiles just before it draws there, after the draws before it have drawn there.
 inline void prepareDepthTileRows(Framebuffer& framebuffer, const DepthState& depth, int y0, int y1) {
   if (!depth.testEnable || !depth.writeEnable) return;
   const DepthWriteDirection direction = depthWriteDirection(depth.compareOp);
@@ -96,6 +79,18 @@ inline void prepareDepthTileRows(Framebuffer& framebuffer, const DepthState& dep
     if (direction.down) tiles[i].lo = -kNoDepthBound;
     if (direction.up) tiles[i].hi = kNoDepthBound;
   }
+}
+
+// Once per draw, on the calling thread, before any fragment: a draw that writes depth opens the
+// bounds its compare op may move (keeps: its fragment stage keeps them, top of this file), or
+// forgets them all.
+inline void prepareDepthTiles(Framebuffer& framebuffer, const DepthState& depth, bool keeps) {
+  if (!depth.testEnable || !depth.writeEnable) return;  // nothing is written
+  if (!keeps) {
+    FramebufferAccess::forgetDepthTiles(framebuffer);
+    return;
+  }
+  prepareDepthTileRows(framebuffer, depth, 0, static_cast<int>(framebuffer.height()) - 1);
 }
 
 // Whether every fragment with a key in [lo, hi] fails `op` against every stored key in `tile`.
