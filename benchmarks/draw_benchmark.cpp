@@ -258,6 +258,17 @@ void Sphere100kCold(benchmark::State& bench) {
 void WireframeSphere100kCold(benchmark::State& bench) {
   drawFrames(bench, sphere100k(), {.mode = softraster::PolygonMode::Line, .cold = true});
 }
+// The single-draw meshes as crosscheck draws them: cold, and in a pass, whose front end keeps
+// its records across rounds until the pass's flush budget (fast/deferred_draws.hpp).
+void Sphere100kColdInAPass(benchmark::State& bench) {
+  drawFrames(bench, sphere100k(), {.cold = true, .pass = true});
+}
+void WireframeSphere100kColdInAPass(benchmark::State& bench) {
+  drawFrames(bench, sphere100k(), {.mode = softraster::PolygonMode::Line, .cold = true, .pass = true});
+}
+void Sphere1MCulledColdInAPass(benchmark::State& bench) {
+  drawFrames(bench, sphere1M(), {.cull = softraster::CullMode::Back, .cold = true, .pass = true});
+}
 
 // A full-screen quad lit per pixel with Blinn-Phong, the shape of
 // scenes/bench/phong_quad_1080p.json (its material: shininess 32): the shader's arithmetic on
@@ -307,5 +318,8 @@ FRAME_BENCHMARK(SmallTrianglesHundredDraws);
 FRAME_BENCHMARK(PhongQuad);
 FRAME_BENCHMARK(SmallTrianglesInAPass);
 FRAME_BENCHMARK(SmallTrianglesHundredDrawsInAPass);
+FRAME_BENCHMARK(Sphere100kColdInAPass);
+FRAME_BENCHMARK(WireframeSphere100kColdInAPass);
+FRAME_BENCHMARK(Sphere1MCulledColdInAPass);
 
 BENCHMARK_MAIN();
