@@ -1,0 +1,53 @@
+#!/usr/bin/env bash
+# scripts/ab_bench.sh: its failure paths (wrong arguments, a binary that is not there, a filter
+# that selects nothing: one line on stderr naming the problem, exit 2), and one short run of the
+# real softraster_benchmarks against itself: a line per binary per round, with one median per
+# selected benchmark. Times nothing: the numbers are only checked to be numbers.
+#   ab_bench_test.sh SOURCE_DIR SOFTRASTER_BENCHMARKS
+set -uo pipefail
+source_dir=$1
+benchmarks=$2
+script="$source_dir/scripts/ab_bench.sh"
+failures=0
+fail() {
+  echo "FAIL: $*"
+  failures=$((failures + 1))
+}
+
+# expect_error NAME MESSAGE_PATTERN ARGS...: exit 2, and stderr holds one line matching the pattern
+expect_error() {
+  local name=$1 pattern=$2
+  shift 2
+  local err rc
+  err=$(bash "$script" "$@" 2>&1 >/dev/null)
+  rc=$?
+  [ "$rc" -eq 2 ] || fail "$name: exit $rc, expected 2"
+  [ "$(printf '%s\n' "$err" | wc -l)" -eq 1 ] || fail "$name: stderr is not one line: $err"
+  [[ "$err" =~ $pattern ]] || fail "$name: stderr '$err' does not match '$pattern'"
+}
+
+expect_error "no arguments" "^usage: ab_bench.sh BINARY_A BINARY_B FILTER$"
+expect_error "two arguments" "^usage:" "$benchmarks" "$benchmarks"
+expect_error "missing binary" "^ab_bench: /nonexistent/softraster_benchmarks: not an executable file$" \
+  "$benchmarks" /nonexistent/softraster_benchmarks '^FullScreenQuad/threads:1/'
+ROUNDS=0 expect_error "zero rounds" "^ab_bench: ROUNDS \\(0\\) and REPS \\(3\\) must be positive whole numbers$" "$benchmarks" "$benchmarks" x
+REPS=two expect_error "reps not a number" "^ab_bench: ROUNDS \\(4\\) and REPS \\(two\\)" "$benchmarks" "$benchmarks" x
+expect_error "no match" "^ab_bench: no benchmark matches 'NoSuchBenchmark'$" "$benchmarks" "$benchmarks" NoSuchBenchmark
+
+out=$(ROUNDS=2 REPS=1 bash "$script" "$benchmarks" "$benchmarks" '^(FullScreenQuad|SmallTrianglesOneDraw)/threads:1/' 2>&1)
+rc=$?
+[ "$rc" -eq 0 ] || fail "run: exit $rc: $out"
+for round in 1 2; do
+  for side in A B; do
+    line=$(grep -E "^round $round $side: " <<<"$out")
+    [[ "$line" =~ ^round\ $round\ $side:\ [0-9.e+-]+\ [0-9.e+-]+\ $ ]] || fail "run: round $round $side: '$line'"
+  done
+done
+[ "$(grep -c '^round ' <<<"$out")" -eq 4 ] || fail "run: not four round lines: $out"
+grep -q '^  FullScreenQuad/threads:1/' <<<"$out" || fail "run: the benchmarks are not listed: $out"
+
+if ((failures)); then
+  echo "ab_bench script: $failures case(s) failed"
+  exit 1
+fi
+echo "ab_bench script: all cases pass"
