@@ -32,6 +32,19 @@ expect_error "missing binary" "^ab_bench: /nonexistent/softraster_benchmarks: no
   "$benchmarks" /nonexistent/softraster_benchmarks '^FullScreenQuad/threads:1/'
 ROUNDS=0 expect_error "zero rounds" "^ab_bench: ROUNDS \\(0\\) and REPS \\(3\\) must be positive whole numbers$" "$benchmarks" "$benchmarks" x
 REPS=two expect_error "reps not a number" "^ab_bench: ROUNDS \\(4\\) and REPS \\(two\\)" "$benchmarks" "$benchmarks" x
+expect_error "a directory" "^ab_bench: /tmp: not an executable file$" "$benchmarks" /tmp x
+scratch=$(mktemp -d)
+trap 'rm -rf "$scratch"' EXIT
+# A build that lists the same benchmarks but fails when run, and one that lists none of them.
+printf '#!/usr/bin/env bash\ncase "$*" in *--benchmark_list_tests*) exec "%s" "$@" ;; esac\nexit 3\n' "$benchmarks" >"$scratch/failing"
+printf '#!/usr/bin/env bash\nexit 0\n' >"$scratch/empty"
+chmod +x "$scratch/failing" "$scratch/empty"
+expect_error "different benchmarks" "^ab_bench: .* and $scratch/empty do not select the same benchmarks with 'FullScreenQuad/threads:1/'$" \
+  "$benchmarks" "$scratch/empty" 'FullScreenQuad/threads:1/'
+err=$(ROUNDS=1 REPS=1 bash "$script" "$benchmarks" "$scratch/failing" '^FullScreenQuad/threads:1/' 2>&1 >/dev/null)
+rc=$?
+[ "$rc" -eq 1 ] || fail "failing run: exit $rc, expected 1"
+[ "$err" = "ab_bench: binary B ($scratch/failing) failed in round 1" ] || fail "failing run: stderr '$err'"
 expect_error "no match" "^ab_bench: no benchmark matches 'NoSuchBenchmark'$" "$benchmarks" "$benchmarks" NoSuchBenchmark
 
 out=$(ROUNDS=2 REPS=1 bash "$script" "$benchmarks" "$benchmarks" '^(FullScreenQuad|SmallTrianglesOneDraw)/threads:1/' 2>&1)
