@@ -1,8 +1,9 @@
 #!/usr/bin/env bash
 # Compares two builds of softraster_benchmarks (A and B) on this noisy, shared host: copies each
 # binary to a fresh file first, then runs them in alternating rounds (A, B, A, B, ...), each
-# round the medians of REPS repetitions of the benchmarks FILTER selects, and prints one line per
-# binary per round (real-time medians in ms, in the order Google Benchmark runs them).
+# round the medians of REPS repetitions of the benchmarks FILTER selects (with REPS=1, the one
+# run's time), and prints one line per binary per round (real time in ms, in the order Google
+# Benchmark runs them).
 #   ROUNDS=4 REPS=3 bash scripts/ab_bench.sh A B 'regex'
 # e.g. bash scripts/ab_bench.sh /tmp/old/softraster_benchmarks build/bin/softraster_benchmarks \
 #        '^(SmallTrianglesInAPass|Sphere100kColdInAPass)/threads:2/'

@@ -1,8 +1,10 @@
 #!/usr/bin/env bash
-# scripts/ab_bench.sh: its failure paths (wrong arguments, a binary that is not there, a filter
-# that selects nothing: one line on stderr naming the problem, exit 2), and one short run of the
-# real softraster_benchmarks against itself: a line per binary per round, with one median per
-# selected benchmark. Times nothing: the numbers are only checked to be numbers.
+# scripts/ab_bench.sh: its failure paths, each one line on stderr naming the problem (wrong
+# arguments, bad ROUNDS or REPS, a binary that is not there or is a directory, a filter that
+# selects nothing or not the same benchmarks in both builds: exit 2; a build whose run fails:
+# exit 1), and one short run of the real softraster_benchmarks against itself: a line per binary
+# per round, with one time per selected benchmark. Times nothing: the numbers are only checked
+# to be numbers.
 #   ab_bench_test.sh SOURCE_DIR SOFTRASTER_BENCHMARKS
 set -uo pipefail
 source_dir=$1
