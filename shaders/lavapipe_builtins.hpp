@@ -2,7 +2,7 @@
 // 22.3.6: SPIR-V lowering in compiler/spirv/vtn_glsl450.c and nir_builtin_builder.h, code
 // generation in gallium/auxiliary/gallivm/lp_bld_arit.c; docs/lavapipe-rules.md, "Shader
 // arithmetic"), so a twin gives the GLSL's bits. Each is written over the twin's float type F
-// (float, or softraster::FloatBatch, one value per lane).
+// (float; softraster::FloatBatch, one value per lane; or FloatBatchPair, two batches).
 //   dot(a, b)         (a.x*b.x + a.y*b.y) + a.z*b.z, every step rounded
 //   length(v)         sqrt(dot(v, v))
 //   normalize(v)      v / length(v), a real division per component
@@ -13,7 +13,8 @@
 //   pow(x, y)         exp2(log2_safe(x) * y), 0 where x == 0 or x is NaN; gallivm's polynomials
 // Each has a float and a FloatBatch form; the batch form is vector code throughout (FloatBatch's
 // sqrt, fma and floor, integer lanes for the exponent bits), step for step the float form, so
-// every lane gets the float form's bits (tests/crosscheck/lighting_test.cpp checks it).
+// every lane gets the float form's bits (tests/crosscheck/lighting_test.cpp checks it). The pair
+// form is the batch form on each half (written over F, or pow and selectLessEqual's own).
 // The polynomials use fmuladd as gallivm does on a CPU with FMA (every x86-64 CPU this project
 // targets has it); a lavapipe on a CPU without FMA rounds them differently.
 // Deliberately absent: denormal flushing (lavapipe's shaders run with DAZ/FTZ; the lit scenes
@@ -253,6 +254,16 @@ inline softraster::FloatBatch pow(softraster::FloatBatch x, softraster::FloatBat
   const softraster::FloatBatch result = exp2(log2Safe(x) * y);
   const softraster::FloatBatch::Native v = x.native();
   return detail::select((v == 0.0f) | (v != v), softraster::FloatBatch(0.0f), result);
+}
+
+// ---- The FloatBatchPair forms (simd.hpp): each half as the batch form ----
+
+inline softraster::FloatBatchPair pow(const softraster::FloatBatchPair& x, const softraster::FloatBatchPair& y) {
+  return {pow(x.low, y.low), pow(x.high, y.high)};
+}
+inline softraster::FloatBatchPair selectLessEqual(const softraster::FloatBatchPair& a, const softraster::FloatBatchPair& b,
+                                                  const softraster::FloatBatchPair& x, const softraster::FloatBatchPair& y) {
+  return {selectLessEqual(a.low, b.low, x.low, y.low), selectLessEqual(a.high, b.high, x.high, y.high)};
 }
 
 }  // namespace shaders::glsl

@@ -114,8 +114,9 @@ TEST(LavapipeBuiltins, PowIsCloseToLibmWithLavapipesEdgeCases) {
   EXPECT_EQ(shaders::glsl::log2Safe(0.0f), -INFINITY);
 }
 
-// The batch built-ins (on the fast path) give each lane the float version's bits: over random bit
-// patterns (NaN, infinities, negatives, denormals) and over the range the lit models use; exp2
+// The batch built-ins (on the fast path) give each lane the float version's bits, and the pair
+// forms of pow and selectLessEqual each half's: over random bit patterns (NaN, infinities,
+// negatives, denormals) and over the range the lit models use; exp2
 // also over the clamp's edges and every integer step in between (x itself, not only log2's results). A batch is only evaluated on an AVX2 + FMA CPU, inside one
 // flattened AVX2 function as the fast path does it (simd.hpp): without flatten, an optimizer that
 // leaves a batch function out of line (-O1 with AddressSanitizer does) compiles it without AVX
@@ -139,12 +140,18 @@ TEST(LavapipeBuiltins, PowIsCloseToLibmWithLavapipesEdgeCases) {
     const FloatBatch p = shaders::glsl::pow(bx, by), s = softraster::sqrt(bx);
     const FloatBatch e = shaders::glsl::exp2(bx), l = shaders::glsl::log2Safe(bx);
     const FloatBatch sel = shaders::glsl::selectLessEqual(bx, by, FloatBatch(1.0f), FloatBatch(0.0f));
+    // The pair forms: the same batches as the low half, and swapped as the high half.
+    const softraster::FloatBatchPair px(bx, by), py(by, bx);
+    const softraster::FloatBatchPair pp = shaders::glsl::pow(px, py);
+    const softraster::FloatBatchPair psel = shaders::glsl::selectLessEqual(px, py, softraster::FloatBatchPair(1.0f), softraster::FloatBatchPair(0.0f));
     for (int k = 0; k < softraster::kBatchLanes; ++k) {
       mismatches += differ(p[k], shaders::glsl::pow(x[k], y[k]));
       mismatches += differ(s[k], shaders::glsl::sqrt(x[k]));
       mismatches += differ(e[k], shaders::glsl::exp2(x[k]));
       mismatches += differ(l[k], shaders::glsl::log2Safe(x[k]));
       mismatches += differ(sel[k], shaders::glsl::selectLessEqual(x[k], y[k], 1.0f, 0.0f));
+      mismatches += differ(pp.low[k], p[k]) + differ(pp.high[k], shaders::glsl::pow(y[k], x[k]));
+      mismatches += differ(psel.low[k], sel[k]) + differ(psel.high[k], shaders::glsl::selectLessEqual(y[k], x[k], 1.0f, 0.0f));
     }
   }
   return mismatches;

@@ -2,7 +2,8 @@
 // of their float counterparts (std::sqrt, std::fma, std::floor), over random bit patterns (NaN,
 // infinities, denormals, negatives) and the edge cases, compiled both ways a batch runs: flattened
 // into an AVX2 + FMA function, as the fast path does, and as baseline x86-64 code (SSE halves), as
-// the scalar path's quad shading and the sanitizer build run it.
+// the scalar path's quad shading and the sanitizer build run it. FloatBatchPair's operations give
+// each half the bits of the same operation on a FloatBatch.
 #include <softraster/simd.hpp>
 
 #include <gtest/gtest.h>
@@ -17,6 +18,7 @@
 namespace {
 
 using softraster::FloatBatch;
+using softraster::FloatBatchPair;
 using softraster::kBatchLanes;
 
 bool sameBits(float a, float b) {
@@ -78,6 +80,49 @@ TEST(FloatBatchPrimitives, BaselineCodeGivesTheFloatFunctionsBits) { EXPECT_EQ(b
 TEST(FloatBatchPrimitives, Avx2CodeGivesTheFloatFunctionsBits) {
   if (!__builtin_cpu_supports("avx2") || !__builtin_cpu_supports("fma")) GTEST_SKIP() << "no AVX2 + FMA";
   EXPECT_EQ(avx2Mismatches(inputs()), 0);
+}
+
+// Halves of FloatBatchPair results that differ from the FloatBatch operation on that half, over
+// pairs made of `values` (the low half from three batches, the high half from the same three in
+// another order, so the halves differ).
+[[gnu::target("avx2,fma"), gnu::flatten, gnu::noinline]] int pairMismatches(const std::vector<float>& values) {
+  int wrong = 0;
+  const auto differ = [](const FloatBatch& pair, const FloatBatch& single) {
+    int lanes = 0;
+    for (int k = 0; k < kBatchLanes; ++k) lanes += !sameBits(pair[k], single[k]);
+    return lanes;
+  };
+  const auto check = [&](const FloatBatchPair& pair, const FloatBatch& low, const FloatBatch& high) {
+    wrong += differ(pair.low, low) + differ(pair.high, high);
+  };
+  for (std::size_t i = 0; i < values.size(); i += 3 * kBatchLanes) {
+    const FloatBatch x = FloatBatch::load(values.data() + i), y = FloatBatch::load(values.data() + i + kBatchLanes),
+                     z = FloatBatch::load(values.data() + i + 2 * kBatchLanes);
+    const FloatBatchPair a(x, z), b(y, x), c(z, y);
+    check(a + b, x + y, z + x);
+    check(a - b, x - y, z - x);
+    check(a * b, x * y, z * x);
+    check(a / b, x / y, z / x);
+    check(-a, -x, -z);
+    check(sseMin(a, b), sseMin(x, y), sseMin(z, x));
+    check(sseMax(a, b), sseMax(x, y), sseMax(z, x));
+    check(sqrt(a), sqrt(x), sqrt(z));
+    check(fma(a, b, c), fma(x, y, z), fma(z, x, y));
+    check(floor(a), floor(x), floor(z));
+    FloatBatchPair d = a;
+    d += b;
+    d *= c;
+    d -= a;
+    d /= b;
+    check(d, ((x + y) * z - x) / y, ((z + x) * y - z) / x);
+    check(FloatBatchPair(values[i]), FloatBatch(values[i]), FloatBatch(values[i]));
+  }
+  return wrong;
+}
+
+TEST(FloatBatchPair, EachHalfIsTheBatchOperation) {
+  if (!__builtin_cpu_supports("avx2") || !__builtin_cpu_supports("fma")) GTEST_SKIP() << "no AVX2 + FMA";
+  EXPECT_EQ(pairMismatches(inputs()), 0);
 }
 
 TEST(FloatBatchPrimitives, FloorKeepsTheSignOfZero) {
