@@ -24,6 +24,12 @@
 //                                             written for FloatBatch only, shaded in 2x2 quads
 //   static constexpr std::array<Interpolation, kVaryings> S::kInterpolation;    default: all perspective
 //   static float S::pointSize(const Uniforms&, const Vertex&);                  gl_PointSize; default 1
+//   static constexpr bool S::kBlockPairs = true;  the fragment function also takes FloatBatchPair
+//                                             (simd.hpp): where the state allows (depth tested and
+//                                             written; no stencil, blending, discards or textures),
+//                                             the fast path shades two blocks in one call, their
+//                                             chains of arithmetic interleaved. For a long shader
+//                                             (Phong per pixel); a short one gains nothing
 //   a fragment function with a third parameter, FragmentBuiltins<F>& (fragment_builtins.hpp):
 //   gl_FragCoord, gl_FrontFacing and discard; such a shader runs before the depth and stencil
 //   tests, on both exact paths (the course's methods draw it with the exact method)
@@ -128,6 +134,14 @@ concept ShadesQuads = requires {
   { S::kQuads } -> std::convertible_to<bool>;
 } && S::kQuads && requires(const typename S::Uniforms& u, const FloatBatch* in) {
   { S::template fragment<FloatBatch>(u, in) } -> std::same_as<Vec4T<FloatBatch>>;
+};
+// A shader the fast path shades two blocks at a time (FloatBatchPair, simd.hpp): it sets
+// kBlockPairs and its fragment function takes the pair.
+template <class S>
+concept ShadesBlockPairs = requires {
+  { S::kBlockPairs } -> std::convertible_to<bool>;
+} && S::kBlockPairs && requires(const typename S::Uniforms& u, const FloatBatchPair* in) {
+  { S::template fragment<FloatBatchPair>(u, in) } -> std::same_as<Vec4T<FloatBatchPair>>;
 };
 // A fragment function that reads or writes the fragment built-ins (fragment_builtins.hpp).
 template <class S>
