@@ -25,7 +25,7 @@
 //     two blocks at a time: a walked block that passes the depth test waits for the next one, and
 //     the two are shaded in one call and written (the walk's last block alone).
 // Pixels of one triangle are independent, and triangles are drawn one after another, so the
-// result is the scalar path's, bit for bit (tests/softraster/fast_path_test.cpp checks it).
+// result is the scalar path's, bit for bit (tests/crosscheck/fast_path_test.cpp checks it).
 // 4x MSAA triangles take the same blocks with coverage, depth and the writes per sample (each
 // pair of adjacent pixels' eight samples one vector, as they lie in memory) and the shader once
 // per pixel at its centre, as the scalar shadeSamples does. The stencil test and update run on
@@ -434,8 +434,9 @@ class FastFragmentStage {
     storeDepth(b, to);
   }
 
-  // interpolateBlock for two blocks: their varyings as the pair's halves, the array built from
-  // them (default-constructed, its twenty vectors were zeroed first, on the stack).
+  // interpolateBlock for two blocks: their varyings as the pair's halves. The array is built from
+  // them directly; default-constructed and then filled, its twenty vectors were first zeroed on
+  // the stack (a fifth more instructions in the lit room's walk).
   template <std::size_t... I>
   [[SOFTRASTER_FAST_TARGET]] static std::array<FloatBatchPair, sizeof...(I)> interpolatePair(std::index_sequence<I...>, const BlockPlanes& t,
                                                                                       const PendingBlock& a, const PendingBlock& b) {
