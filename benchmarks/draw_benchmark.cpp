@@ -10,7 +10,7 @@
 // filled with other data before each frame, as the bench's alternating frames leave them).
 // SmallTrianglesOneDraw and ...HundredDraws: the same triangles in 1 and in 100 draws, what
 // cutting a frame into draws costs; ...InAPass: the 10 and the 100 draws as one softraster::Pass. PhongQuad: a full-screen quad lit per pixel, the cost of a
-// real fragment shader.
+// real fragment shader; BlinnPhongFragmentAlone: that shader alone, one block or two per call.
 //   softraster_benchmarks --benchmark_filter=Sphere --benchmark_repetitions=5
 // Deliberately not a replacement for `crosscheck bench`: no lavapipe beside it, no agreement
 // check; times are the machine's (shared and noisy: compare medians, side by side). "CPU" is the
@@ -294,6 +294,80 @@ void PhongQuad(benchmark::State& bench) {
   drawFrames<PhongShader>(bench, std::span(&mesh, 1), u, {});
 }
 
+// The Blinn-Phong fragment function alone, the PhongQuad's shader without the walk: 512 blocks
+// of that quad's varyings (about 160 KB, in the core's caches), shaded a block per call
+// (FloatBatch) or two (FloatBatchPair, kBlockPairs), on the calling thread. Its time per block
+// (the counter) is the arithmetic's floor for a frame of the quad at 8 lanes: lavapipe spends
+// about 108 ns of CPU per block on the scene, so 3x lavapipe leaves 36 ns for everything.
+// Flattened into an AVX2 + FMA function, as the fast path runs a shader. One thread only.
+constexpr int kShadedBlocks = 512;
+
+[[gnu::target("avx2,fma"), gnu::flatten, gnu::noinline]] void shadeBlocks(const PhongShader::Uniforms& u,
+                                                                         const std::vector<float>& in,
+                                                                         std::vector<float>& out, bool pairs) {
+  using softraster::FloatBatch;
+  using softraster::FloatBatchPair;
+  constexpr int kLanes = softraster::kBatchLanes, kIn = PhongShader::kVaryings;
+  const auto load = [&](int block, int i) { return FloatBatch::load(in.data() + (block * kIn + i) * kLanes); };
+  const auto store = [&](int block, const softraster::Vec4T<FloatBatch>& c) {
+    c.x.store(out.data() + (block * 4 + 0) * kLanes);
+    c.y.store(out.data() + (block * 4 + 1) * kLanes);
+    c.z.store(out.data() + (block * 4 + 2) * kLanes);
+    c.w.store(out.data() + (block * 4 + 3) * kLanes);
+  };
+  if (pairs) {
+    for (int b = 0; b < kShadedBlocks; b += 2) {
+      FloatBatchPair v[kIn];
+      for (int i = 0; i < kIn; ++i) v[i] = FloatBatchPair(load(b, i), load(b + 1, i));
+      const softraster::Vec4T<FloatBatchPair> c = PhongShader::fragment<FloatBatchPair>(u, v);
+      store(b, {c.x.low, c.y.low, c.z.low, c.w.low});
+      store(b + 1, {c.x.high, c.y.high, c.z.high, c.w.high});
+    }
+  } else {
+    for (int b = 0; b < kShadedBlocks; ++b) {
+      FloatBatch v[kIn];
+      for (int i = 0; i < kIn; ++i) v[i] = load(b, i);
+      store(b, PhongShader::fragment<FloatBatch>(u, v));
+    }
+  }
+}
+
+void BlinnPhongFragmentAlone(benchmark::State& bench) {
+  if (!__builtin_cpu_supports("avx2") || !__builtin_cpu_supports("fma")) {
+    bench.SkipWithError("no AVX2 + FMA");
+    return;
+  }
+  PhongShader::Uniforms u;
+  u.lightPosition = {0.4f, -0.3f, -0.1f, 1.0f};
+  u.lightPower = {1.0f, 0.95f, 0.9f, 0.0f};
+  u.indirect = {0.1f, 0.1f, 0.1f, 0.0f};
+  u.specular = {0.6f, 0.6f, 0.6f, 32.0f};
+  // The quad's varyings (PhongQuad: position, normal, colour) at the pixels of a few rows of 4x2
+  // blocks across the middle of the frame.
+  constexpr int kLanes = softraster::kBatchLanes, kIn = PhongShader::kVaryings;
+  std::vector<float> in(static_cast<std::size_t>(kShadedBlocks * kIn * kLanes));
+  std::vector<float> out(static_cast<std::size_t>(kShadedBlocks * 4 * kLanes));
+  for (int b = 0; b < kShadedBlocks; ++b) {
+    for (int lane = 0; lane < kLanes; ++lane) {
+      const int px = (4 * b) % static_cast<int>(kWidth) + lane % 4;
+      const int py = 500 + lane / 4 + 2 * ((4 * b) / static_cast<int>(kWidth));
+      const float x = -1.0f + 2.0f * (static_cast<float>(px) + 0.5f) / kWidth;
+      const float y = -1.0f + 2.0f * (static_cast<float>(py) + 0.5f) / kHeight;
+      const float v[kIn] = {x, y, 0.5f, 0.0f, 0.0f, -1.0f, 0.5f + 0.4f * x, 0.5f + 0.4f * y, 0.6f, 1.0f};
+      for (int i = 0; i < kIn; ++i) in[static_cast<std::size_t>((b * kIn + i) * kLanes + lane)] = v[i];
+    }
+  }
+  const bool pairs = bench.range(0) == 2;
+  for (auto _ : bench) {
+    shadeBlocks(u, in, out, pairs);
+    benchmark::DoNotOptimize(out.data());
+    benchmark::ClobberMemory();
+  }
+  // Seconds per block, printed with an SI prefix (53n: 53 ns).
+  bench.counters["per_block"] = benchmark::Counter(static_cast<double>(bench.iterations()) * kShadedBlocks,
+                                                   benchmark::Counter::kIsRate | benchmark::Counter::kInvert);
+}
+
 }  // namespace
 
 // Every benchmark: one frame per iteration, at 1 and 2 threads, real time beside the whole
@@ -316,6 +390,8 @@ FRAME_BENCHMARK(WireframeSphere100kCold);
 FRAME_BENCHMARK(SmallTrianglesOneDraw);
 FRAME_BENCHMARK(SmallTrianglesHundredDraws);
 FRAME_BENCHMARK(PhongQuad);
+// Blocks per call: 1 (FloatBatch) or 2 (FloatBatchPair).
+BENCHMARK(BlinnPhongFragmentAlone)->ArgName("blocks_per_call")->Arg(1)->Arg(2);
 FRAME_BENCHMARK(SmallTrianglesInAPass);
 FRAME_BENCHMARK(SmallTrianglesHundredDrawsInAPass);
 FRAME_BENCHMARK(Sphere100kColdInAPass);
