@@ -363,7 +363,7 @@ void BlinnPhongFragmentAlone(benchmark::State& bench) {
     benchmark::DoNotOptimize(out.data());
     benchmark::ClobberMemory();
   }
-  // Seconds per block, printed with an SI prefix (53n: 53 ns).
+  // CPU seconds per block, printed with an SI prefix (53n: 53 ns).
   bench.counters["per_block"] = benchmark::Counter(static_cast<double>(bench.iterations()) * kShadedBlocks,
                                                    benchmark::Counter::kIsRate | benchmark::Counter::kInvert);
 }

@@ -35,7 +35,7 @@ struct LitShader {
   static constexpr bool kUniformBuffer = true;  // too big for push constants
   // Phong and Blinn-Phong per pixel: a long chain of divisions, roots and pow per block, shaded
   // two blocks at a time on the fast path (shader.hpp): the Blinn-Phong quad 12-17% faster. The
-  // course's light, without pow, measured 3-8% slower so in its room, so it does not.
+  // course's light, without pow, measured 3-8% slower in its room, so it does not.
   static constexpr bool kBlockPairs = PerPixel && Model != LightModel::Course;
   static constexpr unsigned kMeshInputs = kReadsNormals;
   // Per vertex: vColour; per pixel: vPosition (3), vNormal (3), vColour (4).

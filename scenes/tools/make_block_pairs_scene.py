@@ -7,7 +7,8 @@ every way a pair can form: spheres of small triangles (walks of one, two, three 
 so odd counts leave a block alone), two spheres that cut through each other and a wall slanting
 through both (blocks where some lanes fail the depth test, and blocks that fail whole between the
 two of a pair), slivers one or two pixels wide, a partly hidden quad under
-GREATER, and alpha 0.5 written as 1 by alpha to one; the target is B8G8R8A8 (red and blue
+GREATER, alpha 0.5 written as 1 by alpha to one, and a quad of the course's light without
+perspective (shaded a block at a time) among them; the target is B8G8R8A8 (red and blue
 swapped as the pair's halves are packed), 203x131 (no dimension a multiple of a block or tile).
 Usage:  python3 scenes/tools/make_block_pairs_scene.py   (from the repository's root)"""
 import json
