@@ -187,8 +187,24 @@ class FastFragmentStage {
 
   // Whether a block's corners may decide it: no edge value c + dcdy * y - dcdx * x over the box
   // and one block past it can wrap around 64 bits (sample offsets stay inside that block).
+  // A line's or a point's quad (four edges) is first checked in integers, which answers for every
+  // one in the viewport bounds: |c| <= 2^59, |dcdx| and |dcdy| <= 2^43 and the box's far corner
+  // (not negative: it lies in the region) below 2^16 bound every value by 3 * 2^59 < 2^61;
+  // otherwise, and for triangles, in doubles. Callgrind, one frame of the 100k-triangle wireframe
+  // at 1 thread (softraster_benchmarks): 562M instructions with the doubles alone, 547M with the
+  // integers first; for three edges GCC vectorises the doubles, which cost about 8 fewer a walk.
   template <int E>
   static bool cornersDecide(const EdgeFunction (&edges)[E], const PixelRect& box) {
+    if constexpr (E == 4) {
+      const auto magnitude = [](std::int64_t v) { return static_cast<std::uint64_t>(v ^ (v >> 63)); };  // |v|, or |v| - 1 below 0
+      std::uint64_t c = 0, steps = 0;
+      for (int i = 0; i < E; ++i) {
+        c |= magnitude(edges[i].c);
+        steps |= magnitude(edges[i].dcdx) | magnitude(edges[i].dcdy);
+      }
+      const auto far = static_cast<std::uint32_t>(box.x1 + kBatchWidth) | static_cast<std::uint32_t>(box.y1 + kBatchHeight);
+      if ((c >> 59) == 0 && (steps >> 43) == 0 && (far >> 16) == 0) return true;
+    }
     bool decide = true;
     for (int i = 0; i < E; ++i) {
       const double reach = std::fabs(static_cast<double>(edges[i].c)) +
