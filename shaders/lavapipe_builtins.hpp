@@ -15,6 +15,11 @@
 // sqrt, fma and floor, integer lanes for the exponent bits), step for step the float form, so
 // every lane gets the float form's bits (tests/crosscheck/lighting_test.cpp checks it). The pair
 // form is the batch form on each half (written over F, or pow and selectLessEqual's own).
+// FloatBatch16 (16 lanes, the fast path's AVX-512 block pairs) takes the F-generic ones as they
+// are, and exp2, log2Safe and pow in AVX-512 code of their own: the batch forms' steps, with
+// their comparisons, truncation and selects as AVX-512 intrinsics (GCC 12 scalarises those
+// written over vector extensions outside AVX-512 code, simd.hpp). selectLessEqual has no 16-lane
+// form: no shader that pairs blocks calls it.
 // The polynomials use fmuladd as gallivm does on a CPU with FMA (every x86-64 CPU this project
 // targets has it); a lavapipe on a CPU without FMA rounds them differently.
 // Deliberately absent: denormal flushing (lavapipe's shaders run with DAZ/FTZ; the lit scenes
@@ -255,6 +260,59 @@ inline softraster::FloatBatch pow(softraster::FloatBatch x, softraster::FloatBat
   const softraster::FloatBatch::Native v = x.native();
   return detail::select((v == 0.0f) | (v != v), softraster::FloatBatch(0.0f), result);
 }
+
+#if defined(__x86_64__) && defined(__GNUC__) && !defined(__clang__)
+// ---- The FloatBatch16 forms (simd.hpp; AVX-512 only): the batch forms' steps over 16 lanes ----
+// In AVX-512 intrinsics where they compare, truncate or select: GCC 12 turns a 16-lane comparison
+// in code without the AVX-512 target (the templates') into one scalar compare per lane.
+namespace detail {
+// The masked forms with every lane kept (GCC 12's unmasked shifts and conversions warn that their
+// undefined source is used uninitialized).
+inline constexpr __mmask16 kAll = 0xffff;
+[[SOFTRASTER_WIDE_TARGET, gnu::always_inline]] inline __m512 wide(softraster::FloatBatch16 x) { return reinterpret_cast<__m512>(x.native()); }
+[[SOFTRASTER_WIDE_TARGET, gnu::always_inline]] inline softraster::FloatBatch16 wide(__m512 v) {
+  return softraster::FloatBatch16(reinterpret_cast<softraster::FloatBatch16::Native>(v));
+}
+}  // namespace detail
+
+[[SOFTRASTER_WIDE_TARGET]] inline softraster::FloatBatch16 exp2(softraster::FloatBatch16 x) {
+  using softraster::FloatBatch16;
+  x = sseMin(FloatBatch16(128.0f), x);
+  x = sseMax(FloatBatch16(-126.99999f), x);
+  const FloatBatch16 whole = softraster::floor(x);
+  const FloatBatch16 fraction = x - whole;
+  // cvttps2dq (0x80000000 for NaN and out of range, as truncateToInt), + 127 wrapping, << 23.
+  const __m512i exponent = _mm512_maskz_slli_epi32(detail::kAll, _mm512_add_epi32(_mm512_maskz_cvttps_epi32(detail::kAll, detail::wide(whole)), _mm512_set1_epi32(127)), 23);
+  return detail::wide(_mm512_castsi512_ps(exponent)) * detail::polynomial<detail::kExp2Polynomial>(fraction);
+}
+
+[[SOFTRASTER_WIDE_TARGET]] inline softraster::FloatBatch16 log2Safe(softraster::FloatBatch16 x) {
+  using softraster::FloatBatch16;
+  const __m512 v = detail::wide(x);
+  const __m512i bits = _mm512_castps_si512(v);
+  const __m512i biased = _mm512_maskz_srli_epi32(detail::kAll, _mm512_and_si512(bits, _mm512_set1_epi32(0x7f800000)), 23);
+  const FloatBatch16 exponent = detail::wide(_mm512_maskz_cvtepi32_ps(detail::kAll, _mm512_sub_epi32(biased, _mm512_set1_epi32(127))));
+  const FloatBatch16 mantissa = detail::wide(_mm512_castsi512_ps(
+      _mm512_or_si512(_mm512_and_si512(bits, _mm512_set1_epi32(0x007fffff)), _mm512_set1_epi32(0x3f800000))));
+  const FloatBatch16 y = (mantissa - 1.0f) / (mantissa + 1.0f);
+  const FloatBatch16 z = y * y;
+  __m512 result = detail::wide(softraster::fma(y, detail::polynomial<detail::kLog2Polynomial>(z), exponent));
+  // Ordered compares, as the batch form's (false where x is NaN).
+  result = _mm512_mask_blend_ps(_mm512_cmp_ps_mask(v, _mm512_set1_ps(std::numeric_limits<float>::infinity()), _CMP_GE_OQ), result,
+                                _mm512_set1_ps(std::numeric_limits<float>::infinity()));
+  result = _mm512_mask_blend_ps(_mm512_cmp_ps_mask(v, _mm512_setzero_ps(), _CMP_EQ_OQ), result,
+                                _mm512_set1_ps(-std::numeric_limits<float>::infinity()));
+  result = _mm512_mask_blend_ps(_mm512_cmp_ps_mask(v, _mm512_setzero_ps(), _CMP_LT_OQ), result,
+                                _mm512_castsi512_ps(_mm512_set1_epi32(0x7fc00000)));
+  return detail::wide(result);
+}
+
+[[SOFTRASTER_WIDE_TARGET]] inline softraster::FloatBatch16 pow(softraster::FloatBatch16 x, softraster::FloatBatch16 y) {
+  const __m512 result = detail::wide(exp2(log2Safe(x) * y));
+  // x == 0 or x NaN: equal-or-unordered.
+  return detail::wide(_mm512_mask_blend_ps(_mm512_cmp_ps_mask(detail::wide(x), _mm512_setzero_ps(), _CMP_EQ_UQ), result, _mm512_setzero_ps()));
+}
+#endif
 
 // ---- The FloatBatchPair forms (simd.hpp): each half as the batch form ----
 

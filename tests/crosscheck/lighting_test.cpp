@@ -7,12 +7,14 @@
 #include "scene/scene.hpp"
 
 #include <lavapipe_builtins.hpp>
+#include <softraster/detail/fast/batch.hpp>
 
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <cstring>
 #include <filesystem>
+#include <limits>
 #include <random>
 #include <string>
 #include <vector>
@@ -155,6 +157,43 @@ TEST(LavapipeBuiltins, PowIsCloseToLibmWithLavapipesEdgeCases) {
     }
   }
   return mismatches;
+}
+
+// The 16-lane forms (the fast path's AVX-512 block pairs) give each lane the float version's
+// bits, over the same kinds of input; compiled as the fast path's wide function is.
+[[SOFTRASTER_WIDE_TARGET, gnu::flatten, gnu::noinline]] int wideMismatches() {
+  using softraster::FloatBatch16;
+  constexpr int kLanes = 2 * softraster::kBatchLanes;
+  std::mt19937 random(2027);
+  int mismatches = 0;
+  const auto differ = [](float a, float b) { return std::memcmp(&a, &b, sizeof a) != 0 && !(std::isnan(a) && std::isnan(b)); };
+  for (int round = 0; round < 25000; ++round) {
+    alignas(64) float x[kLanes], y[kLanes];
+    for (int k = 0; k < kLanes; ++k) {
+      const std::uint32_t bits = random();
+      std::memcpy(&x[k], &bits, sizeof bits);
+      if (round % 2) x[k] = std::ldexp(static_cast<float>(random() % 100000) / 100000.0f, -static_cast<int>(random() % 20));
+      y[k] = static_cast<float>(random() % 2000) / 10.0f;
+    }
+    x[3] = 0.0f;
+    x[12] = -0.0f;
+    x[13] = std::numeric_limits<float>::infinity();
+    x[5] = static_cast<float>(random() % 280001) / 1000.0f - 140.0f;  // exp2's clamps and integer steps
+    x[14] = static_cast<float>(random() % 280001) / 1000.0f - 140.0f;
+    const FloatBatch16 bx = FloatBatch16::load(x), by = FloatBatch16::load(y);
+    const FloatBatch16 p = shaders::glsl::pow(bx, by), e = shaders::glsl::exp2(bx), l = shaders::glsl::log2Safe(bx);
+    for (int k = 0; k < kLanes; ++k) {
+      mismatches += differ(p[k], shaders::glsl::pow(x[k], y[k]));
+      mismatches += differ(e[k], shaders::glsl::exp2(x[k]));
+      mismatches += differ(l[k], shaders::glsl::log2Safe(x[k]));
+    }
+  }
+  return mismatches;
+}
+
+TEST(LavapipeBuiltins, WideGivesTheFloatVersionsBits) {
+  if (!softraster::detail::fast::cpuShadesWidePairs()) GTEST_SKIP() << "no AVX-512 F, VL, BW and DQ";
+  EXPECT_EQ(wideMismatches(), 0);
 }
 
 TEST(LavapipeBuiltins, BatchGivesTheFloatVersionsBits) {

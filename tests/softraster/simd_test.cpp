@@ -3,7 +3,9 @@
 // infinities, denormals, negatives) and the edge cases, compiled both ways a batch runs: flattened
 // into an AVX2 + FMA function, as the fast path does, and as baseline x86-64 code (SSE halves), as
 // the scalar path's quad shading and the sanitizer build run it. FloatBatchPair's operations give
-// each half the bits of the same operation on a FloatBatch.
+// each half the bits of the same operation on a FloatBatch, and FloatBatch16's (the fast path's
+// AVX-512 block pairs, where the CPU has it) each lane the float operation's bits.
+#include <softraster/detail/fast/batch.hpp>
 #include <softraster/simd.hpp>
 
 #include <gtest/gtest.h>
@@ -123,6 +125,39 @@ TEST(FloatBatchPrimitives, Avx2CodeGivesTheFloatFunctionsBits) {
 TEST(FloatBatchPair, EachHalfIsTheBatchOperation) {
   if (!__builtin_cpu_supports("avx2") || !__builtin_cpu_supports("fma")) GTEST_SKIP() << "no AVX2 + FMA";
   EXPECT_EQ(pairMismatches(inputs()), 0);
+}
+
+// Lanes of FloatBatch16 results (the fast path's AVX-512 block pairs) that differ from the float
+// operation, for 16-lane batches made of `values`, three at a time; compiled as the fast path's
+// wide function is (AVX-512, flattened).
+[[SOFTRASTER_WIDE_TARGET, gnu::flatten, gnu::noinline]] int wideMismatches(const std::vector<float>& values) {
+  using softraster::FloatBatch16;
+  constexpr int kLanes = 2 * kBatchLanes;
+  int wrong = 0;
+  std::vector<float> padded = values;
+  while (padded.size() % (3 * kLanes) != 0) padded.push_back(1.0f);
+  for (std::size_t i = 0; i < padded.size(); i += 3 * kLanes) {
+    const float* a = padded.data() + i;
+    const float* b = a + kLanes;
+    const float* c = b + kLanes;
+    const FloatBatch16 x = FloatBatch16::load(a), y = FloatBatch16::load(b), z = FloatBatch16::load(c);
+    const FloatBatch16 root = sqrt(x), fused = fma(x, y, z), down = floor(x), sum = x + y, difference = x - y, product = x * y,
+                       quotient = x / y, negated = -x, smaller = sseMin(x, y), larger = sseMax(x, y);
+    for (int k = 0; k < kLanes; ++k) {
+      wrong += !sameBits(root[k], std::sqrt(a[k]));
+      wrong += !sameBits(fused[k], std::fma(a[k], b[k], c[k]));
+      wrong += !sameBits(down[k], std::floor(a[k]));
+      wrong += !sameBits(sum[k], a[k] + b[k]) + !sameBits(difference[k], a[k] - b[k]) + !sameBits(product[k], a[k] * b[k]);
+      wrong += !sameBits(quotient[k], a[k] / b[k]) + !sameBits(negated[k], -a[k]);
+      wrong += !sameBits(smaller[k], softraster::sseMin(a[k], b[k])) + !sameBits(larger[k], softraster::sseMax(a[k], b[k]));
+    }
+  }
+  return wrong;
+}
+
+TEST(FloatBatch16, EachLaneIsTheFloatOperation) {
+  if (!softraster::detail::fast::cpuShadesWidePairs()) GTEST_SKIP() << "no AVX-512 F, VL, BW and DQ";
+  EXPECT_EQ(wideMismatches(inputs()), 0);
 }
 
 TEST(FloatBatchPrimitives, FloorKeepsTheSignOfZero) {

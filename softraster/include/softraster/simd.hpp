@@ -21,6 +21,10 @@
 // conversions; each gives exactly its float counterpart's bits. Integer work on the lanes (a
 // float's bits, an exponent) uses NativeMask, the int32 vector, through native().
 // FloatBatchPair (below) carries two batches for shaders that take them (shader.hpp, kBlockPairs).
+// FloatBatch is FloatLanes<8>; FloatBatch16 (FloatLanes<16>, one zmm register) is the same type at
+// 16 lanes, which the fast path shades a block pair with where the CPU has AVX-512: its
+// arithmetic, sqrt, fma, sseMin and sseMax are the templates' (16-lane instructions once inlined
+// into AVX-512 code); floor has an AVX-512 overload of its own (below, with why).
 // Deliberately absent until a shader needs them: transcendental functions (lavapipe's own
 // polynomials live with the shaders' built-ins, shaders/lavapipe_builtins.hpp), gathers.
 #pragma once
@@ -29,7 +33,7 @@
 #include <cstdint>
 #include <cstring>
 #if defined(__x86_64__)
-#include <xmmintrin.h>
+#include <immintrin.h>
 #endif
 
 // The native vectors are 32 bytes wide; outside AVX code GCC notes that passing one by value has
@@ -46,98 +50,131 @@ namespace softraster {
 
 inline constexpr int kBatchLanes = 8;
 
-class FloatBatch {
- public:
-  using Native = float __attribute__((vector_size(32)));
-  using NativeMask = std::int32_t __attribute__((vector_size(32)));
+// The vector-extension types of a batch of 8 or 16 lanes (GCC 12 drops a vector_size that
+// depends on a template parameter, leaving a scalar, so each width is spelt out).
+template <int Lanes>
+struct NativeLanes;
+template <>
+struct NativeLanes<8> {
+  using Float = float __attribute__((vector_size(32)));
+  using Int = std::int32_t __attribute__((vector_size(32)));
+  using Bits = std::uint32_t __attribute__((vector_size(32)));
+};
+template <>
+struct NativeLanes<16> {
+  using Float = float __attribute__((vector_size(64)));
+  using Int = std::int32_t __attribute__((vector_size(64)));
+  using Bits = std::uint32_t __attribute__((vector_size(64)));
+};
 
-  FloatBatch() : v_{} {}
+// FloatLanes<Lanes>: the batch type at a width. FloatBatch (8 lanes, AVX2) is the one shaders
+// are written over; FloatBatch16 (16 lanes) shades a block pair on the fast path with AVX-512.
+template <int Lanes>
+class FloatLanes {
+ public:
+  static constexpr int kLanes = Lanes;
+  using Native = typename NativeLanes<Lanes>::Float;
+  using NativeMask = typename NativeLanes<Lanes>::Int;
+
+  FloatLanes() : v_{} {}
   // Every lane s (implicit, so a shader writes `c * 0.5f` for both of its float types); -0 and
   // NaN stay as they are (no arithmetic). splat() fills the lanes in a loop: the initializer
   // {s, s, s, s, s, s, s, s} became eight vinsertps (and a 32-byte load and two shuffles for
   // a uniform's x, y or z) where a lit shader broadcast its uniforms in the pixel loop; the
   // loop is one vbroadcastss (shufps in baseline code). The lit room: 4.33 -> 4.12 ms.
-  FloatBatch(float s) : v_(splat(s)) {}  // NOLINT(google-explicit-constructor)
-  [[gnu::always_inline]] explicit FloatBatch(Native v) : v_(v) {}
-  // User-provided on purpose: it makes FloatBatch "non-trivial for the purposes of calls", so the
+  FloatLanes(float s) : v_(splat(s)) {}  // NOLINT(google-explicit-constructor)
+  [[gnu::always_inline]] explicit FloatLanes(Native v) : v_(v) {}
+  // User-provided on purpose: it makes the batch "non-trivial for the purposes of calls", so the
   // C++ ABI passes and returns it through memory whatever the instruction set. A trivially
   // copyable 32-byte vector travels in a ymm register between AVX functions but through memory
   // from baseline ones, so an AVX2 draw loop calling a shader function that was not inlined (the
   // sanitizer build does not flatten) read its arguments from the wrong place. Inlined code, and
   // so every flattened draw, is unchanged.
-  FloatBatch(const FloatBatch& other) : v_(other.v_) {}
-  FloatBatch& operator=(const FloatBatch& other) = default;
+  FloatLanes(const FloatLanes& other) : v_(other.v_) {}
+  FloatLanes& operator=(const FloatLanes& other) = default;
 
-  static FloatBatch load(const float* p) {
+  static FloatLanes load(const float* p) {
     Native v;
     std::memcpy(&v, p, sizeof v);
-    return FloatBatch(v);
+    return FloatLanes(v);
   }
   void store(float* p) const { std::memcpy(p, &v_, sizeof v_); }
 
   float operator[](int lane) const { return v_[lane]; }
   [[gnu::always_inline]] Native native() const { return v_; }
 
-  friend FloatBatch operator+(FloatBatch a, FloatBatch b) { return FloatBatch(a.v_ + b.v_); }
-  friend FloatBatch operator-(FloatBatch a, FloatBatch b) { return FloatBatch(a.v_ - b.v_); }
-  friend FloatBatch operator*(FloatBatch a, FloatBatch b) { return FloatBatch(a.v_ * b.v_); }
-  friend FloatBatch operator/(FloatBatch a, FloatBatch b) { return FloatBatch(a.v_ / b.v_); }
-  friend FloatBatch operator-(FloatBatch a) { return FloatBatch(-a.v_); }
-  FloatBatch& operator+=(FloatBatch b) { return *this = *this + b; }
-  FloatBatch& operator-=(FloatBatch b) { return *this = *this - b; }
-  FloatBatch& operator*=(FloatBatch b) { return *this = *this * b; }
-  FloatBatch& operator/=(FloatBatch b) { return *this = *this / b; }
+  friend FloatLanes operator+(FloatLanes a, FloatLanes b) { return FloatLanes(a.v_ + b.v_); }
+  friend FloatLanes operator-(FloatLanes a, FloatLanes b) { return FloatLanes(a.v_ - b.v_); }
+  friend FloatLanes operator*(FloatLanes a, FloatLanes b) { return FloatLanes(a.v_ * b.v_); }
+  friend FloatLanes operator/(FloatLanes a, FloatLanes b) { return FloatLanes(a.v_ / b.v_); }
+  friend FloatLanes operator-(FloatLanes a) { return FloatLanes(-a.v_); }
+  FloatLanes& operator+=(FloatLanes b) { return *this = *this + b; }
+  FloatLanes& operator-=(FloatLanes b) { return *this = *this - b; }
+  FloatLanes& operator*=(FloatLanes b) { return *this = *this * b; }
+  FloatLanes& operator/=(FloatLanes b) { return *this = *this / b; }
 
   // Lane-wise a < b ? a : b (SSE minps) and a > b ? a : b (maxps).
-  friend FloatBatch sseMin(FloatBatch a, FloatBatch b) { return FloatBatch(a.v_ < b.v_ ? a.v_ : b.v_); }
-  friend FloatBatch sseMax(FloatBatch a, FloatBatch b) { return FloatBatch(a.v_ > b.v_ ? a.v_ : b.v_); }
+  friend FloatLanes sseMin(FloatLanes a, FloatLanes b) { return FloatLanes(a.v_ < b.v_ ? a.v_ : b.v_); }
+  friend FloatLanes sseMax(FloatLanes a, FloatLanes b) { return FloatLanes(a.v_ > b.v_ ? a.v_ : b.v_); }
 
  private:
   [[gnu::always_inline]] static Native splat(float s) {
     Native v;
-    for (int i = 0; i < kBatchLanes; ++i) v[i] = s;
+    for (int i = 0; i < Lanes; ++i) v[i] = s;
     return v;
   }
 
   Native v_;
 };
 
+using FloatBatch = FloatLanes<kBatchLanes>;
+// A block pair's 16 lanes (block a's eight, then block b's), for AVX-512 code only.
+using FloatBatch16 = FloatLanes<2 * kBatchLanes>;
+
 // Lane-wise std::sqrt (IEEE, correctly rounded). Where square roots need not set errno
 // (-fno-math-errno, which softraster's CMake target passes on), a loop over the lanes that GCC
-// turns into one vsqrtps in the AVX2 entry point (and two sqrtps in baseline code); two 128-bit
-// halves and the shuffles between them otherwise.
-inline FloatBatch sqrt(FloatBatch a) {
-  const FloatBatch::Native v = a.native();
+// turns into one vsqrtps in the AVX2 entry point (and two sqrtps in baseline code); 128-bit
+// quarters through sqrtps otherwise.
+template <int Lanes>
+FloatLanes<Lanes> sqrt(FloatLanes<Lanes> a) {
+  using Native = typename FloatLanes<Lanes>::Native;
+  const Native v = a.native();
 #if defined(__NO_MATH_ERRNO__)
-  FloatBatch::Native r;
-  for (int i = 0; i < kBatchLanes; ++i) r[i] = __builtin_sqrtf(v[i]);
-  return FloatBatch(r);
+  Native r;
+  for (int i = 0; i < Lanes; ++i) r[i] = __builtin_sqrtf(v[i]);
+  return FloatLanes<Lanes>(r);
 #elif defined(__x86_64__)
-  using Half = float __attribute__((vector_size(16)));
-  const auto root = [](Half h) { return reinterpret_cast<Half>(_mm_sqrt_ps(reinterpret_cast<__m128>(h))); };
-  const Half low = root(__builtin_shufflevector(v, v, 0, 1, 2, 3));
-  const Half high = root(__builtin_shufflevector(v, v, 4, 5, 6, 7));
-  return FloatBatch(__builtin_shufflevector(low, high, 0, 1, 2, 3, 4, 5, 6, 7));
+  Native r;
+  for (int q = 0; q < Lanes; q += 4) {
+    __m128 quarter;
+    std::memcpy(&quarter, reinterpret_cast<const float*>(&v) + q, sizeof quarter);
+    quarter = _mm_sqrt_ps(quarter);
+    std::memcpy(reinterpret_cast<float*>(&r) + q, &quarter, sizeof quarter);
+  }
+  return FloatLanes<Lanes>(r);
 #else
-  FloatBatch::Native r;
-  for (int i = 0; i < kBatchLanes; ++i) r[i] = std::sqrt(v[i]);
-  return FloatBatch(r);
+  Native r;
+  for (int i = 0; i < Lanes; ++i) r[i] = std::sqrt(v[i]);
+  return FloatLanes<Lanes>(r);
 #endif
 }
 
 // Lane-wise std::fma: a * b + c rounded once.
-inline FloatBatch fma(FloatBatch a, FloatBatch b, FloatBatch c) {
-  const FloatBatch::Native x = a.native(), y = b.native(), z = c.native();
-  FloatBatch::Native r;
-  for (int i = 0; i < kBatchLanes; ++i) r[i] = __builtin_fmaf(x[i], y[i], z[i]);
-  return FloatBatch(r);
+template <int Lanes>
+FloatLanes<Lanes> fma(FloatLanes<Lanes> a, FloatLanes<Lanes> b, FloatLanes<Lanes> c) {
+  using Native = typename FloatLanes<Lanes>::Native;
+  const Native x = a.native(), y = b.native(), z = c.native();
+  Native r;
+  for (int i = 0; i < Lanes; ++i) r[i] = __builtin_fmaf(x[i], y[i], z[i]);
+  return FloatLanes<Lanes>(r);
 }
 
 // Lane-wise std::floor: -0 stays -0; NaN, infinities and lanes of magnitude 2^23 or more (whole
 // already) pass as they are.
-inline FloatBatch floor(FloatBatch a) {
-  using Native = FloatBatch::Native;
-  using Ints = FloatBatch::NativeMask;
+template <int Lanes>
+FloatLanes<Lanes> floor(FloatLanes<Lanes> a) {
+  using Native = typename FloatLanes<Lanes>::Native;
+  using Ints = typename FloatLanes<Lanes>::NativeMask;
   const Native v = a.native();
   const Ints small = (v < 8388608.0f) & (v > -8388608.0f);  // false for NaN
   const Native whole = __builtin_convertvector(__builtin_convertvector(small ? v : Native{}, Ints), Native);
@@ -145,8 +182,23 @@ inline FloatBatch floor(FloatBatch a) {
   // A lane that comes down to zero keeps its sign: floor(-0) is -0, floor(0.5) is +0.
   const Ints sign = reinterpret_cast<Ints>(v) & (down == 0.0f) & (Ints{} + INT32_MIN);
   const Native signedDown = reinterpret_cast<Native>(reinterpret_cast<Ints>(down) | sign);
-  return FloatBatch(small ? signedDown : v);
+  return FloatLanes<Lanes>(small ? signedDown : v);
 }
+
+#if defined(__x86_64__) && defined(__GNUC__) && !defined(__clang__)
+// The AVX-512 code a FloatBatch16 runs in (the fast path's wide block pairs, fast/fragments.hpp).
+#define SOFTRASTER_WIDE_TARGET gnu::target("avx512f,avx512vl,avx512bw,avx512dq,avx2,fma")
+// floor for 16 lanes, as vrndscaleps (round down): the template's bits for every number, -0 and
+// infinity (a NaN stays a NaN, quietened). An AVX-512 function of its own because GCC 12 turns a
+// 16-lane comparison whose result is used as a vector (the template's masks), written in code
+// without that target, into one scalar compare per lane even once inlined into AVX-512 code
+// (a 16-lane shader ran slower than the 8-lane pairs); a comparison feeding only a select
+// (sseMin, sseMax) is one instruction.
+[[SOFTRASTER_WIDE_TARGET, gnu::always_inline]] inline FloatBatch16 floor(FloatBatch16 a) {
+  const __m512 v = _mm512_maskz_roundscale_ps(0xffff, reinterpret_cast<__m512>(a.native()), _MM_FROUND_TO_NEG_INF | _MM_FROUND_NO_EXC);
+  return FloatBatch16(reinterpret_cast<FloatBatch16::Native>(v));
+}
+#endif
 
 // FloatBatchPair: two blocks' batches as one value, each operation applied to the low half and
 // then the high half, so each lane rounds as FloatBatch's does. A long shader (three normalizes

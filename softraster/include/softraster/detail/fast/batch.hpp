@@ -42,6 +42,12 @@ namespace softraster::detail::fast {
 // Whether this CPU runs the fast path (AVX2 for the lanes, FMA for lavapipe's fused fmuladd).
 inline bool cpuRunsFastPath() { return __builtin_cpu_supports("avx2") && __builtin_cpu_supports("fma"); }
 
+// Whether this CPU (and its OS) runs AVX-512 F, VL, BW and DQ: a block pair's 16 lanes in one register.
+inline bool cpuShadesWidePairs() {
+  return __builtin_cpu_supports("avx512f") && __builtin_cpu_supports("avx512vl") && __builtin_cpu_supports("avx512bw") &&
+         __builtin_cpu_supports("avx512dq");
+}
+
 inline constexpr int kBatchWidth = 4, kBatchHeight = 2;
 
 using Floats = FloatBatch::Native;
