@@ -18,6 +18,7 @@
 #include "lit.hpp"
 #include "vertex_color.hpp"
 
+#include <softraster/detail/fast/batch.hpp>
 #include <softraster/pass.hpp>
 #include <softraster/pipeline.hpp>
 
@@ -296,7 +297,8 @@ void PhongQuad(benchmark::State& bench) {
 
 // The Blinn-Phong fragment function alone, the PhongQuad's shader without the walk: 512 blocks
 // of that quad's varyings (about 160 KB, in the core's caches), shaded a block per call
-// (FloatBatch) or two (FloatBatchPair, kBlockPairs), on the calling thread. Its time per block
+// (FloatBatch) or two (FloatBatchPair, kBlockPairs; or FloatBatch16 where the CPU has AVX-512,
+// BlinnPhongFragmentAloneWide), on the calling thread. Its time per block
 // (the counter) is the arithmetic's floor for a frame of the quad at 8 lanes: lavapipe spends
 // about 108 ns of CPU per block on the scene, so 3x lavapipe leaves 36 ns for everything.
 // Flattened into an AVX2 + FMA function, as the fast path runs a shader. One thread only.
@@ -332,11 +334,37 @@ constexpr int kShadedBlocks = 512;
   }
 }
 
-void BlinnPhongFragmentAlone(benchmark::State& bench) {
-  if (!__builtin_cpu_supports("avx2") || !__builtin_cpu_supports("fma")) {
-    bench.SkipWithError("no AVX2 + FMA");
-    return;
+// The same blocks two at a time as one FloatBatch16 (block b's lanes, then block b + 1's), as the
+// fast path shades a pair where the CPU has AVX-512 (shadePairWide); AVX-512 code, flattened.
+[[SOFTRASTER_WIDE_TARGET, gnu::flatten, gnu::noinline]] void shadeBlocksWide(const PhongShader::Uniforms& u,
+                                                                          const std::vector<float>& in, std::vector<float>& out) {
+  using softraster::FloatBatch16;
+  constexpr int kLanes = softraster::kBatchLanes, kIn = PhongShader::kVaryings;
+  const auto load = [&](int block, int i) {
+    const softraster::FloatBatch a = softraster::FloatBatch::load(in.data() + (block * kIn + i) * kLanes);
+    const softraster::FloatBatch b = softraster::FloatBatch::load(in.data() + ((block + 1) * kIn + i) * kLanes);
+    return FloatBatch16(__builtin_shufflevector(a.native(), b.native(), 0, 1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 11, 12, 13, 14, 15));
+  };
+  const auto store = [&](int block, int channel, const FloatBatch16& f) {
+    const FloatBatch16::Native v = f.native();
+    softraster::FloatBatch(__builtin_shufflevector(v, v, 0, 1, 2, 3, 4, 5, 6, 7)).store(out.data() + (block * 4 + channel) * kLanes);
+    softraster::FloatBatch(__builtin_shufflevector(v, v, 8, 9, 10, 11, 12, 13, 14, 15))
+        .store(out.data() + ((block + 1) * 4 + channel) * kLanes);
+  };
+  for (int b = 0; b < kShadedBlocks; b += 2) {
+    FloatBatch16 v[kIn];
+    for (int i = 0; i < kIn; ++i) v[i] = load(b, i);
+    const softraster::Vec4T<FloatBatch16> c = PhongShader::fragment<FloatBatch16>(u, v);
+    store(b, 0, c.x);
+    store(b, 1, c.y);
+    store(b, 2, c.z);
+    store(b, 3, c.w);
   }
+}
+
+// blocks_per_call: 1 (FloatBatch) or 2 (FloatBatchPair); BlinnPhongFragmentAloneWide: 2 as one
+// FloatBatch16.
+void shadeBlocksAlone(benchmark::State& bench, bool pairs, bool wide) {
   PhongShader::Uniforms u;
   u.lightPosition = {0.4f, -0.3f, -0.1f, 1.0f};
   u.lightPower = {1.0f, 0.95f, 0.9f, 0.0f};
@@ -357,15 +385,34 @@ void BlinnPhongFragmentAlone(benchmark::State& bench) {
       for (int i = 0; i < kIn; ++i) in[static_cast<std::size_t>((b * kIn + i) * kLanes + lane)] = v[i];
     }
   }
-  const bool pairs = bench.range(0) == 2;
   for (auto _ : bench) {
-    shadeBlocks(u, in, out, pairs);
+    if (wide) {
+      shadeBlocksWide(u, in, out);
+    } else {
+      shadeBlocks(u, in, out, pairs);
+    }
     benchmark::DoNotOptimize(out.data());
     benchmark::ClobberMemory();
   }
   // CPU seconds per block, printed with an SI prefix (53n: 53 ns).
   bench.counters["per_block"] = benchmark::Counter(static_cast<double>(bench.iterations()) * kShadedBlocks,
                                                    benchmark::Counter::kIsRate | benchmark::Counter::kInvert);
+}
+
+void BlinnPhongFragmentAlone(benchmark::State& bench) {
+  if (!__builtin_cpu_supports("avx2") || !__builtin_cpu_supports("fma")) {
+    bench.SkipWithError("no AVX2 + FMA");
+    return;
+  }
+  shadeBlocksAlone(bench, bench.range(0) == 2, false);
+}
+
+void BlinnPhongFragmentAloneWide(benchmark::State& bench) {
+  if (!softraster::detail::fast::cpuShadesWidePairs()) {
+    bench.SkipWithError("no AVX-512 F, VL, BW and DQ");
+    return;
+  }
+  shadeBlocksAlone(bench, true, true);
 }
 
 }  // namespace
@@ -392,6 +439,7 @@ FRAME_BENCHMARK(SmallTrianglesHundredDraws);
 FRAME_BENCHMARK(PhongQuad);
 // Blocks per call: 1 (FloatBatch) or 2 (FloatBatchPair).
 BENCHMARK(BlinnPhongFragmentAlone)->ArgName("blocks_per_call")->Arg(1)->Arg(2);
+BENCHMARK(BlinnPhongFragmentAloneWide);
 FRAME_BENCHMARK(SmallTrianglesInAPass);
 FRAME_BENCHMARK(SmallTrianglesHundredDrawsInAPass);
 FRAME_BENCHMARK(Sphere100kColdInAPass);
