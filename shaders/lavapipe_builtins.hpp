@@ -14,7 +14,8 @@
 // Each has a float and a FloatBatch form; the batch form is vector code throughout (FloatBatch's
 // sqrt, fma and floor, integer lanes for the exponent bits), step for step the float form, so
 // every lane gets the float form's bits (tests/crosscheck/lighting_test.cpp checks it). The pair
-// form is the batch form on each half (written over F, or pow and selectLessEqual's own).
+// form is the batch form on each half (written over F, or pow and selectLessEqual's own, for
+// FloatBatchPair and FloatBatch16Pair alike).
 // FloatBatch16 (16 lanes, the fast path's AVX-512 block pairs) takes the F-generic ones as they
 // are, and exp2, log2Safe and pow in AVX-512 code of their own: the batch forms' steps, with
 // their comparisons, truncation and selects as AVX-512 intrinsics (GCC 12 scalarises those
@@ -314,13 +315,15 @@ inline constexpr __mmask16 kAll = 0xffff;
 }
 #endif
 
-// ---- The FloatBatchPair forms (simd.hpp): each half as the batch form ----
+// ---- The pair forms (simd.hpp's BatchPair: FloatBatchPair, FloatBatch16Pair): each half as the batch form ----
 
-inline softraster::FloatBatchPair pow(const softraster::FloatBatchPair& x, const softraster::FloatBatchPair& y) {
+template <class H>
+softraster::BatchPair<H> pow(const softraster::BatchPair<H>& x, const softraster::BatchPair<H>& y) {
   return {pow(x.low, y.low), pow(x.high, y.high)};
 }
-inline softraster::FloatBatchPair selectLessEqual(const softraster::FloatBatchPair& a, const softraster::FloatBatchPair& b,
-                                                  const softraster::FloatBatchPair& x, const softraster::FloatBatchPair& y) {
+template <class H>
+softraster::BatchPair<H> selectLessEqual(const softraster::BatchPair<H>& a, const softraster::BatchPair<H>& b,
+                                         const softraster::BatchPair<H>& x, const softraster::BatchPair<H>& y) {
   return {selectLessEqual(a.low, b.low, x.low, y.low), selectLessEqual(a.high, b.high, x.high, y.high)};
 }
 

@@ -160,7 +160,8 @@ TEST(LavapipeBuiltins, PowIsCloseToLibmWithLavapipesEdgeCases) {
 }
 
 // The 16-lane forms (the fast path's AVX-512 block pairs) give each lane the float version's
-// bits, over the same kinds of input; compiled as the fast path's wide function is.
+// bits, and pow's FloatBatch16Pair form each half's, over the same kinds of input; compiled as
+// the fast path's wide functions are.
 [[SOFTRASTER_WIDE_TARGET, gnu::flatten, gnu::noinline]] int wideMismatches() {
   using softraster::FloatBatch16;
   constexpr int kLanes = 2 * softraster::kBatchLanes;
@@ -182,10 +183,13 @@ TEST(LavapipeBuiltins, PowIsCloseToLibmWithLavapipesEdgeCases) {
     x[14] = static_cast<float>(random() % 280001) / 1000.0f - 140.0f;
     const FloatBatch16 bx = FloatBatch16::load(x), by = FloatBatch16::load(y);
     const FloatBatch16 p = shaders::glsl::pow(bx, by), e = shaders::glsl::exp2(bx), l = shaders::glsl::log2Safe(bx);
+    // Two pairs at once (FloatBatch16Pair): the batches as the low half, swapped as the high half.
+    const softraster::FloatBatch16Pair pp = shaders::glsl::pow(softraster::FloatBatch16Pair(bx, by), softraster::FloatBatch16Pair(by, bx));
     for (int k = 0; k < kLanes; ++k) {
       mismatches += differ(p[k], shaders::glsl::pow(x[k], y[k]));
       mismatches += differ(e[k], shaders::glsl::exp2(x[k]));
       mismatches += differ(l[k], shaders::glsl::log2Safe(x[k]));
+      mismatches += differ(pp.low[k], p[k]) + differ(pp.high[k], shaders::glsl::pow(y[k], x[k]));
     }
   }
   return mismatches;

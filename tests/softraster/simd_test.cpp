@@ -128,8 +128,9 @@ TEST(FloatBatchPair, EachHalfIsTheBatchOperation) {
 }
 
 // Lanes of FloatBatch16 results (the fast path's AVX-512 block pairs) that differ from the float
-// operation, for 16-lane batches made of `values`, three at a time; compiled as the fast path's
-// wide function is (AVX-512, flattened).
+// operation, for 16-lane batches made of `values`, three at a time, and halves of FloatBatch16Pair
+// results that differ from the FloatBatch16 operation; compiled as the fast path's wide functions
+// are (AVX-512, flattened).
 [[SOFTRASTER_WIDE_TARGET, gnu::flatten, gnu::noinline]] int wideMismatches(const std::vector<float>& values) {
   using softraster::FloatBatch16;
   constexpr int kLanes = 2 * kBatchLanes;
@@ -151,6 +152,21 @@ TEST(FloatBatchPair, EachHalfIsTheBatchOperation) {
       wrong += !sameBits(quotient[k], a[k] / b[k]) + !sameBits(negated[k], -a[k]);
       wrong += !sameBits(smaller[k], softraster::sseMin(a[k], b[k])) + !sameBits(larger[k], softraster::sseMax(a[k], b[k]));
     }
+    // FloatBatch16Pair (two pairs of blocks): each half the FloatBatch16 operation on it.
+    const softraster::FloatBatch16Pair p(x, z), q(y, x), r(z, y);
+    const auto check = [&](const softraster::FloatBatch16Pair& pair, const FloatBatch16& low, const FloatBatch16& high) {
+      for (int k = 0; k < kLanes; ++k) wrong += !sameBits(pair.low[k], low[k]) + !sameBits(pair.high[k], high[k]);
+    };
+    check(p + q, x + y, z + x);
+    check(p - q, x - y, z - x);
+    check(p * q, x * y, z * x);
+    check(p / q, x / y, z / x);
+    check(-p, -x, -z);
+    check(sseMin(p, q), sseMin(x, y), sseMin(z, x));
+    check(sseMax(p, q), sseMax(x, y), sseMax(z, x));
+    check(sqrt(p), sqrt(x), sqrt(z));
+    check(fma(p, q, r), fma(x, y, z), fma(z, x, y));
+    check(floor(p), floor(x), floor(z));
   }
   return wrong;
 }

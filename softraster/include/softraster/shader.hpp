@@ -30,8 +30,9 @@
 //                                             the fast path shades two blocks in one call, their
 //                                             chains of arithmetic interleaved. For a long shader
 //                                             (Phong per pixel); a short one gains nothing. With
-//                                             GCC on x86-64 it must also compile for FloatBatch16:
-//                                             where the CPU has AVX-512 the pair is one 16-lane batch
+//                                             GCC on x86-64 it must also compile for FloatBatch16
+//                                             and FloatBatch16Pair: where the CPU has AVX-512 a
+//                                             pair is one 16-lane batch, and two pairs go together
 //   a fragment function with a third parameter, FragmentBuiltins<F>& (fragment_builtins.hpp):
 //   gl_FragCoord, gl_FrontFacing and discard; such a shader runs before the depth and stencil
 //   tests, on both exact paths (the course's methods draw it with the exact method)

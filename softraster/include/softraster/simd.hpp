@@ -20,7 +20,8 @@
 // fmaf that GCC turns into one vfmadd where FMA is on, floor and truncation the vector
 // conversions; each gives exactly its float counterpart's bits. Integer work on the lanes (a
 // float's bits, an exponent) uses NativeMask, the int32 vector, through native().
-// FloatBatchPair (below) carries two batches for shaders that take them (shader.hpp, kBlockPairs).
+// FloatBatchPair (below) carries two batches for shaders that take them (shader.hpp, kBlockPairs),
+// FloatBatch16Pair two FloatBatch16.
 // FloatBatch is FloatLanes<8>; FloatBatch16 (FloatLanes<16>, one zmm register) is the same type at
 // 16 lanes, which the fast path shades a block pair with where the CPU has AVX-512: its
 // arithmetic, sqrt, fma, sseMin and sseMax are the templates' (16-lane instructions once inlined
@@ -193,8 +194,9 @@ FloatLanes<Lanes> floor(FloatLanes<Lanes> a) {
 // 16-lane comparison whose result is used as a vector (the template's masks), written in code
 // without that target, into one scalar compare per lane even once inlined into AVX-512 code
 // (a 16-lane shader ran slower than the 8-lane pairs); a comparison feeding only a select
-// (sseMin, sseMax) is one instruction.
-[[SOFTRASTER_WIDE_TARGET, gnu::always_inline]] inline FloatBatch16 floor(FloatBatch16 a) {
+// (sseMin, sseMax) is one instruction. Not always_inline: code without the target calls it too
+// (FloatBatch16Pair's floor), which flatten inlines into the AVX-512 function around it.
+[[SOFTRASTER_WIDE_TARGET]] inline FloatBatch16 floor(FloatBatch16 a) {
   const __m512 v = _mm512_maskz_roundscale_ps(0xffff, reinterpret_cast<__m512>(a.native()), _MM_FROUND_TO_NEG_INF | _MM_FROUND_NO_EXC);
   return FloatBatch16(reinterpret_cast<FloatBatch16::Native>(v));
 }
@@ -205,29 +207,33 @@ FloatLanes<Lanes> floor(FloatLanes<Lanes> a) {
 // and a pow per pixel) is one chain of dependent divisions, roots and polynomials per block,
 // too long for the CPU to overlap with the next block's; over a pair the two chains are
 // interleaved instruction by instruction (the Blinn-Phong quad: 12-17% off its frame). A shader
-// takes it with `static constexpr bool kBlockPairs = true` (shader.hpp).
-struct FloatBatchPair {
-  FloatBatch low, high;
-  FloatBatchPair() = default;
-  FloatBatchPair(float s) : low(s), high(s) {}  // NOLINT(google-explicit-constructor)
-  FloatBatchPair(FloatBatch l, FloatBatch h) : low(l), high(h) {}
-  friend FloatBatchPair operator+(const FloatBatchPair& a, const FloatBatchPair& b) { return {a.low + b.low, a.high + b.high}; }
-  friend FloatBatchPair operator-(const FloatBatchPair& a, const FloatBatchPair& b) { return {a.low - b.low, a.high - b.high}; }
-  friend FloatBatchPair operator*(const FloatBatchPair& a, const FloatBatchPair& b) { return {a.low * b.low, a.high * b.high}; }
-  friend FloatBatchPair operator/(const FloatBatchPair& a, const FloatBatchPair& b) { return {a.low / b.low, a.high / b.high}; }
-  friend FloatBatchPair operator-(const FloatBatchPair& a) { return {-a.low, -a.high}; }
-  FloatBatchPair& operator+=(const FloatBatchPair& b) { return *this = *this + b; }
-  FloatBatchPair& operator-=(const FloatBatchPair& b) { return *this = *this - b; }
-  FloatBatchPair& operator*=(const FloatBatchPair& b) { return *this = *this * b; }
-  FloatBatchPair& operator/=(const FloatBatchPair& b) { return *this = *this / b; }
-  friend FloatBatchPair sseMin(const FloatBatchPair& a, const FloatBatchPair& b) { return {sseMin(a.low, b.low), sseMin(a.high, b.high)}; }
-  friend FloatBatchPair sseMax(const FloatBatchPair& a, const FloatBatchPair& b) { return {sseMax(a.low, b.low), sseMax(a.high, b.high)}; }
-  friend FloatBatchPair sqrt(const FloatBatchPair& a) { return {sqrt(a.low), sqrt(a.high)}; }
-  friend FloatBatchPair fma(const FloatBatchPair& a, const FloatBatchPair& b, const FloatBatchPair& c) {
+// takes it with `static constexpr bool kBlockPairs = true` (shader.hpp). FloatBatch16Pair is the
+// same over two FloatBatch16 (four blocks, AVX-512): one 16-lane chain is again one chain.
+template <class Half>
+struct BatchPair {
+  Half low, high;
+  BatchPair() = default;
+  BatchPair(float s) : low(s), high(s) {}  // NOLINT(google-explicit-constructor)
+  BatchPair(Half l, Half h) : low(l), high(h) {}
+  friend BatchPair operator+(const BatchPair& a, const BatchPair& b) { return {a.low + b.low, a.high + b.high}; }
+  friend BatchPair operator-(const BatchPair& a, const BatchPair& b) { return {a.low - b.low, a.high - b.high}; }
+  friend BatchPair operator*(const BatchPair& a, const BatchPair& b) { return {a.low * b.low, a.high * b.high}; }
+  friend BatchPair operator/(const BatchPair& a, const BatchPair& b) { return {a.low / b.low, a.high / b.high}; }
+  friend BatchPair operator-(const BatchPair& a) { return {-a.low, -a.high}; }
+  BatchPair& operator+=(const BatchPair& b) { return *this = *this + b; }
+  BatchPair& operator-=(const BatchPair& b) { return *this = *this - b; }
+  BatchPair& operator*=(const BatchPair& b) { return *this = *this * b; }
+  BatchPair& operator/=(const BatchPair& b) { return *this = *this / b; }
+  friend BatchPair sseMin(const BatchPair& a, const BatchPair& b) { return {sseMin(a.low, b.low), sseMin(a.high, b.high)}; }
+  friend BatchPair sseMax(const BatchPair& a, const BatchPair& b) { return {sseMax(a.low, b.low), sseMax(a.high, b.high)}; }
+  friend BatchPair sqrt(const BatchPair& a) { return {sqrt(a.low), sqrt(a.high)}; }
+  friend BatchPair fma(const BatchPair& a, const BatchPair& b, const BatchPair& c) {
     return {fma(a.low, b.low, c.low), fma(a.high, b.high, c.high)};
   }
-  friend FloatBatchPair floor(const FloatBatchPair& a) { return {floor(a.low), floor(a.high)}; }
+  friend BatchPair floor(const BatchPair& a) { return {floor(a.low), floor(a.high)}; }
 };
+using FloatBatchPair = BatchPair<FloatBatch>;
+using FloatBatch16Pair = BatchPair<FloatBatch16>;
 
 // The same helpers for plain float, so a shader twin calls them unqualified for either type.
 inline float sseMin(float a, float b) { return a < b ? a : b; }

@@ -24,8 +24,10 @@
 //   - a shader that takes FloatBatchPair (kBlockPairs, shader.hpp), in the common state, is shaded
 //     two blocks at a time: a walked block that passes the depth test waits for the next one, and
 //     the two are shaded in one call and written (the walk's last block alone); where the CPU
-//     has AVX-512 (F, VL, BW, DQ) that call is one FloatBatch16 (shadePairWide), each of the
-//     shader's operations one 16-lane instruction for both blocks, the same bits per lane.
+//     has AVX-512 (F, VL, BW, DQ) four blocks wait and are shaded as two FloatBatch16 chains
+//     (shadeTwoPairsWide: each of the shader's operations one 16-lane instruction for a pair,
+//     the two pairs' chains interleaved), the walk's last two as one FloatBatch16
+//     (shadePairWide) and a last odd one alone; the same bits per lane.
 // Pixels of one triangle are independent, and triangles are drawn one after another, so the
 // result is the scalar path's, bit for bit (tests/crosscheck/fast_path_test.cpp checks it).
 // 4x MSAA triangles take the same blocks with coverage, depth and the writes per sample (each
@@ -91,6 +93,34 @@ template <class Shader, std::size_t... I>
   colour[1] = split(c.y);
   colour[2] = split(c.z);
   colour[3] = split(c.w);
+}
+
+// Two pairs (four blocks) as the halves of one FloatBatch16Pair, compiled for AVX-512: two
+// 16-lane chains of the shader's arithmetic interleaved, which 32 zmm registers hold (one chain
+// alone leaves the divisions' and roots' latency exposed). As shadePairWide for each pair.
+template <class Shader, std::size_t... I>
+[[SOFTRASTER_WIDE_TARGET, SOFTRASTER_FLATTEN, gnu::noinline]] void shadeTwoPairsWide(const typename Shader::Uniforms& uniforms,
+                                                                                  const FloatBatchPair* first, const FloatBatchPair* second,
+                                                                                  FloatBatchPair* colourFirst, FloatBatchPair* colourSecond,
+                                                                                  std::index_sequence<I...>) {
+  const auto join = [](const FloatBatchPair& p) {
+    return FloatBatch16(__builtin_shufflevector(p.low.native(), p.high.native(), 0, 1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 11, 12, 13, 14, 15));
+  };
+  const std::array<FloatBatch16Pair, sizeof...(I)> wide{FloatBatch16Pair(join(first[I]), join(second[I]))...};
+  const Vec4T<FloatBatch16Pair> c = Shader::template fragment<FloatBatch16Pair>(uniforms, wide.data());
+  const auto split = [](const FloatBatch16& f) {
+    const FloatBatch16::Native v = f.native();
+    return FloatBatchPair(FloatBatch(__builtin_shufflevector(v, v, 0, 1, 2, 3, 4, 5, 6, 7)),
+                          FloatBatch(__builtin_shufflevector(v, v, 8, 9, 10, 11, 12, 13, 14, 15)));
+  };
+  colourFirst[0] = split(c.x.low);
+  colourFirst[1] = split(c.y.low);
+  colourFirst[2] = split(c.z.low);
+  colourFirst[3] = split(c.w.low);
+  colourSecond[0] = split(c.x.high);
+  colourSecond[1] = split(c.y.high);
+  colourSecond[2] = split(c.z.high);
+  colourSecond[3] = split(c.w.high);
 }
 
 template <class Shader, DepthFormat Format>
@@ -434,25 +464,33 @@ class FastFragmentStage {
       highest[i] = std::max<std::int64_t>(0, -(kBatchWidth - 1) * dx) + std::max<std::int64_t>(0, dy);
     }
     if constexpr (kBlockPairs) {
-      if (to.plain) {  // the blocks that pass the depth test are shaded two at a time (shadeBlockPair)
-        PendingBlock waiting{};
-        bool isWaiting = false;
+      if (to.plain) {  // the blocks that pass the depth test are shaded two (AVX-512: four) at a time
+        PendingBlock waiting[3];
+        int count = 0;
+        const int group = widePairs_ ? 4 : 2;
         walkBlocks(edges, box, lowest, highest,
                    [&](int px, int py, unsigned inBox, bool inside, const std::int64_t (&value)[E]) {
                      const unsigned covered = inside ? inBox : insideBits(lanes, value) & inBox;
                      if (covered == 0) return;
                      PendingBlock b = blockAt(px, py, covered, inBox == 0xffu, to);
                      if (!testPlainBlock(planes, to, b)) return;
-                     if (isWaiting) {
-                       shadeBlockPair(waiting, b, planes, to);
+                     if (count + 1 < group) {
+                       waiting[count++] = b;
                      } else {
-                       waiting = b;
+                       if (group == 4) {
+                         shadeFourBlocks(waiting[0], waiting[1], waiting[2], b, planes, to);
+                       } else {
+                         shadeBlockPair(waiting[0], b, planes, to);
+                       }
+                       count = 0;
                      }
-                     isWaiting = !isWaiting;
                    });
-        if (isWaiting) {  // the walk's last block, alone
-          storeColour(waiting, shadeLanes(planes, waiting.fx, waiting.fy, to), to);
-          storeDepth(waiting, to);
+        // The walk's last blocks: a pair, then one alone.
+        if (count >= 2) shadeBlockPair(waiting[0], waiting[1], planes, to);
+        if (count % 2 == 1) {
+          const PendingBlock& last = waiting[count - 1];
+          storeColour(last, shadeLanes(planes, last.fx, last.fy, to), to);
+          storeDepth(last, to);
         }
         return;
       }
@@ -467,10 +505,28 @@ class FastFragmentStage {
   // Two blocks of the plain state that passed the depth test (testPlainBlock), shaded as one
   // FloatBatchPair and written: what shadeBlock does for each, the two shaders' chains of
   // arithmetic interleaved (the Blinn-Phong quad: 12-17% off its frame); where the CPU has
-  // AVX-512, as one FloatBatch16 (shadePairWide: a further 17-25% off it).
+  // AVX-512, as one FloatBatch16 (shadePairWide: the walk's last pair; the others go four
+  // blocks at a time, shadeFourBlocks).
   [[SOFTRASTER_FAST_TARGET]] void shadeBlockPair(const PendingBlock& a, const PendingBlock& b, const BlockPlanes& t, const BlockTarget& to) const {
     const std::array<FloatBatchPair, (N == 0 ? 1 : N)> varyings = interpolatePair(std::make_index_sequence<(N == 0 ? 1 : N)>{}, t, a, b);
-    Vec4T<FloatBatchPair> c = widePairs_ ? shadeWide(varyings.data()) : Shader::template fragment<FloatBatchPair>(uniforms_, varyings.data());
+    writePair(a, b, widePairs_ ? shadeWide(varyings.data()) : Shader::template fragment<FloatBatchPair>(uniforms_, varyings.data()), to);
+  }
+
+  // Four blocks of the plain state that passed the depth test, two pairs shaded in one
+  // shadeTwoPairsWide call (AVX-512) and written as shadeBlockPair writes a pair.
+  [[SOFTRASTER_FAST_TARGET]] void shadeFourBlocks(const PendingBlock& a, const PendingBlock& b, const PendingBlock& c,
+                                                  const PendingBlock& d, const BlockPlanes& t, const BlockTarget& to) const {
+    const std::array<FloatBatchPair, (N == 0 ? 1 : N)> first = interpolatePair(std::make_index_sequence<(N == 0 ? 1 : N)>{}, t, a, b);
+    const std::array<FloatBatchPair, (N == 0 ? 1 : N)> second = interpolatePair(std::make_index_sequence<(N == 0 ? 1 : N)>{}, t, c, d);
+    FloatBatchPair colourFirst[4], colourSecond[4];
+    shadeTwoPairsWide<Shader>(uniforms_, first.data(), second.data(), colourFirst, colourSecond,
+                              std::make_index_sequence<(N == 0 ? 1 : N)>{});
+    writePair(a, b, {colourFirst[0], colourFirst[1], colourFirst[2], colourFirst[3]}, to);
+    writePair(c, d, {colourSecond[0], colourSecond[1], colourSecond[2], colourSecond[3]}, to);
+  }
+
+  // A shaded pair's colour and depth, written.
+  [[SOFTRASTER_FAST_TARGET]] static void writePair(const PendingBlock& a, const PendingBlock& b, Vec4T<FloatBatchPair> c, const BlockTarget& to) {
     if (to.alphaToOne) c.w = FloatBatchPair(1.0f);
     storeColour(a, packColour(Vec4T<FloatBatch>{c.x.low, c.y.low, c.z.low, c.w.low}, to.swapRedBlue), to);
     storeColour(b, packColour(Vec4T<FloatBatch>{c.x.high, c.y.high, c.z.high, c.w.high}, to.swapRedBlue), to);
