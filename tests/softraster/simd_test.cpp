@@ -84,40 +84,43 @@ TEST(FloatBatchPrimitives, Avx2CodeGivesTheFloatFunctionsBits) {
   EXPECT_EQ(avx2Mismatches(inputs()), 0);
 }
 
-// Halves of FloatBatchPair results that differ from the FloatBatch operation on that half, over
-// pairs made of `values` (the low half from three batches, the high half from the same three in
-// another order, so the halves differ).
+// Halves of BatchPair<Half> results (FloatBatchPair, FloatBatch16Pair) that differ from the Half
+// operation on that half, for the pairs of three batches (the low half from x, y, z, the high half
+// from the same three in another order, so the halves differ) and a splat of s.
+template <class Half>
+int pairHalvesMismatches(const Half& x, const Half& y, const Half& z, float s) {
+  using Pair = softraster::BatchPair<Half>;
+  int wrong = 0;
+  const auto check = [&](const Pair& pair, const Half& low, const Half& high) {
+    for (int k = 0; k < Half::kLanes; ++k) wrong += !sameBits(pair.low[k], low[k]) + !sameBits(pair.high[k], high[k]);
+  };
+  const Pair a(x, z), b(y, x), c(z, y);
+  check(a + b, x + y, z + x);
+  check(a - b, x - y, z - x);
+  check(a * b, x * y, z * x);
+  check(a / b, x / y, z / x);
+  check(-a, -x, -z);
+  check(sseMin(a, b), sseMin(x, y), sseMin(z, x));
+  check(sseMax(a, b), sseMax(x, y), sseMax(z, x));
+  check(sqrt(a), sqrt(x), sqrt(z));
+  check(fma(a, b, c), fma(x, y, z), fma(z, x, y));
+  check(floor(a), floor(x), floor(z));
+  Pair d = a;
+  d += b;
+  d *= c;
+  d -= a;
+  d /= b;
+  check(d, ((x + y) * z - x) / y, ((z + x) * y - z) / x);
+  check(Pair(s), Half(s), Half(s));
+  return wrong;
+}
+
 [[gnu::target("avx2,fma"), gnu::flatten, gnu::noinline]] int pairMismatches(const std::vector<float>& values) {
   int wrong = 0;
-  const auto differ = [](const FloatBatch& pair, const FloatBatch& single) {
-    int lanes = 0;
-    for (int k = 0; k < kBatchLanes; ++k) lanes += !sameBits(pair[k], single[k]);
-    return lanes;
-  };
-  const auto check = [&](const FloatBatchPair& pair, const FloatBatch& low, const FloatBatch& high) {
-    wrong += differ(pair.low, low) + differ(pair.high, high);
-  };
   for (std::size_t i = 0; i < values.size(); i += 3 * kBatchLanes) {
     const FloatBatch x = FloatBatch::load(values.data() + i), y = FloatBatch::load(values.data() + i + kBatchLanes),
                      z = FloatBatch::load(values.data() + i + 2 * kBatchLanes);
-    const FloatBatchPair a(x, z), b(y, x), c(z, y);
-    check(a + b, x + y, z + x);
-    check(a - b, x - y, z - x);
-    check(a * b, x * y, z * x);
-    check(a / b, x / y, z / x);
-    check(-a, -x, -z);
-    check(sseMin(a, b), sseMin(x, y), sseMin(z, x));
-    check(sseMax(a, b), sseMax(x, y), sseMax(z, x));
-    check(sqrt(a), sqrt(x), sqrt(z));
-    check(fma(a, b, c), fma(x, y, z), fma(z, x, y));
-    check(floor(a), floor(x), floor(z));
-    FloatBatchPair d = a;
-    d += b;
-    d *= c;
-    d -= a;
-    d /= b;
-    check(d, ((x + y) * z - x) / y, ((z + x) * y - z) / x);
-    check(FloatBatchPair(values[i]), FloatBatch(values[i]), FloatBatch(values[i]));
+    wrong += pairHalvesMismatches(x, y, z, values[i]);
   }
   return wrong;
 }
@@ -153,20 +156,7 @@ TEST(FloatBatchPair, EachHalfIsTheBatchOperation) {
       wrong += !sameBits(smaller[k], softraster::sseMin(a[k], b[k])) + !sameBits(larger[k], softraster::sseMax(a[k], b[k]));
     }
     // FloatBatch16Pair (two pairs of blocks): each half the FloatBatch16 operation on it.
-    const softraster::FloatBatch16Pair p(x, z), q(y, x), r(z, y);
-    const auto check = [&](const softraster::FloatBatch16Pair& pair, const FloatBatch16& low, const FloatBatch16& high) {
-      for (int k = 0; k < kLanes; ++k) wrong += !sameBits(pair.low[k], low[k]) + !sameBits(pair.high[k], high[k]);
-    };
-    check(p + q, x + y, z + x);
-    check(p - q, x - y, z - x);
-    check(p * q, x * y, z * x);
-    check(p / q, x / y, z / x);
-    check(-p, -x, -z);
-    check(sseMin(p, q), sseMin(x, y), sseMin(z, x));
-    check(sseMax(p, q), sseMax(x, y), sseMax(z, x));
-    check(sqrt(p), sqrt(x), sqrt(z));
-    check(fma(p, q, r), fma(x, y, z), fma(z, x, y));
-    check(floor(p), floor(x), floor(z));
+    wrong += pairHalvesMismatches(x, y, z, a[0]);
   }
   return wrong;
 }
