@@ -9,8 +9,9 @@
 // threads. The three whose time is most per primitive also run cold (`...Cold`: the caches
 // filled with other data before each frame, as the bench's alternating frames leave them).
 // SmallTrianglesOneDraw and ...HundredDraws: the same triangles in 1 and in 100 draws, what
-// cutting a frame into draws costs; ...InAPass: the 10 and the 100 draws as one softraster::Pass. PhongQuad: a full-screen quad lit per pixel, the cost of a
-// real fragment shader; BlinnPhongFragmentAlone: that shader alone, one block or two per call.
+// cutting a frame into draws costs; ...InAPass: the 10 and the 100 draws as one softraster::Pass.
+// PhongQuad: a full-screen quad lit per pixel, the cost of a real fragment shader (PhongQuadAvx2:
+// with AVX-512 not allowed); BlinnPhongFragmentAlone: that shader alone, one block or two per call.
 //   softraster_benchmarks --benchmark_filter=Sphere --benchmark_repetitions=5
 // Deliberately not a replacement for `crosscheck bench`: no lavapipe beside it, no agreement
 // check; times are the machine's (shared and noisy: compare medians, side by side). "CPU" is the
@@ -120,6 +121,9 @@ struct FrameOptions {
   // a small primitive's first depth read has there (20k small triangles: 3.4-3.7 ms warm,
   // 4.7 ms in the bench, 2 threads).
   bool cold = false;
+  // ContextOptions::allowAvx512: off, a long shader's blocks go two at a time in AVX2 even where
+  // the CPU has AVX-512 (PhongQuadAvx2).
+  bool allowAvx512 = true;
   // The meshes drawn as one softraster::Pass (pass.hpp) instead of draw by draw.
   bool pass = false;
 };
@@ -137,6 +141,7 @@ void drawFrames(benchmark::State& bench, std::span<const MeshOf<S>> meshes, cons
                 const FrameOptions& how) {
   softraster::ContextOptions options;
   options.threads = static_cast<unsigned>(bench.range(0));
+  options.allowAvx512 = how.allowAvx512;
   const softraster::Context context(options);
   auto framebuffer = softraster::Framebuffer::create(kWidth, kHeight, softraster::DepthFormat::D32Sfloat, how.samples);
   if (!framebuffer) {
@@ -275,7 +280,7 @@ void Sphere1MCulledColdInAPass(benchmark::State& bench) {
 // scenes/bench/phong_quad_1080p.json (its material: shininess 32): the shader's arithmetic on
 // every pixel. Clip space is the lighting space here, so the eye
 // looks from the origin at a plane facing it, with the light in front of it.
-void PhongQuad(benchmark::State& bench) {
+void drawPhongQuad(benchmark::State& bench, const FrameOptions& how) {
   static const MeshOf<PhongShader> mesh = [] {
     MeshOf<PhongShader> m;
     for (const auto& [x, y] : {std::pair{-1.0f, -1.0f}, {1.0f, -1.0f}, {-1.0f, 1.0f}, {1.0f, 1.0f}}) {
@@ -292,8 +297,11 @@ void PhongQuad(benchmark::State& bench) {
   u.lightPower = {1.0f, 0.95f, 0.9f, 0.0f};
   u.indirect = {0.1f, 0.1f, 0.1f, 0.0f};
   u.specular = {0.6f, 0.6f, 0.6f, 32.0f};
-  drawFrames<PhongShader>(bench, std::span(&mesh, 1), u, {});
+  drawFrames<PhongShader>(bench, std::span(&mesh, 1), u, how);
 }
+void PhongQuad(benchmark::State& bench) { drawPhongQuad(bench, {}); }
+// The same with AVX-512 not allowed: the blocks two at a time in AVX2 (the same on a CPU without it).
+void PhongQuadAvx2(benchmark::State& bench) { drawPhongQuad(bench, {.allowAvx512 = false}); }
 
 // The Blinn-Phong fragment function alone, the PhongQuad's shader without the walk: 512 blocks
 // of that quad's varyings (about 160 KB, in the core's caches), shaded a block per call
@@ -341,15 +349,13 @@ constexpr int kShadedBlocks = 512;
   using softraster::FloatBatch16;
   constexpr int kLanes = softraster::kBatchLanes, kIn = PhongShader::kVaryings;
   const auto load = [&](int block, int i) {
-    const softraster::FloatBatch a = softraster::FloatBatch::load(in.data() + (block * kIn + i) * kLanes);
-    const softraster::FloatBatch b = softraster::FloatBatch::load(in.data() + ((block + 1) * kIn + i) * kLanes);
-    return FloatBatch16(__builtin_shufflevector(a.native(), b.native(), 0, 1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 11, 12, 13, 14, 15));
+    return softraster::joinHalves({softraster::FloatBatch::load(in.data() + (block * kIn + i) * kLanes),
+                                   softraster::FloatBatch::load(in.data() + ((block + 1) * kIn + i) * kLanes)});
   };
   const auto store = [&](int block, int channel, const FloatBatch16& f) {
-    const FloatBatch16::Native v = f.native();
-    softraster::FloatBatch(__builtin_shufflevector(v, v, 0, 1, 2, 3, 4, 5, 6, 7)).store(out.data() + (block * 4 + channel) * kLanes);
-    softraster::FloatBatch(__builtin_shufflevector(v, v, 8, 9, 10, 11, 12, 13, 14, 15))
-        .store(out.data() + ((block + 1) * 4 + channel) * kLanes);
+    const softraster::FloatBatchPair p = softraster::splitHalves(f);
+    p.low.store(out.data() + (block * 4 + channel) * kLanes);
+    p.high.store(out.data() + ((block + 1) * 4 + channel) * kLanes);
   };
   for (int b = 0; b < kShadedBlocks; b += 2) {
     FloatBatch16 v[kIn];
@@ -437,6 +443,7 @@ FRAME_BENCHMARK(WireframeSphere100kCold);
 FRAME_BENCHMARK(SmallTrianglesOneDraw);
 FRAME_BENCHMARK(SmallTrianglesHundredDraws);
 FRAME_BENCHMARK(PhongQuad);
+FRAME_BENCHMARK(PhongQuadAvx2);
 // Blocks per call: 1 (FloatBatch) or 2 (FloatBatchPair).
 BENCHMARK(BlinnPhongFragmentAlone)->ArgName("blocks_per_call")->Arg(1)->Arg(2);
 BENCHMARK(BlinnPhongFragmentAloneWide);

@@ -1,5 +1,6 @@
 // Bit identity of the fast path: every scene in scenes/ drawn by softraster's Method::Exact (the
-// SIMD fast path, in row bands on 1, 2 and 7 threads) and by Method::ExactScalar (the reference,
+// SIMD fast path, in row bands on 1, 2 and 7 threads, and on a CPU with AVX-512 also at 1 thread
+// with ContextOptions::allowAvx512 off) and by Method::ExactScalar (the reference,
 // one pixel at a time on one thread), compared byte for byte: colour and depth of every sample,
 // before any resolve. Also with the course's 1/z depth buffer on the D32 scenes. Each scene is its
 // own test case (FastPath/SceneDrawn.MatchesScalar/<name>).
@@ -70,6 +71,18 @@ void expectFastMatchesScalar(const crosscheck::Scene& scene, softraster::Context
     ASSERT_TRUE(fast) << fast.error();
     EXPECT_EQ(firstDifference(*fast, *scalar), "") << threads << " threads";
   }
+#if SOFTRASTER_HAS_FAST_PATH
+  // Where the CPU has AVX-512, also the fast path without it (a long shader's blocks two at a
+  // time in AVX2, as a CPU without AVX-512 draws them).
+  if (softraster::detail::fast::cpuShadesWidePairs()) {
+    options.method = softraster::Method::Exact;
+    options.threads = 1;
+    options.allowAvx512 = false;
+    const auto fast = crosscheck::renderSoftrasterSamples(scene, options);
+    ASSERT_TRUE(fast) << fast.error();
+    EXPECT_EQ(firstDifference(*fast, *scalar), "") << "AVX-512 not allowed";
+  }
+#endif
 }
 
 class SceneDrawn : public ::testing::TestWithParam<std::string> {};

@@ -235,6 +235,19 @@ struct BatchPair {
 using FloatBatchPair = BatchPair<FloatBatch>;
 using FloatBatch16Pair = BatchPair<FloatBatch16>;
 
+#if defined(SOFTRASTER_WIDE_TARGET)
+// A FloatBatchPair's halves as one FloatBatch16 (low: lanes 0-7, high: lanes 8-15), and back:
+// where the fast path's AVX2 code and its AVX-512 shading meet (fast/fragments.hpp).
+[[SOFTRASTER_WIDE_TARGET]] inline FloatBatch16 joinHalves(const FloatBatchPair& p) {
+  return FloatBatch16(__builtin_shufflevector(p.low.native(), p.high.native(), 0, 1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 11, 12, 13, 14, 15));
+}
+[[SOFTRASTER_WIDE_TARGET]] inline FloatBatchPair splitHalves(const FloatBatch16& f) {
+  const FloatBatch16::Native v = f.native();
+  return FloatBatchPair(FloatBatch(__builtin_shufflevector(v, v, 0, 1, 2, 3, 4, 5, 6, 7)),
+                        FloatBatch(__builtin_shufflevector(v, v, 8, 9, 10, 11, 12, 13, 14, 15)));
+}
+#endif
+
 // The same helpers for plain float, so a shader twin calls them unqualified for either type.
 inline float sseMin(float a, float b) { return a < b ? a : b; }
 inline float sseMax(float a, float b) { return a > b ? a : b; }

@@ -79,7 +79,8 @@ class ExactDraw {
 
   // pool: the Context's threads (nullptr or one thread: everything on the calling thread);
   // scratch: the vectors this draw fills, kept by the Context between draws; options: the
-  // Context's: its deviations, and a course method's method and affineVaryings.
+  // Context's: its deviations and allowAvx512 (for the fragment stage), and a course method's
+  // method and affineVaryings.
   // pass: a pass the band queue may defer the draw into (fast/deferred_draws.hpp), or nullptr.
   ExactDraw(const PipelineState& state, const typename Shader::Uniforms& uniforms, Framebuffer& framebuffer,
             bool inverseZ, DrawScratch& scratch, ThreadPool* pool = nullptr, const ContextOptions& options = {},
@@ -96,7 +97,7 @@ class ExactDraw {
         // planes reach (MsaaRegionEdges); the bands (fast/bands.hpp) cover them too.
         fragments_(pool, scratch, state, uniforms, framebuffer, viewport_,
                    multisample_ ? msaaRegionEdges(region_, state.scissor, options.deviations).rasterRegion : region_,
-                   inverseZ, options.deviations, pass),
+                   inverseZ, options, pass),
         shaded_(scratch.vector<Vertex>(ScratchSlot::ShadedVertices)),
         snapped_(scratch.vector<SnappedVertex>(ScratchSlot::SnappedVertices)),
         lines_(scratch.vector<LineIndices>(ScratchSlot::Lines)),

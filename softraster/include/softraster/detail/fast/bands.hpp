@@ -42,6 +42,7 @@
 #include <softraster/detail/fragment/shade.hpp>
 #include <softraster/detail/geometry/viewport.hpp>
 #include <softraster/framebuffer.hpp>
+#include <softraster/options.hpp>
 #include <softraster/state.hpp>
 
 #include <algorithm>
@@ -123,7 +124,7 @@ class BandQueue {
 
     void set(std::vector<List>& lists, unsigned workers, bool deferred, const PipelineState& state,
              const Uniforms& uniforms, Framebuffer& framebuffer, const Viewport& viewport, const PixelRect& region,
-             bool inverseZ, Deviations deviations, bool prefetchesForWrite) {
+             bool inverseZ, const ContextOptions& options, bool prefetchesForWrite) {
       lists_ = &lists;
       deferred_ = deferred;
       if constexpr (kDeferrable) {
@@ -142,7 +143,7 @@ class BandQueue {
       viewport_ = viewport;
       region_ = region;
       inverseZ_ = inverseZ;
-      deviations_ = deviations;
+      options_ = options;
       firstBand_ = region.empty() ? 0 : floorDiv(region.y0, kBandRows);
       bands_ = region.empty() ? 0 : floorDiv(region.y1, kBandRows) - firstBand_ + 1;
       prefetchesForWrite_ = prefetchesForWrite;
@@ -228,7 +229,7 @@ class BandQueue {
       for (const List& list : *lists_) {
         const std::vector<std::uint32_t>& bin = list.bins[band];
         if (bin.empty()) continue;
-        if (!stage) stage.emplace(*state_, *uniforms_, *framebuffer_, viewport_, rows, inverseZ_, deviations_);
+        if (!stage) stage.emplace(*state_, *uniforms_, *framebuffer_, viewport_, rows, inverseZ_, options_);
         const std::vector<Record>& records = list.records;
         for (std::size_t k = 0; k < bin.size(); ++k) {
           // A record was written by a front-end worker, often on the other core: ask for the one
@@ -259,7 +260,7 @@ class BandQueue {
     Viewport viewport_{};
     PixelRect region_{};
     bool inverseZ_ = false;
-    Deviations deviations_ = Deviations::Driver;
+    ContextOptions options_{};  // the Context's (deviations, allowAvx512), for the bands' stages
     int firstBand_ = 0;  // bands lie at multiples of kBandRows rows (as the depth tiles do): this one holds the region's first row
     int bands_ = 0;
     bool prefetchesForWrite_ = false;
@@ -271,12 +272,12 @@ class BandQueue {
   // draw's state and uniforms are copied; its records wait for the pass's flush.
   BandQueue(ThreadPool* pool, DrawScratch& scratch, const PipelineState& state, const Uniforms& uniforms,
             Framebuffer& framebuffer, const Viewport& viewport, const PixelRect& region, bool inverseZ,
-            Deviations deviations = Deviations::Driver, PassRecording* pass = nullptr)
+            const ContextOptions& options = {}, PassRecording* pass = nullptr)
       : pool_(pool != nullptr && pool->threads() > 1 ? pool : nullptr),
         framebuffer_(framebuffer),
         scratch_(scratch) {
     if (pool_ == nullptr) {
-      direct_.emplace(state, uniforms, framebuffer, viewport, region, inverseZ, deviations);
+      direct_.emplace(state, uniforms, framebuffer, viewport, region, inverseZ, options);
       pixels_ = pixelsToPrefetch(framebuffer);
       region_ = region;
       return;
@@ -285,12 +286,12 @@ class BandQueue {
     if (kDeferrable && pass != nullptr && pass->drawsInto(framebuffer)) {
       pass_ = pass;
       draw_ = &pass->beginDraw<Draw>();
-      draw_->set(draw_->ownLists_, workers(), true, state, uniforms, framebuffer, viewport, region, inverseZ, deviations,
+      draw_->set(draw_->ownLists_, workers(), true, state, uniforms, framebuffer, viewport, region, inverseZ, options,
                  pool_->prefetchesForWrite());
     } else {
       draw_ = &own_;
       own_.set(scratch.vector<List>(ScratchSlot::BandLists), workers(), false, state, uniforms, framebuffer, viewport,
-               region, inverseZ, deviations, pool_->prefetchesForWrite());
+               region, inverseZ, options, pool_->prefetchesForWrite());
     }
   }
   BandQueue(const BandQueue&) = delete;

@@ -56,6 +56,7 @@
 
 #include <softraster/detail/fragment/shade.hpp>
 #include <softraster/framebuffer.hpp>
+#include <softraster/options.hpp>
 #include <softraster/shader.hpp>
 #include <softraster/state.hpp>
 
@@ -79,20 +80,12 @@ template <class Shader, std::size_t... I>
 [[SOFTRASTER_WIDE_TARGET, SOFTRASTER_FLATTEN, gnu::noinline]] void shadePairWide(const typename Shader::Uniforms& uniforms,
                                                                               const FloatBatchPair* varyings, FloatBatchPair* colour,
                                                                               std::index_sequence<I...>) {
-  const auto join = [](const FloatBatchPair& p) {
-    return FloatBatch16(__builtin_shufflevector(p.low.native(), p.high.native(), 0, 1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 11, 12, 13, 14, 15));
-  };
-  const std::array<FloatBatch16, sizeof...(I)> wide{join(varyings[I])...};
+  const std::array<FloatBatch16, sizeof...(I)> wide{joinHalves(varyings[I])...};
   const Vec4T<FloatBatch16> c = Shader::template fragment<FloatBatch16>(uniforms, wide.data());
-  const auto split = [](const FloatBatch16& f) {
-    const FloatBatch16::Native v = f.native();
-    return FloatBatchPair(FloatBatch(__builtin_shufflevector(v, v, 0, 1, 2, 3, 4, 5, 6, 7)),
-                          FloatBatch(__builtin_shufflevector(v, v, 8, 9, 10, 11, 12, 13, 14, 15)));
-  };
-  colour[0] = split(c.x);
-  colour[1] = split(c.y);
-  colour[2] = split(c.z);
-  colour[3] = split(c.w);
+  colour[0] = splitHalves(c.x);
+  colour[1] = splitHalves(c.y);
+  colour[2] = splitHalves(c.z);
+  colour[3] = splitHalves(c.w);
 }
 
 // Two pairs (four blocks) as the halves of one FloatBatch16Pair, compiled for AVX-512: two
@@ -103,24 +96,16 @@ template <class Shader, std::size_t... I>
                                                                                   const FloatBatchPair* first, const FloatBatchPair* second,
                                                                                   FloatBatchPair* colourFirst, FloatBatchPair* colourSecond,
                                                                                   std::index_sequence<I...>) {
-  const auto join = [](const FloatBatchPair& p) {
-    return FloatBatch16(__builtin_shufflevector(p.low.native(), p.high.native(), 0, 1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 11, 12, 13, 14, 15));
-  };
-  const std::array<FloatBatch16Pair, sizeof...(I)> wide{FloatBatch16Pair(join(first[I]), join(second[I]))...};
+  const std::array<FloatBatch16Pair, sizeof...(I)> wide{FloatBatch16Pair(joinHalves(first[I]), joinHalves(second[I]))...};
   const Vec4T<FloatBatch16Pair> c = Shader::template fragment<FloatBatch16Pair>(uniforms, wide.data());
-  const auto split = [](const FloatBatch16& f) {
-    const FloatBatch16::Native v = f.native();
-    return FloatBatchPair(FloatBatch(__builtin_shufflevector(v, v, 0, 1, 2, 3, 4, 5, 6, 7)),
-                          FloatBatch(__builtin_shufflevector(v, v, 8, 9, 10, 11, 12, 13, 14, 15)));
-  };
-  colourFirst[0] = split(c.x.low);
-  colourFirst[1] = split(c.y.low);
-  colourFirst[2] = split(c.z.low);
-  colourFirst[3] = split(c.w.low);
-  colourSecond[0] = split(c.x.high);
-  colourSecond[1] = split(c.y.high);
-  colourSecond[2] = split(c.z.high);
-  colourSecond[3] = split(c.w.high);
+  colourFirst[0] = splitHalves(c.x.low);
+  colourFirst[1] = splitHalves(c.y.low);
+  colourFirst[2] = splitHalves(c.z.low);
+  colourFirst[3] = splitHalves(c.w.low);
+  colourSecond[0] = splitHalves(c.x.high);
+  colourSecond[1] = splitHalves(c.y.high);
+  colourSecond[2] = splitHalves(c.z.high);
+  colourSecond[3] = splitHalves(c.w.high);
 }
 
 template <class Shader, DepthFormat Format>
@@ -132,14 +117,13 @@ class FastFragmentStage {
   static constexpr bool kKeepsDepthTiles = true;  // a single-sample draw keeps the tiles' depth bounds (fast/depth_tiles.hpp)
 
   FastFragmentStage(const PipelineState& state, const typename Shader::Uniforms& uniforms, Framebuffer& framebuffer,
-                    const Viewport& viewport, const PixelRect& region, bool inverseZ,
-                    Deviations deviations = Deviations::Driver)
-      : scalar_(state, uniforms, framebuffer, viewport, region, inverseZ, deviations),
+                    const Viewport& viewport, const PixelRect& region, bool inverseZ, const ContextOptions& options = {})
+      : scalar_(state, uniforms, framebuffer, viewport, region, inverseZ, options),
         uniforms_(uniforms),
         target_(scalar_.target()),
         colour_(reinterpret_cast<std::uint32_t*>(target_.colour)),
         depthTiles_(framebuffer, target_, inverseZ, kBuiltins || target_.coverage.shadesFirst(), kWritesDepth),
-        widePairs_(kBlockPairs && cpuShadesWidePairs()) {}
+        widePairs_(kBlockPairs && options.allowAvx512 && cpuShadesWidePairs()) {}
 
   // target_ refers into scalar_, so a copy would point at another stage's target.
   FastFragmentStage(const FastFragmentStage&) = delete;
@@ -397,17 +381,24 @@ class FastFragmentStage {
     std::size_t first;  // lane 0's index in the framebuffer
     bool whole;         // all eight lanes inside the box (so inside the image): plain loads and stores
     unsigned rasterized, covered;  // the lanes tested (after any discards), and those that passed
-    Words stored{}, current{};     // the lanes' new depth, and the depth they hold
-    Mask passes = ~Mask{};         // the depth test's result per lane
+    Words stored, current;         // the lanes' new depth, and the depth they hold
+    Mask passes;                   // the depth test's result per lane
   };
+  // (No default member initializers: a walk's blocks waiting to be shaded are left uninitialised
+  // until blockAt's are copied in.)
 
   [[SOFTRASTER_FAST_TARGET]] static PendingBlock blockAt(int px, int py, unsigned covered, bool whole, const BlockTarget& to) {
-    return {.fx = broadcast(static_cast<float>(px)) + kLaneX,
-            .fy = broadcast(static_cast<float>(py)) + kLaneY,
-            .first = static_cast<std::size_t>(py) * to.width + static_cast<std::size_t>(px),
-            .whole = whole,
-            .rasterized = covered,
-            .covered = covered};
+    PendingBlock b;
+    b.fx = broadcast(static_cast<float>(px)) + kLaneX;
+    b.fy = broadcast(static_cast<float>(py)) + kLaneY;
+    b.first = static_cast<std::size_t>(py) * to.width + static_cast<std::size_t>(px);
+    b.whole = whole;
+    b.rasterized = covered;
+    b.covered = covered;
+    b.stored = Words{};
+    b.current = Words{};
+    b.passes = ~Mask{};  // every lane passes until a depth test says otherwise
+    return b;
   }
 
   // The plain state's depth test (BlockTarget::plain): false when no lane passes.
@@ -943,7 +934,7 @@ class FastFragmentStage {
   const FragmentTarget& target_;  // the scalar stage's: one value, derived once
   std::uint32_t* colour_;         // target_.colour as packed RGBA8, one word per pixel
   DepthTiles<depthAspect(Format)> depthTiles_;  // skips the tiles no fragment could pass
-  bool widePairs_;  // block pairs shaded as FloatBatch16 (AVX-512: cpuShadesWidePairs)
+  bool widePairs_;  // block pairs shaded as FloatBatch16 (AVX-512: cpuShadesWidePairs, and allowAvx512)
 };
 
 }  // namespace softraster::detail::fast

@@ -50,6 +50,7 @@
 #include <softraster/detail/fragment/stencil.hpp>
 #include <softraster/detail/instruction_set.hpp>
 #include <softraster/framebuffer.hpp>
+#include <softraster/options.hpp>
 #include <softraster/shader.hpp>
 #include <softraster/simd.hpp>
 #include <softraster/state.hpp>
@@ -156,9 +157,8 @@ class FragmentStage {
   static constexpr InstructionSet kInstructionSet = Fused ? InstructionSet::Fma : InstructionSet::Baseline;
 
   FragmentStage(const PipelineState& state, const typename Shader::Uniforms& uniforms, Framebuffer& framebuffer,
-                const Viewport& viewport, const PixelRect& region, bool inverseZ,
-                Deviations deviations = Deviations::Driver)
-      : uniforms_(uniforms), target_(fragmentTarget(state, framebuffer, viewport, region, inverseZ, deviations)) {}
+                const Viewport& viewport, const PixelRect& region, bool inverseZ, const ContextOptions& options = {})
+      : uniforms_(uniforms), target_(fragmentTarget(state, framebuffer, viewport, region, inverseZ, options.deviations)) {}
 
   const FragmentTarget& target() const { return target_; }
 
