@@ -10,8 +10,9 @@
 // filled with other data before each frame, as the bench's alternating frames leave them).
 // SmallTrianglesOneDraw and ...HundredDraws: the same triangles in 1 and in 100 draws, what
 // cutting a frame into draws costs; ...InAPass: the 10 and the 100 draws as one softraster::Pass.
-// PhongQuad: a full-screen quad lit per pixel, the cost of a real fragment shader (PhongQuadAvx2:
-// with AVX-512 not allowed); BlinnPhongFragmentAlone: that shader alone, one block or two per call.
+// PhongQuad: a full-screen quad lit per pixel, the cost of a real fragment shader;
+// BlinnPhongFragmentAlone: that shader alone, one block or two per call. FullScreenQuadAvx2 and
+// PhongQuadAvx2: those two with AVX-512 not allowed (ContextOptions::allowAvx512).
 //   softraster_benchmarks --benchmark_filter=Sphere --benchmark_repetitions=5
 // Deliberately not a replacement for `crosscheck bench`: no lavapipe beside it, no agreement
 // check; times are the machine's (shared and noisy: compare medians, side by side). "CPU" is the
@@ -218,6 +219,11 @@ void Sphere1MCulled(benchmark::State& bench) {  // as scenes/bench/sphere_1m.jso
 void FullScreenQuad(benchmark::State& bench) {
   static const Mesh mesh = quads(1, true);
   drawFrames(bench, mesh);
+}
+// The same with AVX-512 not allowed: the quad's blocks one at a time in AVX2.
+void FullScreenQuadAvx2(benchmark::State& bench) {
+  static const Mesh mesh = quads(1, true);
+  drawFrames(bench, mesh, {.allowAvx512 = false});
 }
 void QuadStackBackToFront(benchmark::State& bench) {
   static const Mesh mesh = quads(10, true);
@@ -433,6 +439,7 @@ FRAME_BENCHMARK(WireframeSphere100k);
 FRAME_BENCHMARK(Sphere1M);
 FRAME_BENCHMARK(Sphere1MCulled);
 FRAME_BENCHMARK(FullScreenQuad);
+FRAME_BENCHMARK(FullScreenQuadAvx2);
 FRAME_BENCHMARK(QuadStackBackToFront);
 FRAME_BENCHMARK(QuadStackBackToFrontMsaa);
 FRAME_BENCHMARK(SmallTriangles);

@@ -114,9 +114,10 @@ struct ContextOptions {
   // Whose behaviour where lavapipe deviates from the spec (above).
   Deviations deviations = Deviations::Driver;
   // Whether the fast path may use AVX-512 where the CPU has it (F, VL, BW and DQ): a long
-  // shader's blocks (shader.hpp, kBlockPairs) shaded four at a time in 16-lane registers. Off,
-  // they are shaded two at a time in AVX2's 8 lanes, as on a CPU without AVX-512. The bits are
-  // the same either way; the switch lets one machine test and time both.
+  // shader's blocks (shader.hpp, kBlockPairs) shaded four at a time in 16-lane registers, and
+  // other shaders' runs of whole blocks drawn two at a time. Off, everything is AVX2's 8 lanes,
+  // as on a CPU without AVX-512. The bits are the same either way; the switch lets one machine
+  // test and time both.
   bool allowAvx512 = true;
 };
 

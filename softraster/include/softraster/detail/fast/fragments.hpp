@@ -27,7 +27,12 @@
 //     has AVX-512 (F, VL, BW, DQ) four blocks wait and are shaded as two FloatBatch16 chains
 //     (shadeTwoPairsWide: each of the shader's operations one 16-lane instruction for a pair,
 //     the two pairs' chains interleaved), the walk's last two as one FloatBatch16
-//     (shadePairWide) and a last odd one alone; the same bits per lane.
+//     (shadePairWide) and a last odd one alone; the same bits per lane;
+//   - with AVX-512, other shaders (kWideRuns: not kQuads, no built-ins, not kBlockPairs) in the
+//     common state draw a triangle's runs of whole blocks inside every edge (along a row) two
+//     blocks at a time, as one 8x2 rectangle of 16 lanes (shadeRunWide: the depth test,
+//     varyings, shader, packing and writes of a whole block, each operation one 16-lane
+//     instruction; an odd last block goes the usual way). The same bits per lane.
 // Pixels of one triangle are independent, and triangles are drawn one after another, so the
 // result is the scalar path's, bit for bit (tests/crosscheck/fast_path_test.cpp checks it).
 // 4x MSAA triangles take the same blocks with coverage, depth and the writes per sample (each
@@ -44,12 +49,14 @@
 // A primitive's box of at least a tile's pixels first meets the tiles' depth bounds
 // (fast/depth_tiles.hpp): the tiles where no fragment could pass are not walked.
 // Threads are the band queue's (fast/bands.hpp), which gives each thread a stage of its own.
-// Deliberately absent: AVX-512 beyond the block pairs' shading (walks, tests and writes are AVX2).
+// Deliberately absent: AVX-512 beyond the block pairs' shading and the runs of whole blocks
+// (edge tests, partial blocks, stencil, blending, MSAA and the 2x2 quads are AVX2).
 #pragma once
 
 #include <softraster/detail/fast/batch.hpp>
 #include <softraster/detail/fast/depth_tiles.hpp>
 #include <softraster/detail/fast/stencil.hpp>
+#include <softraster/detail/fast/wide_batch.hpp>
 #include <softraster/detail/instruction_set.hpp>
 
 #if SOFTRASTER_HAS_FAST_PATH
@@ -65,6 +72,7 @@
 #include <cstddef>
 #include <cmath>
 #include <cstdint>
+#include <type_traits>
 #include <utility>
 
 #pragma GCC diagnostic push
@@ -123,7 +131,8 @@ class FastFragmentStage {
         target_(scalar_.target()),
         colour_(reinterpret_cast<std::uint32_t*>(target_.colour)),
         depthTiles_(framebuffer, target_, inverseZ, kBuiltins || target_.coverage.shadesFirst(), kWritesDepth),
-        widePairs_(kBlockPairs && options.allowAvx512 && cpuShadesWidePairs()) {}
+        widePairs_(kBlockPairs && options.allowAvx512 && cpuShadesWidePairs()),
+        wideRuns_(kWideRuns && options.allowAvx512 && cpuShadesWidePairs()) {}
 
   // target_ refers into scalar_, so a copy would point at another stage's target.
   FastFragmentStage(const FastFragmentStage&) = delete;
@@ -300,10 +309,16 @@ class FastFragmentStage {
   // kCutBlocks blocks is cut exactly, by integer division, into the run of blocks not wholly
   // outside any edge and, inside it, the run wholly inside all of them; a narrower row decides
   // each block at its corners; elsewhere every block is visited and its lanes tested.
-  template <int E, class Block>
+  // No runs: every block goes to `block`.
+  struct NoRuns {
+    std::int64_t operator()(int, int, std::int64_t) const { return 0; }
+  };
+
+  template <int E, class Block, class Run = NoRuns>
   [[SOFTRASTER_FAST_TARGET]] static void walkBlocks(const EdgeFunction (&edges)[E], const PixelRect& box,
                                                     const std::int64_t (&lowest)[E], const std::int64_t (&highest)[E],
-                                                    Block&& block) {
+                                                    Block&& block, Run&& run = {}) {
+    constexpr bool kRuns = !std::is_same_v<std::remove_cvref_t<Run>, NoRuns>;
     // A shader that samples textures is shaded in whole 2x2 quads at even coordinates (as
     // lavapipe's are): the walk starts at the quad-aligned corner, and lanes outside the box are
     // helpers (shaded for the derivatives, never written).
@@ -350,6 +365,16 @@ class FastFragmentStage {
       for (std::int64_t k = first; k <= last; ++k) {
         const int px = walked.x0 + static_cast<int>(k) * kBatchWidth;
         if (k >= plainFirst && k <= plainLast) {  // inside the box's columns and every edge
+          if constexpr (kRuns) {
+            if (rows == 0xffu && k < plainLast) {  // two or more whole blocks: `run` may take them
+              const std::int64_t taken = run(px, py, plainLast - k + 1);
+              if (taken > 0) {
+                k += taken - 1;
+                values = edgeLanes<E>([&](int i) { return rowStart[i] - (k + 1) * stepX[i]; }, 0);
+                continue;
+              }
+            }
+          }
           block(px, py, rows, true, reinterpret_cast<const std::int64_t(&)[E]>(value));
           values = _mm256_sub_epi64(values, stepLanes);
           continue;
@@ -486,12 +511,91 @@ class FastFragmentStage {
         return;
       }
     }
-    walkBlocks(edges, box, lowest, highest,
-               [&](int px, int py, unsigned inBox, bool inside, const std::int64_t (&value)[E]) {
-                 const unsigned covered = inside ? inBox : insideBits(lanes, value) & inBox;
-                 if (covered != 0) shadeBlock(px, py, covered, inBox == 0xffu, planes, to);
-               });
+    const auto block = [&](int px, int py, unsigned inBox, bool inside, const std::int64_t (&value)[E]) {
+      const unsigned covered = inside ? inBox : insideBits(lanes, value) & inBox;
+      if (covered != 0) shadeBlock(px, py, covered, inBox == 0xffu, planes, to);
+    };
+#if defined(SOFTRASTER_WIDE_TARGET)
+    // Triangles only: a line's quad one pixel wide has no run of whole blocks, and the run's
+    // branch in walkBlocks' loop spilled its invariants (the wireframe sphere's frame in
+    // crosscheck bench went from 5.8 to 7.2 ms at 2 threads with it).
+    if constexpr (kWideRuns && E == 3) {
+      if (to.plain && wideRuns_) {
+        walkBlocks(edges, box, lowest, highest, block,
+                   [&](int px, int py, std::int64_t count) { return shadeRunWide(planes, to, px, py, count); });
+        return;
+      }
+    }
+#endif
+    walkBlocks(edges, box, lowest, highest, block);
   }
+
+#if defined(SOFTRASTER_WIDE_TARGET)
+  // varyingOf over 16 lanes (interpolateVaryings<true> per pixel).
+  template <std::size_t I>
+  [[SOFTRASTER_WIDE_TARGET]] static FloatBatch16 varyingWide(const WidePlane& p, WideFloats fx, WideFloats fy, WideFloats w) {
+    if constexpr (kInterpolation[I] == Interpolation::Perspective) {
+      return FloatBatch16(evaluateWide(p, fx, fy) * w);
+    } else if constexpr (kInterpolation[I] == Interpolation::NoPerspective) {
+      return FloatBatch16(evaluateWide(p, fx, fy));
+    } else {
+      return FloatBatch16(p.a0);  // a0 of a flat plane: the value
+    }
+  }
+  template <std::size_t... I>
+  [[SOFTRASTER_WIDE_TARGET]] static void interpolateWide(std::index_sequence<I...>, const std::array<WidePlane, (N == 0 ? 1 : N)>& planes,
+                                                         WideFloats fx, WideFloats fy, WideFloats w, FloatBatch16* out) {
+    ((out[I] = varyingWide<I>(planes[I], fx, fy, w)), ...);
+  }
+
+  // Whole blocks of the plain state inside every edge (a run along a row, `count` of them from
+  // (px, py)), two at a time as one 8x2 rectangle of 16 lanes in AVX-512: each lane's depth test,
+  // varyings, shading, packing and writes as shadeBlock's for a whole block (the same operations
+  // in the same order). Returns the blocks drawn: `count` rounded down to even (the walk draws an
+  // odd last one).
+  [[SOFTRASTER_WIDE_TARGET, SOFTRASTER_FLATTEN, gnu::noinline]] std::int64_t shadeRunWide(const BlockPlanes& t, const BlockTarget& target,
+                                                                                     int px, int py, std::int64_t count) const {
+    const BlockTarget to = target;  // a local, which no store to the framebuffer can change (as walk's)
+    const std::int64_t pairs = count / 2;
+    const WidePlane depth = widen(t.depth), oneOverW = widen(t.oneOverW);
+    const WideFloats depthOffset = widen(t.depthOffset);
+    std::array<WidePlane, (N == 0 ? 1 : N)> varyingPlanes;
+    for (int i = 0; i < N; ++i) varyingPlanes[static_cast<std::size_t>(i)] = widen(t.varyings[static_cast<std::size_t>(i)]);
+    const WideFloats fy = static_cast<float>(py) + kWideLaneY;
+    for (std::int64_t p = 0; p < pairs; ++p) {
+      const int x = px + static_cast<int>(p) * 2 * kBatchWidth;
+      const WideFloats fx = static_cast<float>(x) + kWideLaneX;
+      const std::size_t first = static_cast<std::size_t>(py) * to.width + static_cast<std::size_t>(x);
+      std::uint32_t* depthRow = to.depthStorage + first;
+      const __m512i current = loadWideRows(depthRow, depthRow + to.width);
+      const WideWords stored = depthToStorageWide<Format>(clampDepthWide(evaluateWide(depth, fx, fy) + depthOffset, to.depthRange));
+      const unsigned passes = depthTestPassesWide<Format>(to.depth.compareOp, stored, reinterpret_cast<WideWords>(current));
+      if (passes == 0) continue;
+      std::array<FloatBatch16, (N == 0 ? 1 : N)> varyings;
+      if constexpr (N > 0) {
+        WideFloats w{};
+        if constexpr (kAnyPerspective) w = 1.0f / evaluateWide(oneOverW, fx, fy);
+        interpolateWide(std::make_index_sequence<N>{}, varyingPlanes, fx, fy, w, varyings.data());
+      }
+      Vec4T<FloatBatch16> c = Shader::template fragment<FloatBatch16>(uniforms_, varyings.data());
+      if (to.alphaToOne) c.w = FloatBatch16(1.0f);
+      const __m512i colour = packColourWide(c, to.swapRedBlue);
+      std::uint32_t* colourRow = to.colour + first;
+      if (passes == 0xffffu) {
+        storeWideRow(colourRow, colour, 0);
+        storeWideRow(colourRow + to.width, colour, 1);
+      } else {
+        storeWideRow(colourRow, colour, 0, passes & 0xffu);
+        storeWideRow(colourRow + to.width, colour, 1, passes >> 8);
+      }
+      // Lanes that fail keep the value just read: plain stores, as storeDepth's for a whole block.
+      const __m512i depthOut = _mm512_mask_blend_epi32(static_cast<__mmask16>(passes), current, reinterpret_cast<__m512i>(stored));
+      storeWideRow(depthRow, depthOut, 0);
+      storeWideRow(depthRow + to.width, depthOut, 1);
+    }
+    return pairs * 2;
+  }
+#endif
 
   // Two blocks of the plain state that passed the depth test (testPlainBlock), shaded as one
   // FloatBatchPair and written: what shadeBlock does for each, the two shaders' chains of
@@ -927,6 +1031,9 @@ class FastFragmentStage {
   static constexpr bool kWritesDepth = WritesFragDepth<Shader>;
   static constexpr bool kPlainBlocks = !kBuiltins;  // BlockTarget::plain can hold
   static constexpr bool kBlockPairs = kPlainBlocks && !kQuads && ShadesBlockPairs<Shader>;
+  // Runs of whole blocks go 16 lanes at a time with AVX-512 (shadeRunWide): the shaders that are
+  // not shaded in pairs (short ones, where the walk's own work is most of a block's).
+  static constexpr bool kWideRuns = kPlainBlocks && !kQuads && !kBlockPairs;
   static constexpr bool kWritesSampleMask = WritesSampleMask<Shader>;
 
   FragmentStage<Shader, true, Format> scalar_;
@@ -935,6 +1042,7 @@ class FastFragmentStage {
   std::uint32_t* colour_;         // target_.colour as packed RGBA8, one word per pixel
   DepthTiles<depthAspect(Format)> depthTiles_;  // skips the tiles no fragment could pass
   bool widePairs_;  // block pairs shaded as FloatBatch16 (AVX-512: cpuShadesWidePairs, and allowAvx512)
+  bool wideRuns_;   // runs of whole blocks 16 lanes at a time (AVX-512, the same conditions)
 };
 
 }  // namespace softraster::detail::fast
