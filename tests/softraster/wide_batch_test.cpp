@@ -50,9 +50,13 @@ std::vector<float> inputs() {
   return v;
 }
 
+// The helpers that take or return a vector are compiled for AVX-512 like their callers: in the
+// sanitizer build nothing is inlined, and a vector crossing between code with and without the
+// target is passed in a register on one side and in memory on the other.
+
 // 16 of `values` from `first` on (wrapping), one value per lane.
 template <class V>
-V lanesOf(const std::vector<float>& values, std::size_t first) {
+[[SOFTRASTER_WIDE_TARGET]] V lanesOf(const std::vector<float>& values, std::size_t first) {
   float lanes[kLanes];
   for (int l = 0; l < kLanes; ++l) lanes[l] = values[(first + static_cast<std::size_t>(l)) % values.size()];
   V v;
@@ -63,14 +67,14 @@ V lanesOf(const std::vector<float>& values, std::size_t first) {
 
 // Half h (lanes 8h to 8h + 7) of 16 lanes, as an 8-lane vector.
 template <class Half, class Wide>
-Half half(const Wide& w, int h) {
+[[SOFTRASTER_WIDE_TARGET]] Half half(const Wide& w, int h) {
   Half out;
   std::memcpy(&out, reinterpret_cast<const char*>(&w) + h * sizeof out, sizeof out);
   return out;
 }
 
 template <class A, class B>
-bool sameBytes(const A& a, const B& b) {
+[[SOFTRASTER_WIDE_TARGET]] bool sameBytes(const A& a, const B& b) {
   static_assert(sizeof a == sizeof b);
   return std::memcmp(&a, &b, sizeof a) == 0;
 }

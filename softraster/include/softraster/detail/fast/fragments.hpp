@@ -309,7 +309,9 @@ class FastFragmentStage {
   // kCutBlocks blocks is cut exactly, by integer division, into the run of blocks not wholly
   // outside any edge and, inside it, the run wholly inside all of them; a narrower row decides
   // each block at its corners; elsewhere every block is visited and its lanes tested.
-  // No runs: every block goes to `block`.
+  // run(px, py, count), where given: offered each run of two or more blocks of a cut row that
+  // are whole (both rows and four columns in the box) and inside every edge, from (px, py);
+  // returns how many of them it drew (0: none), and the rest go to `block` as before.
   struct NoRuns {
     std::int64_t operator()(int, int, std::int64_t) const { return 0; }
   };
