@@ -16,6 +16,9 @@
 #include <softraster/simd.hpp>
 #include <softraster/state.hpp>
 
+#include <cassert>
+#include <cstdint>
+
 #pragma GCC diagnostic push
 #pragma GCC diagnostic ignored "-Wpsabi"
 
@@ -52,6 +55,7 @@ struct WidePlane {
 
 // clampDepth over 16 lanes: max(min(z, range.max), range.min) in minps/maxps operand order.
 [[SOFTRASTER_WIDE_TARGET]] inline WideFloats clampDepthWide(WideFloats z, DepthRange range) {
+  assert(range.min >= 0.0f && range.max <= 1.0f);  // as clampDepth: one clamp is the scalar two only then
   const __m512 v = _mm512_maskz_max_ps(kAllLanes, _mm512_maskz_min_ps(kAllLanes, reinterpret_cast<__m512>(z), _mm512_set1_ps(range.max)),
                                        _mm512_set1_ps(range.min));
   return reinterpret_cast<WideFloats>(v);
