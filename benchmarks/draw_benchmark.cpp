@@ -122,8 +122,9 @@ struct FrameOptions {
   // a small primitive's first depth read has there (20k small triangles: 3.4-3.7 ms warm,
   // 4.7 ms in the bench, 2 threads).
   bool cold = false;
-  // ContextOptions::allowAvx512: off, a long shader's blocks go two at a time in AVX2 even where
-  // the CPU has AVX-512 (PhongQuadAvx2).
+  // ContextOptions::allowAvx512: off, the fast path is AVX2 only even where the CPU has AVX-512
+  // (FullScreenQuadAvx2: no 16-lane runs of whole blocks; PhongQuadAvx2: long shaders' blocks two
+  // at a time in 8 lanes).
   bool allowAvx512 = true;
   // The meshes drawn as one softraster::Pass (pass.hpp) instead of draw by draw.
   bool pass = false;
