@@ -1,4 +1,4 @@
-// The bench's JSON: {"machine": {cpu, cores, memset_gb_per_s}, "frames", "warmup", "threads",
+// The bench's JSON: {"machine": {cpu, cores, memset_gb_per_s, allocator}, "frames", "warmup", "threads",
 // "scenes": [{scene, description, width, height, samples, pixels, triangles, bytes_written,
 // memory_limit_ms, results: [{renderer, method (softraster only), threads, median_ms, min_ms,
 // setup_ms, frames_ms, coverage_mismatches, colour_max_delta, depth_max_delta, agrees,

@@ -16,6 +16,10 @@
 #include <string_view>
 #include <thread>
 
+#if defined(__GLIBC__)
+#include <malloc.h>
+#endif
+
 namespace crosscheck {
 namespace {
 
@@ -261,6 +265,20 @@ BenchMachine measureMachine() {
   return machine;
 }
 
+std::string settleAllocator() {
+#if defined(__GLIBC__)
+  constexpr int kMebibyte = 1 << 20;
+  constexpr int kMmapThreshold = 32 * kMebibyte, kTrimThreshold = 2 * kMmapThreshold;
+  if (mallopt(M_MMAP_THRESHOLD, kMmapThreshold) == 1 && mallopt(M_TRIM_THRESHOLD, kTrimThreshold) == 1) {
+    return "glibc: mmap threshold " + std::to_string(kMmapThreshold / kMebibyte) + " MiB, trim threshold " +
+           std::to_string(kTrimThreshold / kMebibyte) + " MiB";
+  }
+  return "glibc: its defaults (mallopt refused the thresholds)";
+#else
+  return "not glibc: the allocator's defaults";
+#endif
+}
+
 std::uint64_t triangleCount(const Scene& scene) {
   using softraster::Topology;
   std::uint64_t triangles = 0;
@@ -279,6 +297,7 @@ std::uint64_t triangleCount(const Scene& scene) {
 BenchResults runBench(const std::vector<Scene>& scenes, const BenchOptions& options, const BenchMachine& machine) {
   BenchResults results;
   results.machine = machine;
+  results.machine.allocator = settleAllocator();
   results.frames = options.frames;
   results.warmup = options.warmup;
   results.threads = options.threads;

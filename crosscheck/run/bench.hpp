@@ -5,7 +5,9 @@
 // ready once (softraster: a SoftrasterScene, i.e. Context, framebuffer and draws; lavapipe: a
 // Renderer opened and the frame prepared), then warm-up frames and timed frames are drawn with the
 // renderers taking turns frame by frame (the methods in order, lavapipe, repeat), each frame timed
-// with std::chrono::steady_clock. Setup (making ready plus the first frame) is timed apart. After
+// with std::chrono::steady_clock. Setup (making ready plus the first frame) is timed apart. Before
+// the first scene the C allocator's thresholds are fixed (settleAllocator), so a scene's times do
+// not depend on the scenes run before it. After
 // the timed frames each method's last frame is compared with lavapipe's (compare/compareFrames).
 // The result is a BenchResults value, the only thing the bench writers (output/bench_*) read.
 // Deliberately no printing, no files and no argument checks (cli/bench.cpp), and no statistics
@@ -63,6 +65,9 @@ struct BenchMachine {
   std::string cpu;                 // "model name" of /proc/cpuinfo ("unknown" without it)
   unsigned cores = 0;              // std::thread::hardware_concurrency()
   double memsetGigabytesPerSecond = 0;  // median memset bandwidth over a 1080p RGBA8 + D32 buffer
+  // How the run set the C allocator (settleAllocator), e.g. "glibc: mmap threshold 32 MiB, trim
+  // threshold 64 MiB"; runBench fills it in.
+  std::string allocator;
 };
 
 // One renderer (or softraster method) on one scene.
@@ -108,6 +113,15 @@ struct BenchResults {
 
 // The CPU model, the core count and the memset bandwidth (median of a few runs).
 BenchMachine measureMachine();
+
+// Fixes glibc malloc's mmap and trim thresholds at the values its dynamic rule ends at on 64-bit
+// (32 MiB, and twice that), for the whole process, and says what it set; elsewhere, or if glibc
+// refuses, leaves the allocator alone and says so. Why: glibc starts with a 128 KiB mmap
+// threshold and raises it only when a larger mmapped block is freed, so a renderer that frees
+// and allocates a large block every frame pays fresh pages (page faults) for it every frame
+// until something else has freed a larger one. lavapipe's frame of scenes/bench/sphere_1m.json
+// took 125-165 ms when the scene was benched alone and 37-48 ms after the other bench scenes.
+std::string settleAllocator();
 
 // Triangles a scene's draws assemble (triangle topologies only).
 std::uint64_t triangleCount(const Scene& scene);

@@ -132,7 +132,8 @@ PY
     python3 - "$artifacts/bench.json" <<'PY' || fail "bench.json does not have the documented shape"
 import json, sys
 d = json.load(open(sys.argv[1]))
-assert set(d["machine"]) >= {"cpu", "cores", "memset_gb_per_s"}
+assert set(d["machine"]) >= {"cpu", "cores", "memset_gb_per_s", "allocator"}
+assert d["machine"]["allocator"].startswith("glibc: mmap threshold 32 MiB"), d["machine"]["allocator"]
 (s,) = d["scenes"]
 assert s["pixels"] == 48 * 32 and s["triangles"] == 256 and s["memory_limit_ms"] > 0
 assert [(r["renderer"], r.get("method")) for r in s["results"]] == [

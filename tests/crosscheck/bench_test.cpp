@@ -9,9 +9,14 @@
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
+#include <cstdlib>
 #include <filesystem>
 #include <string>
 #include <vector>
+
+#if defined(__GLIBC__)
+#include <malloc.h>
+#endif
 
 namespace {
 
@@ -85,6 +90,10 @@ TEST(Bench, JsonHasTheDocumentedFields) {
   EXPECT_TRUE(json["machine"]["cpu"].is_string());
   EXPECT_TRUE(json["machine"]["cores"].is_number_integer());
   EXPECT_TRUE(json["machine"]["memset_gb_per_s"].is_number());
+  ASSERT_TRUE(json["machine"]["allocator"].is_string());
+#if defined(__GLIBC__)
+  EXPECT_EQ(json["machine"]["allocator"], "glibc: mmap threshold 32 MiB, trim threshold 64 MiB");
+#endif
   ASSERT_EQ(json["scenes"].size(), 1u);
   const auto& scene = json["scenes"][0];
   EXPECT_EQ(scene["scene"], kTinySphere.string());
@@ -133,3 +142,21 @@ TEST(Bench, MethodListsParse) {
     EXPECT_FALSE(crosscheck::parseBenchMethods(bad)) << bad;
   }
 }
+
+#if defined(__GLIBC__)
+// What settleAllocator is for: a block well above glibc's starting mmap threshold (128 KiB), and
+// above any block this test process has freed, comes from the heap and not from a fresh mapping
+// (mallinfo2's hblks counts the mapped blocks), and stays there once freed and asked for again.
+TEST(Bench, SettledAllocatorKeepsLargeBlocksOffMmap) {
+  ASSERT_EQ(crosscheck::settleAllocator(), "glibc: mmap threshold 32 MiB, trim threshold 64 MiB");
+  const std::size_t bytes = std::size_t{24} << 20;
+  const int mappedBefore = mallinfo2().hblks;
+  for (int round = 0; round < 2; ++round) {
+    void* block = std::malloc(bytes);
+    ASSERT_NE(block, nullptr);
+    asm volatile("" : : "r"(block) : "memory");  // the block is used: the compiler keeps the malloc
+    EXPECT_EQ(mallinfo2().hblks, mappedBefore) << "round " << round << ": the 24 MiB block was mapped";
+    std::free(block);
+  }
+}
+#endif
