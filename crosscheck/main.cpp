@@ -8,7 +8,8 @@
 //                     [--expectations FILE] [--jobs N] [--shard I/N]
 //                     [--junit FILE] [--timeout SECONDS] [--memory-limit MB] [--set KEY.PATH=VALUE ...]
 //   crosscheck merge RESULTS.json|DIR ... -o DIR [--junit FILE]
-//   crosscheck bench [SCENE|DIR ...] [--method all|LIST] [--frames N] [--warmup N] [--threads N] [-o FILE.json]
+//   crosscheck bench [SCENE|DIR ...] [--method all|LIST] [--frames N] [--warmup N] [--threads N]
+//                    [--softraster-no-avx512] [-o FILE.json]
 //   crosscheck chart BENCH.json [-o CHART.svg]
 //   crosscheck stability [SCENE|DIR ...] [--frames N] [--threads N] [--json FILE]
 //   crosscheck view SCENE [--set KEY.PATH=VALUE ...] [--script FILE] [-o|--screenshots DIR]
@@ -73,7 +74,8 @@ constexpr const char* kUsage =
     "       crosscheck report [SCENE|DIR ...] -o DIR [--baseline DIR] [--no-chart] [--chart-frames N] [--expectations FILE] [--jobs N] "
     "[--shard I/N] [--junit FILE] [--timeout SECONDS] [--memory-limit MB] [--set KEY.PATH=VALUE ...]\n"
     "       crosscheck merge RESULTS.json|DIR ... -o DIR [--junit FILE]\n"
-    "       crosscheck bench [SCENE|DIR ...] [--method all|LIST] [--frames N] [--warmup N] [--threads N] [-o FILE.json]\n"
+    "       crosscheck bench [SCENE|DIR ...] [--method all|LIST] [--frames N] [--warmup N] [--threads N]\n"
+    "                        [--softraster-no-avx512] [-o FILE.json]\n"
     "       crosscheck chart BENCH.json [-o CHART.svg]\n"
     "       crosscheck stability [SCENE|DIR ...] [--frames N] [--threads N] [--json FILE]\n"
     "       crosscheck view SCENE [--set KEY.PATH=VALUE ...] [--script FILE] [-o|--screenshots DIR]\n"
@@ -260,6 +262,10 @@ int main(int argc, char** argv) {
   benchCommand->add_option("--threads", benchThreadsText,
                            "softraster's threads and lavapipe's LP_NUM_THREADS; 0 (default) = every core");
   benchCommand->add_option("-o,--output,--json", bench.jsonFile, "Write the results as JSON to this file");
+  bool benchNoAvx512 = false;
+  benchCommand->add_flag("--softraster-no-avx512", benchNoAvx512,
+                         "softraster's fast path without AVX-512 even where the CPU has it (AVX2 only, the same "
+                         "bits): times the AVX2 path on an AVX-512 machine");
   addDevice(benchCommand);
 
   crosscheck::cli::ChartCommand chart;
@@ -351,6 +357,7 @@ int main(int argc, char** argv) {
     bench.threads = *threads;
     bench.device = common.deviceOptions();
     bench.softraster = common.softraster();
+    bench.softraster.allowAvx512 = !benchNoAvx512;
     return crosscheck::cli::benchCommand(bench);
   }
   if (chartCommand->parsed()) return crosscheck::cli::chartCommand(chart);

@@ -72,6 +72,7 @@ std::string benchJson(const BenchResults& results) {
                          {"frames", results.frames},
                          {"warmup", results.warmup},
                          {"threads", results.threads},
+                         {"softraster_allow_avx512", results.allowAvx512},
                          {"scenes", std::move(scenes)}};
   return document.dump(2) + "\n";
 }

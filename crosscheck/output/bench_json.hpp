@@ -1,5 +1,5 @@
 // The bench's JSON: {"machine": {cpu, cores, memset_gb_per_s, allocator}, "frames", "warmup", "threads",
-// "scenes": [{scene, description, width, height, samples, pixels, triangles, bytes_written,
+// "softraster_allow_avx512", "scenes": [{scene, description, width, height, samples, pixels, triangles, bytes_written,
 // memory_limit_ms, results: [{renderer, method (softraster only), threads, median_ms, min_ms,
 // setup_ms, frames_ms, coverage_mismatches, colour_max_delta, depth_max_delta, agrees,
 // ratio_vs_lavapipe, error}]}]}. Agreement fields are null where nothing was compared (lavapipe

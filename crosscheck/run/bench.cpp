@@ -301,6 +301,7 @@ BenchResults runBench(const std::vector<Scene>& scenes, const BenchOptions& opti
   results.frames = options.frames;
   results.warmup = options.warmup;
   results.threads = options.threads;
+  results.allowAvx512 = options.softraster.allowAvx512;
   for (std::size_t i = 0; i < scenes.size(); ++i) {
     results.scenes.push_back(benchScene(scenes[i], options, machine));
     if (options.onScene) options.onScene(i, scenes.size(), results.scenes.back());

@@ -106,6 +106,7 @@ struct BenchResults {
   BenchMachine machine;
   unsigned frames = 0, warmup = 0;
   unsigned threads = 0;            // the option as given (0 = every core)
+  bool allowAvx512 = true;         // softraster's ContextOptions::allowAvx512 (--softraster-no-avx512: false)
   std::vector<BenchScene> scenes;  // in the order given
   // Whether every renderer ran and every method agrees with lavapipe within the scene's tolerance.
   bool allAgree() const;

@@ -134,6 +134,7 @@ import json, sys
 d = json.load(open(sys.argv[1]))
 assert set(d["machine"]) >= {"cpu", "cores", "memset_gb_per_s", "allocator"}
 assert d["machine"]["allocator"].startswith("glibc: mmap threshold 32 MiB"), d["machine"]["allocator"]
+assert d["softraster_allow_avx512"] is True
 (s,) = d["scenes"]
 assert s["pixels"] == 48 * 32 and s["triangles"] == 256 and s["memory_limit_ms"] > 0
 assert [(r["renderer"], r.get("method")) for r in s["results"]] == [
@@ -144,6 +145,19 @@ for r in s["results"]:
         assert isinstance(r[k], (int, float)), k
 for r in s["results"][:2]:
     assert (r["coverage_mismatches"], r["colour_max_delta"], r["depth_max_delta"]) == (0, 0, 0)
+PY
+    ;;
+  no_avx512)
+    # --softraster-no-avx512: the fast path without AVX-512 (the same bits), said in the table and the JSON.
+    command -v python3 >/dev/null || { echo "SKIPPED: python3 is not installed"; exit 77; }
+    run bench "$tiny" --frames 2 --warmup 1 --threads 2 --method exact --softraster-no-avx512 --json "$artifacts/bench.json"
+    expect_status 0
+    expect_out '^softraster: AVX-512 not allowed \(--softraster-no-avx512\)'
+    expect_out '^tiny_sphere +48x32 +256 +softraster exact +2 .* 0/0/0$'
+    python3 - "$artifacts/bench.json" <<'PY' || fail "bench.json does not say AVX-512 was not allowed"
+import json, sys
+d = json.load(open(sys.argv[1]))
+assert d["softraster_allow_avx512"] is False
 PY
     ;;
   chart_svg)
