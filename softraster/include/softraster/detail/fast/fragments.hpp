@@ -2,17 +2,20 @@
 // (fragment/shade.hpp), with single-sample triangles, lines and points (their quads: four edges)
 // walked and shaded in 4x2 blocks of SIMD lanes (fast/batch.hpp) and the shader's fragment
 // function run over FloatBatch:
-//   - a bounding box (clipped to the draw region) of one block is tested and shaded directly;
+//   - a bounding box (clipped to the draw region) of one block, or (but for kBlockPairs shaders)
+//     of up to three blocks across and three down (kSmallBlocks), has each block tested and
+//     shaded directly, without the walk's set-up, and the planes are made only when a lane is
+//     covered (most triangles of a dense mesh);
 //   - a larger one is walked block by block; where
 //     no edge value can wrap around 64 bits, each row of blocks is first cut exactly (integer
 //     division) into the blocks wholly outside an edge (skipped) and those wholly inside every
 //     edge (every lane covered, no per-lane test); other blocks take their coverage from the
 //     64-bit edge functions at their eight pixel centres; in a cut row, the run of blocks inside
 //     every edge and the box's columns goes to the block with no per-block test;
-//   - what a block reads of the target (pointers, width, the depth state, flags) is copied into a
-//     local once per primitive (a block's stores could alias it where it lies) and branched on per
-//     block, branches the predictor learns (one block loop per stage, not one per state, keeps a
-//     shader's compile time down); the common state (depth tested and written, no stencil,
+//   - what a block reads of the target (pointers, width, the depth state, flags) is made once per
+//     stage and copied into a local per primitive (a block's stores could alias it where it
+//     lies) and branched on per block, branches the predictor learns (one block loop per
+//     stage, not one per state, keeps a shader's compile time down); the common state (depth tested and written, no stencil,
 //     blending or discards: BlockTarget::plain) tests one flag before and after the shader
 //     instead of each feature's (the shader is still inlined once);
 //     a block wholly inside the box reads and writes with plain loads and stores;
@@ -132,7 +135,8 @@ class FastFragmentStage {
         colour_(reinterpret_cast<std::uint32_t*>(target_.colour)),
         depthTiles_(framebuffer, target_, inverseZ, kBuiltins || target_.coverage.shadesFirst(), kWritesDepth),
         widePairs_(kBlockPairs && options.allowAvx512 && cpuShadesWidePairs()),
-        wideRuns_(kWideRuns && options.allowAvx512 && cpuShadesWidePairs()) {}
+        wideRuns_(kWideRuns && options.allowAvx512 && cpuShadesWidePairs()),
+        blockTarget_(makeBlockTarget()) {}
 
   // target_ refers into scalar_, so a copy would point at another stage's target.
   FastFragmentStage(const FastFragmentStage&) = delete;
@@ -199,7 +203,7 @@ class FastFragmentStage {
     int partialColumn, partialRow;  // 4x MSAA: MsaaRegionEdges's
   };
 
-  BlockTarget blockTarget() const {
+  BlockTarget makeBlockTarget() const {
     return {.depth = target_.depth,
             .depthRange = target_.depthRange,
             .width = target_.width,
@@ -272,8 +276,64 @@ class FastFragmentStage {
     if (box.empty()) return;
     // Nothing passes (but with the stencil on, failing fragments still update it).
     if (target_.depth.testEnable && target_.depth.compareOp == CompareOp::Never && !target_.stencil.enable) return;
+    if constexpr (!kQuads) {
+      // (The depth tiles never skip a box this small: under a tile's pixels, shade() walks it whole.)
+      const int width = box.x1 - box.x0 + 1, height = box.y1 - box.y0 + 1;
+      const bool oneBlock = width <= kBatchWidth && height <= kBatchHeight;
+      if (oneBlock || (!kBlockPairs && width <= kSmallBlocks * kBatchWidth && height <= kSmallBlocks * kBatchHeight)) {
+        walkSmallBox(edges, box, t);
+        return;
+      }
+    }
     const BlockPlanes planes = blockPlanes(t);
     depthTiles_.shade(edges, box, t.depth, t.depthOffset, [&](const PixelRect& part) { walk(edges, part, planes); });
+  }
+
+  // walkSmallBox takes boxes of up to kSmallBlocks blocks across and down (one block for a
+  // kBlockPairs shader, whose blocks the walk shades in pairs).
+  static constexpr int kSmallBlocks = 3;
+
+  // A small box (shadePrimitive): each block from its top-left corner, its lanes tested as
+  // walkBlocks tests a block it cannot decide at its corners (the same blocks, lanes and order),
+  // without the walk's set-up; the planes and the target are made only once a lane is covered.
+  template <int E>
+  [[SOFTRASTER_FAST_TARGET, SOFTRASTER_FLATTEN, gnu::noinline]] void walkSmallBox(const EdgeFunction (&edges)[E],
+                                                                                  const PixelRect& box,
+                                                                                  const TriangleInterpolants<N>& t) const {
+    const BlockEdges<E> lanes = blockEdges(edges);
+    struct Block {
+      int px, py;
+      unsigned covered, inBox;
+    };
+    Block blocks[kSmallBlocks * kSmallBlocks];
+    int count = 0;
+    // The edge values at each block's lane 0, c + dcdy * py - dcdx * px, stepped from the box's
+    // corner (integers: the same values).
+    std::int64_t rowValue[E], stepX[E], stepY[E];
+    for (int i = 0; i < E; ++i) {
+      rowValue[i] = edges[i].c + edges[i].dcdy * box.y0 - edges[i].dcdx * box.x0;
+      stepX[i] = kBatchWidth * edges[i].dcdx;
+      stepY[i] = kBatchHeight * edges[i].dcdy;
+    }
+    for (int py = box.y0; py <= box.y1; py += kBatchHeight) {
+      const unsigned rows = py + 1 <= box.y1 ? 0x11u : 0x01u;
+      std::int64_t value[E];
+      for (int i = 0; i < E; ++i) value[i] = rowValue[i];
+      for (int px = box.x0; px <= box.x1; px += kBatchWidth) {
+        const unsigned inBox = ((1u << std::min(kBatchWidth, box.x1 - px + 1)) - 1u) * rows;
+        const unsigned covered = insideBits(lanes, value) & inBox;
+        if (covered != 0) blocks[count++] = {px, py, covered, inBox};
+        for (int i = 0; i < E; ++i) value[i] -= stepX[i];
+      }
+      for (int i = 0; i < E; ++i) rowValue[i] += stepY[i];
+    }
+    if (count == 0) return;
+    const BlockPlanes planes = blockPlanes(t);
+    const BlockTarget to = blockTarget_;  // as in walk()
+    for (int k = 0; k < count; ++k) {
+      const Block& b = blocks[k];
+      shadeBlock(b.px, b.py, b.covered, b.inBox == 0xffu, planes, to);
+    }
   }
 
   static constexpr std::int64_t kCutBlocks = 4;  // rows of more blocks than this are cut by division
@@ -461,10 +521,11 @@ class FastFragmentStage {
   [[SOFTRASTER_FAST_TARGET, SOFTRASTER_FLATTEN, gnu::noinline]] void walk(const EdgeFunction (&edges)[E], const PixelRect& box,
                                                                    const BlockPlanes& planes) const {
     const BlockEdges<E> lanes = blockEdges(edges);
-    const BlockTarget to = blockTarget();  // a local, which no store to the framebuffer can change
+    const BlockTarget to = blockTarget_;  // a local, which no store to the framebuffer can change
     if constexpr (!kQuads) {
-      // A box of one block (most triangles of a dense mesh): its lanes tested as walkBlocks tests
-      // a block it cannot decide at its corners, without setting up the walk.
+      // A box of one block (a part of a larger box the depth tiles cut; shadePrimitive gives small
+      // boxes to walkSmallBox): its lanes tested as walkBlocks tests a block it cannot decide at
+      // its corners, without setting up the walk.
       if (box.x1 - box.x0 < kBatchWidth && box.y1 - box.y0 < kBatchHeight) {
         std::int64_t value[E];
         for (int i = 0; i < E; ++i) value[i] = edges[i].c + edges[i].dcdy * box.y0 - edges[i].dcdx * box.x0;
@@ -828,7 +889,7 @@ class FastFragmentStage {
                                                                           const PixelRect& box,
                                                                           const BlockPlanes& planes) const {
     const SampleEdges samples = sampleEdges(edges);
-    const BlockTarget to = blockTarget();  // as in walk()
+    const BlockTarget to = blockTarget_;  // as in walk()
     walkBlocks(edges, box, samples.lowest, samples.highest,
                [&](int px, int py, unsigned inBox, bool inside, const std::int64_t (&value)[3]) {
                  const std::uint32_t inBoxSamples = kSpreadToSamples[inBox];
@@ -1045,6 +1106,7 @@ class FastFragmentStage {
   DepthTiles<depthAspect(Format)> depthTiles_;  // skips the tiles no fragment could pass
   bool widePairs_;  // block pairs shaded as FloatBatch16 (AVX-512: cpuShadesWidePairs, and allowAvx512)
   bool wideRuns_;   // runs of whole blocks 16 lanes at a time (AVX-512, the same conditions)
+  BlockTarget blockTarget_;  // makeBlockTarget(): target_ does not change
 };
 
 }  // namespace softraster::detail::fast
