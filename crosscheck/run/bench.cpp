@@ -266,7 +266,9 @@ BenchMachine measureMachine() {
 }
 
 std::string settleAllocator() {
-#if defined(__GLIBC__)
+#if defined(__SANITIZE_ADDRESS__)
+  return "AddressSanitizer's allocator: its own (mallopt does not reach it)";
+#elif defined(__GLIBC__)
   constexpr int kMebibyte = 1 << 20;
   constexpr int kMmapThreshold = 32 * kMebibyte, kTrimThreshold = 2 * kMmapThreshold;
   if (mallopt(M_MMAP_THRESHOLD, kMmapThreshold) == 1 && mallopt(M_TRIM_THRESHOLD, kTrimThreshold) == 1) {

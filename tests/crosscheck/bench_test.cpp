@@ -91,7 +91,9 @@ TEST(Bench, JsonHasTheDocumentedFields) {
   EXPECT_TRUE(json["machine"]["cores"].is_number_integer());
   EXPECT_TRUE(json["machine"]["memset_gb_per_s"].is_number());
   ASSERT_TRUE(json["machine"]["allocator"].is_string());
-#if defined(__GLIBC__)
+#if defined(__SANITIZE_ADDRESS__)
+  EXPECT_EQ(json["machine"]["allocator"], "AddressSanitizer's allocator: its own (mallopt does not reach it)");
+#elif defined(__GLIBC__)
   EXPECT_EQ(json["machine"]["allocator"], "glibc: mmap threshold 32 MiB, trim threshold 64 MiB");
 #endif
   ASSERT_EQ(json["scenes"].size(), 1u);
@@ -143,7 +145,7 @@ TEST(Bench, MethodListsParse) {
   }
 }
 
-#if defined(__GLIBC__)
+#if defined(__GLIBC__) && !defined(__SANITIZE_ADDRESS__)  // (AddressSanitizer replaces malloc)
 // What settleAllocator is for: a block well above glibc's starting mmap threshold (128 KiB), and
 // above any block this test process has freed, comes from the heap and not from a fresh mapping
 // (mallinfo2's hblks counts the mapped blocks), and stays there once freed and asked for again.
