@@ -118,11 +118,11 @@ BenchMachine measureMachine();
 // Fixes glibc malloc's mmap and trim thresholds at the values its dynamic rule ends at on 64-bit
 // (32 MiB, and twice that), for the whole process, and says what it set; elsewhere (another C
 // library, or AddressSanitizer's allocator in the sanitizer job), or if glibc refuses, leaves
-// the allocator alone and says so. Why: glibc starts with a 128 KiB mmap
-// threshold and raises it only when a larger mmapped block is freed, so a renderer that frees
-// and allocates a large block every frame pays fresh pages (page faults) for it every frame
-// until something else has freed a larger one. lavapipe's frame of scenes/bench/sphere_1m.json
-// took 125-165 ms when the scene was benched alone and 37-48 ms after the other bench scenes.
+// the allocator alone and says so. Why: glibc starts with a 128 KiB mmap threshold and raises it
+// only when a larger mmapped block is freed, so a renderer that frees and allocates a large block
+// every frame pays fresh pages (page faults) for it every frame until something else has freed a
+// larger one. lavapipe's frame of scenes/bench/sphere_1m.json took 122-166 ms when the scene was
+// benched alone and 37-48 ms after the other bench scenes.
 std::string settleAllocator();
 
 // Triangles a scene's draws assemble (triangle topologies only).

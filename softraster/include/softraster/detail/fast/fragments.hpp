@@ -15,9 +15,9 @@
 //   - what a block reads of the target (pointers, width, the depth state, flags) is made once per
 //     stage and copied into a local per primitive (a block's stores could alias it where it
 //     lies) and branched on per block, branches the predictor learns (one block loop per
-//     stage, not one per state, keeps a shader's compile time down); the common state (depth tested and written, no stencil,
-//     blending or discards: BlockTarget::plain) tests one flag before and after the shader
-//     instead of each feature's (the shader is still inlined once);
+//     stage, not one per state, keeps a shader's compile time down); the common state (depth
+//     tested and written, no stencil, blending or discards: BlockTarget::plain) tests one flag
+//     before and after the shader instead of each feature's (the shader is still inlined once);
 //     a block wholly inside the box reads and writes with plain loads and stores;
 //   - depth per lane at the integer pixel coordinates (no incremental stepping: the plane is
 //     evaluated per pixel exactly as the scalar path does), the depth test before shading;
@@ -295,7 +295,8 @@ class FastFragmentStage {
 
   // A small box (shadePrimitive): each block from its top-left corner, its lanes tested as
   // walkBlocks tests a block it cannot decide at its corners (the same blocks, lanes and order),
-  // without the walk's set-up; the planes and the target are made only once a lane is covered.
+  // without the walk's set-up; the planes are made, and the target copied, only once a lane is
+  // covered.
   template <int E>
   [[SOFTRASTER_FAST_TARGET, SOFTRASTER_FLATTEN, gnu::noinline]] void walkSmallBox(const EdgeFunction (&edges)[E],
                                                                                   const PixelRect& box,
