@@ -118,19 +118,26 @@ template <int E>
 }
 
 // Bit l set where lane l is strictly inside all E edges (value > 0), `first` the edge values
-// at lane 0.
+// at lane 0, each in every lane of its vector.
 template <int E>
-[[SOFTRASTER_FAST_TARGET]] inline unsigned insideBits(const BlockEdges<E>& b, const std::int64_t (&first)[E]) {
+[[SOFTRASTER_FAST_TARGET]] inline unsigned insideBits(const BlockEdges<E>& b, const __m256i (&first)[E]) {
   const __m256i zero = _mm256_setzero_si256();
   __m256i row0 = _mm256_set1_epi64x(-1), row1 = row0;
   for (int i = 0; i < E; ++i) {
-    const __m256i base = _mm256_set1_epi64x(first[i]);
-    row0 = _mm256_and_si256(row0, _mm256_cmpgt_epi64(_mm256_add_epi64(base, b.offsetRow0[i]), zero));
-    row1 = _mm256_and_si256(row1, _mm256_cmpgt_epi64(_mm256_add_epi64(base, b.offsetRow1[i]), zero));
+    row0 = _mm256_and_si256(row0, _mm256_cmpgt_epi64(_mm256_add_epi64(first[i], b.offsetRow0[i]), zero));
+    row1 = _mm256_and_si256(row1, _mm256_cmpgt_epi64(_mm256_add_epi64(first[i], b.offsetRow1[i]), zero));
   }
   const unsigned bits0 = static_cast<unsigned>(_mm256_movemask_pd(_mm256_castsi256_pd(row0)));
   const unsigned bits1 = static_cast<unsigned>(_mm256_movemask_pd(_mm256_castsi256_pd(row1)));
   return bits0 | (bits1 << 4);
+}
+
+// The same, `first` as integers.
+template <int E>
+[[SOFTRASTER_FAST_TARGET]] inline unsigned insideBits(const BlockEdges<E>& b, const std::int64_t (&first)[E]) {
+  __m256i broadcast[E];
+  for (int i = 0; i < E; ++i) broadcast[i] = _mm256_set1_epi64x(first[i]);
+  return insideBits(b, broadcast);
 }
 
 // clampDepth per lane: the scalar max(min(max(min(z, 1), 0), range.max), range.min) in one clamp,

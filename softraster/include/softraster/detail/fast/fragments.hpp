@@ -309,24 +309,26 @@ class FastFragmentStage {
     Block blocks[kSmallBlocks * kSmallBlocks];
     int count = 0;
     // The edge values at each block's lane 0, c + dcdy * py - dcdx * px, stepped from the box's
-    // corner (integers: the same values).
-    std::int64_t rowValue[E], stepX[E], stepY[E];
+    // corner (integers: the same values), each in every lane of a vector. Kept in vectors: as
+    // integers, GCC copied them in pairs with 16-byte loads of two 8-byte stores, which the CPU
+    // cannot forward (a tenth of this function's time on a million small triangles).
+    __m256i rowValue[E], stepX[E], stepY[E];
     for (int i = 0; i < E; ++i) {
-      rowValue[i] = edges[i].c + edges[i].dcdy * box.y0 - edges[i].dcdx * box.x0;
-      stepX[i] = kBatchWidth * edges[i].dcdx;
-      stepY[i] = kBatchHeight * edges[i].dcdy;
+      rowValue[i] = _mm256_set1_epi64x(edges[i].c + edges[i].dcdy * box.y0 - edges[i].dcdx * box.x0);
+      stepX[i] = _mm256_set1_epi64x(kBatchWidth * edges[i].dcdx);
+      stepY[i] = _mm256_set1_epi64x(kBatchHeight * edges[i].dcdy);
     }
     for (int py = box.y0; py <= box.y1; py += kBatchHeight) {
       const unsigned rows = py + 1 <= box.y1 ? 0x11u : 0x01u;
-      std::int64_t value[E];
+      __m256i value[E];
       for (int i = 0; i < E; ++i) value[i] = rowValue[i];
       for (int px = box.x0; px <= box.x1; px += kBatchWidth) {
         const unsigned inBox = ((1u << std::min(kBatchWidth, box.x1 - px + 1)) - 1u) * rows;
         const unsigned covered = insideBits(lanes, value) & inBox;
         if (covered != 0) blocks[count++] = {px, py, covered, inBox};
-        for (int i = 0; i < E; ++i) value[i] -= stepX[i];
+        for (int i = 0; i < E; ++i) value[i] = _mm256_sub_epi64(value[i], stepX[i]);
       }
-      for (int i = 0; i < E; ++i) rowValue[i] += stepY[i];
+      for (int i = 0; i < E; ++i) rowValue[i] = _mm256_add_epi64(rowValue[i], stepY[i]);
     }
     if (count == 0) return;
     const BlockPlanes planes = blockPlanes(t);
