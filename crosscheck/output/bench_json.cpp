@@ -68,6 +68,7 @@ std::string benchJson(const BenchResults& results) {
                           {{"cpu", results.machine.cpu},
                            {"cores", results.machine.cores},
                            {"memset_gb_per_s", finite(results.machine.memsetGigabytesPerSecond)},
+                           {"memset_warm_gb_per_s", finite(results.machine.memsetWarmGigabytesPerSecond)},
                            {"allocator", results.machine.allocator}}},
                          {"frames", results.frames},
                          {"warmup", results.warmup},

@@ -1,4 +1,5 @@
-// The bench's JSON: {"machine": {cpu, cores, memset_gb_per_s, allocator}, "frames", "warmup",
+// The bench's JSON: {"machine": {cpu, cores, memset_gb_per_s (from memory: memory_limit_ms's),
+// memset_warm_gb_per_s (the buffer in cache), allocator}, "frames", "warmup",
 // "threads", "softraster_allow_avx512", "scenes": [{scene, description, width, height, samples,
 // pixels, triangles, bytes_written, memory_limit_ms, results: [{renderer, method (softraster
 // only), threads, median_ms, min_ms, setup_ms, frames_ms, coverage_mismatches, colour_max_delta,

@@ -33,10 +33,11 @@ std::string benchTable(const BenchResults& results) {
   out += format("bench: %zu scene%s, %u timed frame%s after %u warm-up, renderers alternating frame by frame\n",
                 results.scenes.size(), results.scenes.size() == 1 ? "" : "s", results.frames,
                 results.frames == 1 ? "" : "s", results.warmup);
-  out += format("machine: %s, %u cores, memset %.1f GB/s\n", m.cpu.c_str(), m.cores, m.memsetGigabytesPerSecond);
+  out += format("machine: %s, %u cores, memset %.1f GB/s from memory (%.1f GB/s in cache)\n", m.cpu.c_str(), m.cores,
+                m.memsetGigabytesPerSecond, m.memsetWarmGigabytesPerSecond);
   if (!m.allocator.empty()) out += "allocator: " + m.allocator + "\n";
   if (!results.allowAvx512) out += "softraster: AVX-512 not allowed (--softraster-no-avx512): its fast path is AVX2 only\n";
-  out += "times in ms per frame; setup = make ready + first frame; mem = colour + depth bytes at memset speed\n";
+  out += "times in ms per frame; setup = make ready + first frame; mem = colour + depth bytes at memset speed from memory\n";
   out += "lavapipe/x = lavapipe median / this median (> 1: softraster is faster)\n";
   out += "differing = pixels whose colour differs from Vulkan's at all; mean = colour mean " + std::string(kAbsDelta) +
          " over pixels and channels\n";

@@ -64,7 +64,11 @@ struct BenchOptions {
 struct BenchMachine {
   std::string cpu;                 // "model name" of /proc/cpuinfo ("unknown" without it)
   unsigned cores = 0;              // std::thread::hardware_concurrency()
-  double memsetGigabytesPerSecond = 0;  // median memset bandwidth over a 1080p RGBA8 + D32 buffer
+  // Median memset bandwidth over a 1080p RGBA8 + D32 buffer that starts in no cache: the memory
+  // bandwidth that memory_limit_ms is taken at.
+  double memsetGigabytesPerSecond = 0;
+  // The same memset repeated with the buffer in cache (where it fits: the last-level cache's speed).
+  double memsetWarmGigabytesPerSecond = 0;
   // How the run set the C allocator (settleAllocator), e.g. "glibc: mmap threshold 32 MiB, trim
   // threshold 64 MiB"; runBench fills it in.
   std::string allocator;
@@ -98,7 +102,7 @@ struct BenchScene {
   std::uint64_t pixels = 0;        // width * height
   std::uint64_t triangles = 0;     // triangles assembled by the draws (line and point topologies: 0)
   std::uint64_t bytesWritten = 0;  // colour + depth bytes of one frame: pixels * samples * (4 + depth bytes)
-  double memoryLimitMilliseconds = 0;  // bytesWritten at the memset bandwidth
+  double memoryLimitMilliseconds = 0;  // bytesWritten at the memset bandwidth from memory
   std::vector<BenchRun> runs;      // the methods in BenchOptions::methods' order, then lavapipe
 };
 
@@ -112,7 +116,7 @@ struct BenchResults {
   bool allAgree() const;
 };
 
-// The CPU model, the core count and the memset bandwidth (median of a few runs).
+// The CPU model, the core count and the memset bandwidth, from memory and cache-warm (medians of a few runs).
 BenchMachine measureMachine();
 
 // Fixes glibc malloc's mmap and trim thresholds at the values its dynamic rule ends at on 64-bit

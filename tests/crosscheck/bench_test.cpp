@@ -75,6 +75,7 @@ TEST(Bench, TinySceneHasEveryRendererAndExactAgreement) {
   EXPECT_FALSE(results.machine.cpu.empty());
   EXPECT_GE(results.machine.cores, 1u);
   EXPECT_GT(results.machine.memsetGigabytesPerSecond, 0);
+  EXPECT_GT(results.machine.memsetWarmGigabytesPerSecond, 0);
 
   const std::string table = crosscheck::benchTable(results);
   EXPECT_NE(table.find("softraster exact-scalar"), std::string::npos) << table;
@@ -90,6 +91,7 @@ TEST(Bench, JsonHasTheDocumentedFields) {
   EXPECT_TRUE(json["machine"]["cpu"].is_string());
   EXPECT_TRUE(json["machine"]["cores"].is_number_integer());
   EXPECT_TRUE(json["machine"]["memset_gb_per_s"].is_number());
+  EXPECT_TRUE(json["machine"]["memset_warm_gb_per_s"].is_number());
   ASSERT_TRUE(json["machine"]["allocator"].is_string());
 #if defined(__SANITIZE_ADDRESS__)
   EXPECT_EQ(json["machine"]["allocator"], "AddressSanitizer's allocator: its own (mallopt does not reach it)");
