@@ -45,8 +45,8 @@ unsigned coreCount() { return std::max(1u, std::thread::hardware_concurrency());
 
 // Bandwidth of memset over a buffer the size of a 1080p RGBA8 colour plus D32 depth image, median
 // of 7 runs: from memory (each run after writing kEvictBytes elsewhere, so the buffer is in no
-// cache, as a framebuffer is not after the other renderer's frame), and cache-warm (the runs back
-// to back). The warm figure is the last-level cache's speed wherever the buffer fits in it: on
+// cache; a frame in the bench finds much of its framebuffer out of cache, the other renderer's
+// frame having run in between, though part may remain), and cache-warm (the runs back to back). The warm figure is the last-level cache's speed wherever the buffer fits in it: on
 // the 2-core EPYC this was built on, 38-76 GB/s warm against 19-24 from memory (where a 256 or
 // 512 MB memset also runs at 19-23).
 struct MemsetBandwidth {
