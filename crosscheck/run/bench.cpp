@@ -43,12 +43,20 @@ std::string cpuModel() {
 
 unsigned coreCount() { return std::max(1u, std::thread::hardware_concurrency()); }
 
+// Keeps the stores into `p` from being optimised away (the memsets below are timed or needed).
+void storesMustHappen([[maybe_unused]] const void* p) {
+#if defined(__GNUC__)
+  asm volatile("" : : "r"(p) : "memory");
+#endif
+}
+
 // Bandwidth of memset over a buffer the size of a 1080p RGBA8 colour plus D32 depth image, median
 // of 7 runs: from memory (each run after writing kEvictBytes elsewhere, so the buffer is in no
 // cache; a frame in the bench finds much of its framebuffer out of cache, the other renderer's
-// frame having run in between, though part may remain), and cache-warm (the runs back to back). The warm figure is the last-level cache's speed wherever the buffer fits in it: on
-// the 2-core EPYC this was built on, 38-76 GB/s warm against 19-24 from memory (where a 256 or
-// 512 MB memset also runs at 19-23).
+// frame having run in between, though part may remain), and cache-warm (the runs back to back).
+// The warm figure is the last-level cache's speed wherever the buffer fits in it: on the 2-core
+// EPYC this was built on, 38-76 GB/s warm against 16-24 from memory (where a 256 or 512 MB memset
+// also runs at 19-23).
 struct MemsetBandwidth {
   double fromMemory = 0, warm = 0;  // GB/s
 };
@@ -61,21 +69,17 @@ MemsetBandwidth memsetBandwidth() {
   const auto timedMemset = [&](int value) {
     const auto start = Clock::now();
     std::memset(buffer.data(), value, bytes);
-#if defined(__GNUC__)
-    asm volatile("" : : "r"(buffer.data()) : "memory");  // the stores must happen
-#endif
+    storesMustHappen(buffer.data());
     return std::chrono::duration<double>(Clock::now() - start).count();
   };
-  const auto gigabytesPerSecond = [bytes](std::vector<double>& seconds) {
+  const auto gigabytesPerSecond = [bytes](const std::vector<double>& seconds) {
     const double s = median(seconds);
     return s > 0 ? static_cast<double>(bytes) / s / 1e9 : 0;
   };
   std::vector<double> cold, warm;
   for (int run = 0; run < kRuns; ++run) {
     std::memset(evict.data(), run, evict.size());
-#if defined(__GNUC__)
-    asm volatile("" : : "r"(evict.data()) : "memory");
-#endif
+    storesMustHappen(evict.data());
     cold.push_back(timedMemset(run));
   }
   for (int run = 0; run < kRuns; ++run) warm.push_back(timedMemset(run));
