@@ -20,7 +20,7 @@
 // A clear pending on the framebuffer (Framebuffer::clear) is written by the first round, each
 // band's rows (full width) by the band's thread just before it draws them; rows outside the
 // draw region by the calling thread.
-// Thread k draws the k-th of equal runs of bands first, then helps with the others'
+// The pool's task k draws the k-th of equal runs of bands first, then helps with the others'
 // (drawBandsInParallel, fast/deferred_draws.hpp), so the same rows tend to stay in the same
 // core's cache draw after draw. A band asks for the
 // colour and depth lines of its next small primitive while it draws the one before; a recorder
@@ -381,9 +381,10 @@ class BandQueue {
       if (region.y0 > 0) framebuffer_.clearRows(*clear, 0, static_cast<std::uint32_t>(region.y0 - 1));
       framebuffer_.clearRows(*clear, static_cast<std::uint32_t>(region.y1 + 1), framebuffer_.height() - 1);
     }
-    // Thread k owns the k-th of `threads` equal runs of bands and draws them first, in order;
-    // then it takes what is left of the other runs, band by band, from each run's own counter.
-    // The same thread tends to draw the same rows draw after draw, so they stay in its cache
+    // The pool's task k owns the k-th of `threads` equal runs of bands and draws them first, in
+    // order; then it takes what is left of the other runs, band by band, from each run's own
+    // counter. The calling thread mostly takes task 0, so the same thread tends to draw the same
+    // rows draw after draw, and they stay in its cache
     // (drawn by whichever thread came first, 20k small triangles in 10 draws took twice the CPU
     // time at 2 threads as at 1); taking from the others keeps the threads busy when the runs
     // cost unequal amounts. Which thread draws a band never changes the band's pixels.

@@ -2,9 +2,11 @@
 // bands, as lavapipe bins a whole render pass before it rasterizes a tile.
 //   - RecordedDraw: one draw's set-up primitives, binned into bands of kBandRows rows (at
 //     multiples of it from row 0), replayed band by band (fast/bands.hpp's BandQueue::Draw).
-//   - drawBandsInParallel: bands shared out among the pool's threads, thread k first drawing the
-//     k-th of equal runs of bands, then helping with the others', so the same rows tend to stay
-//     in the same core's cache.
+//   - drawBandsInParallel: bands shared out among the pool's threads, the batch's task k first
+//     drawing the k-th of equal runs of bands, then helping with the others'. The pool hands its
+//     tasks out first come, first served, and the calling thread, which starts the batch, mostly
+//     takes task 0, so the same rows tend to stay in the same core's cache (binding task k to
+//     thread k measured no faster: docs/architecture.md).
 //   - PassRecording: a pass's draws, in submission order, kept until flush() draws every band of
 //     every one of them: per band, draw after draw, so every pixel still sees its primitives in
 //     submission order and the output is the same bits as drawing them one by one.
@@ -48,8 +50,8 @@ struct alignas(64) BandCursor {
   alignas(std::atomic_ref<std::size_t>::required_alignment) std::size_t next = 0;
 };
 
-// drawBand(band) for every band in [0, bands), on the pool's threads (see the top comment);
-// cursors: at least pool.threads() of them.
+// drawBand(band) for every band in [0, bands), on the pool's threads, task k taking run k first
+// (see the top comment); cursors: at least pool.threads() of them.
 template <class DrawBand>
 void drawBandsInParallel(ThreadPool& pool, std::size_t bands, std::vector<BandCursor>& cursors, DrawBand&& drawBand) {
   const std::size_t threads = pool.threads();
