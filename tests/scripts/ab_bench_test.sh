@@ -2,9 +2,11 @@
 # scripts/ab_bench.sh: its failure paths, each one line on stderr naming the problem (wrong
 # arguments, bad ROUNDS or REPS, a binary that is not there or is a directory, a filter that
 # selects nothing or not the same benchmarks in both builds: exit 2; a build whose run fails:
-# exit 1), and one short run of the real softraster_benchmarks against itself: a line per binary
-# per round, with one time per selected benchmark. Times nothing: the numbers are only checked
-# to be numbers.
+# exit 1; a summary file that is missing or holds no rounds: exit 2), the paired summary's
+# arithmetic on a saved output with known times (--summary), and one short run of the real
+# softraster_benchmarks against itself: a line per binary per round, with one time per selected
+# benchmark, and a summary line per benchmark. Times nothing: the measured numbers are only
+# checked to be numbers.
 #   ab_bench_test.sh SOURCE_DIR SOFTRASTER_BENCHMARKS
 set -uo pipefail
 source_dir=$1
@@ -28,7 +30,7 @@ expect_error() {
   [[ "$err" =~ $pattern ]] || fail "$name: stderr '$err' does not match '$pattern'"
 }
 
-expect_error "no arguments" "^usage: ab_bench.sh BINARY_A BINARY_B FILTER$"
+expect_error "no arguments" "^usage: ab_bench.sh BINARY_A BINARY_B FILTER \\| ab_bench.sh --summary FILE$"
 expect_error "two arguments" "^usage:" "$benchmarks" "$benchmarks"
 expect_error "missing binary" "^ab_bench: /nonexistent/softraster_benchmarks: not an executable file$" \
   "$benchmarks" /nonexistent/softraster_benchmarks '^FullScreenQuad/threads:1/'
@@ -48,6 +50,30 @@ rc=$?
 [ "$rc" -eq 1 ] || fail "failing run: exit $rc, expected 1"
 [ "$err" = "ab_bench: binary B ($scratch/failing) failed in round 1" ] || fail "failing run: stderr '$err'"
 expect_error "no match" "^ab_bench: no benchmark matches 'NoSuchBenchmark'$" "$benchmarks" "$benchmarks" NoSuchBenchmark
+expect_error "summary of a missing file" "^ab_bench: /nonexistent/ab.txt: not a readable file$" --summary /nonexistent/ab.txt
+printf 'benchmarks (columns: ...):\n  X/threads:1\n' >"$scratch/no_rounds.txt"
+expect_error "summary without rounds" "^ab_bench: $scratch/no_rounds.txt: no rounds to summarize$" --summary "$scratch/no_rounds.txt"
+
+# Known times: X's B/A by round 0.5, 1.0, 1.2; Y's 1.5, 0.5, 1.0 (B faster only where below 1).
+cat >"$scratch/saved.txt" <<'SAVED'
+benchmarks (columns: real-time medians, in each benchmark's unit, ms for all of ours):
+  X/threads:1/process_time/real_time
+  Y/threads:2/process_time/real_time
+round 1 A: 10 2 
+round 1 B: 5 3 
+round 2 A: 20 4 
+round 2 B: 20 2 
+round 3 A: 10 4 
+round 3 B: 12 4 
+SAVED
+expected='paired summary (B/A round by round; below 1: B faster):
+  X/threads:1/process_time/real_time: A 10, B 12 (medians of 3 rounds); B/A 1.00 (0.50-1.20), B faster in 1 of 3
+  Y/threads:2/process_time/real_time: A 4, B 3 (medians of 3 rounds); B/A 1.00 (0.50-1.50), B faster in 1 of 3'
+summary=$(bash "$script" --summary "$scratch/saved.txt" 2>&1)
+rc=$?
+[ "$rc" -eq 0 ] || fail "summary: exit $rc: $summary"
+[ "$summary" = "$expected" ] || fail "summary of known times: got
+$summary"
 
 out=$(ROUNDS=2 REPS=1 bash "$script" "$benchmarks" "$benchmarks" '^(FullScreenQuad|SmallTrianglesOneDraw)/threads:1/' 2>&1)
 rc=$?
@@ -60,6 +86,10 @@ for round in 1 2; do
 done
 [ "$(grep -c '^round ' <<<"$out")" -eq 4 ] || fail "run: not four round lines: $out"
 grep -q '^  FullScreenQuad/threads:1/' <<<"$out" || fail "run: the benchmarks are not listed: $out"
+for name in FullScreenQuad SmallTrianglesOneDraw; do
+  grep -qE "^  $name/threads:1/[^ ]*: A [0-9.e+-]+, B [0-9.e+-]+ \(medians of 2 rounds\); B/A [0-9.]+ \([0-9.]+-[0-9.]+\), B faster in [0-2] of 2$" <<<"$out" ||
+    fail "run: no summary line for $name: $out"
+done
 
 if ((failures)); then
   echo "ab_bench script: $failures case(s) failed"
