@@ -5,33 +5,11 @@
 # Exit 0: passed, 1: failed (with a message), 77: skipped (a tool it needs is missing).
 # Never checks a timing: the machine is shared.
 set -uo pipefail
-case_name=$1
-crosscheck=$2
-src=$3
-artifacts=$4/bench-cli/$case_name
-rm -rf "$artifacts"
-mkdir -p "$artifacts"
-cd "$src" || exit 1
+source "$(dirname "${BASH_SOURCE[0]}")/cli_case.sh"
+cli_case_begin bench-cli "$@"
 
 tiny=tests/data/bench/tiny_sphere.json
 
-fail() {
-  echo "FAILED: $*"
-  [ -f "$artifacts/out.txt" ] && { echo "--- stdout"; cat "$artifacts/out.txt"; }
-  [ -f "$artifacts/err.txt" ] && { echo "--- stderr"; cat "$artifacts/err.txt"; }
-  exit 1
-}
-run() {
-  "$crosscheck" "$@" >"$artifacts/out.txt" 2>"$artifacts/err.txt"
-  status=$?
-}
-expect_status() { [ "$status" -eq "$1" ] || fail "exit status $status, expected $1"; }
-expect_out() { grep -qE -- "$1" "$artifacts/out.txt" || fail "stdout has no line matching: $1"; }
-expect_err() { grep -qE -- "$1" "$artifacts/err.txt" || fail "stderr has no line matching: $1"; }
-expect_one_error_line() {
-  [ "$(wc -l <"$artifacts/err.txt")" -eq 1 ] || fail "expected exactly one error line"
-  [ ! -s "$artifacts/out.txt" ] || fail "expected nothing on stdout"
-}
 # check_usage PATTERN ARGS...: exit 2, one error line matching PATTERN, nothing on stdout.
 check_usage() {
   local pattern=$1

@@ -4,49 +4,14 @@
 # Each case runs the real binary on the fixtures in tests/data/ and checks its exit status and
 # output. Exit 0: passed, 1: failed (with a message), 77: skipped (a tool it needs is missing).
 set -uo pipefail
-case_name=$1
-crosscheck=$2
-src=$3
-artifacts=$4/conformance-cli/$case_name
-rm -rf "$artifacts"
-mkdir -p "$artifacts"
-cd "$src" || exit 1
+source "$(dirname "${BASH_SOURCE[0]}")/cli_case.sh"
+cli_case_begin conformance-cli "$@"
 
 fixtures=tests/data/conformance
 expectations=tests/data/expectations
 
-# softraster's fmuladd rounding that lavapipe does NOT use on this CPU (softraster's cpuHasFma):
-# with it, depth_slope's depths differ in the last bits and it fails for real.
-case "$(uname -m)" in
-  x86_64 | i?86) if grep -qw fma /proc/cpuinfo; then other_fma=separate; else other_fma=fused; fi ;;
-  aarch64 | arm64) other_fma=separate ;;
-  *) other_fma=fused ;;
-esac
+# other_fma (cli_case.sh): with it, depth_slope's depths differ in the last bits and it fails for real.
 
-fail() {
-  echo "FAILED: $*"
-  [ -f "$artifacts/out.txt" ] && { echo "--- stdout"; cat "$artifacts/out.txt"; }
-  [ -f "$artifacts/err.txt" ] && { echo "--- stderr"; cat "$artifacts/err.txt"; }
-  exit 1
-}
-
-# run ARGS...: runs crosscheck, stdout to out.txt, stderr to err.txt, exit status to $status.
-run() {
-  "$crosscheck" "$@" >"$artifacts/out.txt" 2>"$artifacts/err.txt"
-  status=$?
-}
-expect_status() { [ "$status" -eq "$1" ] || fail "exit status $status, expected $1"; }
-expect_out() { grep -qE -- "$1" "$artifacts/out.txt" || fail "stdout has no line matching: $1"; }
-expect_err() { grep -qE -- "$1" "$artifacts/err.txt" || fail "stderr has no line matching: $1"; }
-expect_last_line() {
-  local last
-  last=$(tail -n 1 "$artifacts/out.txt")
-  [ "$last" = "$1" ] || fail "last line is '$last', expected '$1'"
-}
-expect_one_error_line() {
-  [ "$(wc -l <"$artifacts/err.txt")" -eq 1 ] || fail "expected exactly one error line"
-  [ ! -s "$artifacts/out.txt" ] || fail "expected nothing on stdout"
-}
 # Scene names of a JUnit file, one a line, sorted.
 junit_names() { xmllint --xpath '//testcase/@name' "$1" | grep -oE 'name="[^"]*"' | sed 's/^name="//; s/"$//' | sort; }
 xpath_number() { xmllint --xpath "string($2)" "$1"; }

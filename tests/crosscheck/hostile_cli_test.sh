@@ -5,27 +5,15 @@
 # the comparison from happening) and one error line naming the file for each kind of mistake;
 # nothing hangs (every run is under `timeout`). Exit 0: passed, 1: failed (with a message).
 set -uo pipefail
-case_name=$1
-crosscheck=$2
-src=$3
-artifacts=$4/hostile-cli/$case_name
-rm -rf "$artifacts"
-mkdir -p "$artifacts"
-cd "$src" || exit 1
+source "$(dirname "${BASH_SOURCE[0]}")/cli_case.sh"
+cli_case_begin hostile-cli "$@"
 
-fail() {
-  echo "FAILED: $*"
-  [ -f "$artifacts/out.txt" ] && { echo "--- stdout"; cat "$artifacts/out.txt"; }
-  [ -f "$artifacts/err.txt" ] && { echo "--- stderr"; cat "$artifacts/err.txt"; }
-  exit 1
-}
 # run ARGS...: crosscheck with a 60 s limit; stdout to out.txt, stderr to err.txt, status to $status.
 run() {
   timeout 60 "$crosscheck" "$@" >"$artifacts/out.txt" 2>"$artifacts/err.txt"
   status=$?
   [ "$status" -ne 124 ] || fail "crosscheck $* did not finish within 60 s"
 }
-expect_status() { [ "$status" -eq "$1" ] || fail "exit status $status, expected $1"; }
 # expect_error REGEX: exactly one line on stderr, matching REGEX; nothing on stdout.
 expect_error() {
   [ "$(wc -l <"$artifacts/err.txt")" -eq 1 ] || fail "expected exactly one error line"
@@ -34,8 +22,6 @@ expect_error() {
 }
 
 room=scenes/room.json
-# softraster's fmuladd rounding that lavapipe does NOT use on this CPU: depth_slope then differs.
-if grep -qw fma /proc/cpuinfo 2>/dev/null; then other_fma=separate; else other_fma=fused; fi
 
 case $case_name in
   exit_statuses)

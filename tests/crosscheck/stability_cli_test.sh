@@ -8,26 +8,10 @@
 #   bad_usage     one error line, exit 2
 # Exit 0: passed, 1: failed (with a message), 77: skipped (python3 missing). Never checks a timing.
 set -uo pipefail
-case_name=$1
-crosscheck=$2
-src=$3
-artifacts=$4/stability-cli/$case_name
-rm -rf "$artifacts"
-mkdir -p "$artifacts"
-cd "$src" || exit 1
+source "$(dirname "${BASH_SOURCE[0]}")/cli_case.sh"
+cli_case_begin stability-cli "$@"
+stderr_lines=20  # its log is long
 
-fail() {
-  echo "FAILED: $*"
-  [ -f "$artifacts/out.txt" ] && { echo "--- stdout"; cat "$artifacts/out.txt"; }
-  [ -f "$artifacts/err.txt" ] && { echo "--- stderr"; tail -n 20 "$artifacts/err.txt"; }
-  exit 1
-}
-run() {
-  "$crosscheck" "$@" >"$artifacts/out.txt" 2>"$artifacts/err.txt"
-  status=$?
-}
-expect_status() { [ "$status" -eq "$1" ] || fail "exit status $status, expected $1"; }
-expect_out() { grep -qE -- "$1" "$artifacts/out.txt" || fail "stdout has no line matching: $1"; }
 need_python() { command -v python3 >/dev/null || { echo "SKIPPED: python3 is not installed"; exit 77; }; }
 
 cases=$(ls scenes/stability/*.json | wc -l)

@@ -15,30 +15,14 @@
 # Exit 0: passed, 1: failed (with a message), 77: skipped (xvfb-run, python3 or SDL2 missing).
 # Never checks a timing: the machine is shared.
 set -uo pipefail
-case_name=$1
-crosscheck=$2
-src=$3
-artifacts=$4/view/$case_name
 have_window=${5:-1}
-rm -rf "$artifacts"
-mkdir -p "$artifacts"
-cd "$src" || exit 1
+source "$(dirname "${BASH_SOURCE[0]}")/cli_case.sh"
+cli_case_begin view "$@"
 
-fail() {
-  echo "FAILED: $*"
-  [ -f "$artifacts/out.txt" ] && { echo "--- stdout"; cat "$artifacts/out.txt"; }
-  [ -f "$artifacts/err.txt" ] && { echo "--- stderr"; cat "$artifacts/err.txt"; }
-  exit 1
-}
+# run COMMAND ARGS...: any command (crosscheck or a helper), not crosscheck's arguments alone.
 run() {
   "$@" >"$artifacts/out.txt" 2>"$artifacts/err.txt"
   status=$?
-}
-expect_status() { [ "$status" -eq "$1" ] || fail "exit status $status, expected $1"; }
-expect_err() { grep -qE -- "$1" "$artifacts/err.txt" || fail "stderr has no line matching: $1"; }
-expect_one_error_line() {
-  [ "$(wc -l <"$artifacts/err.txt")" -eq 1 ] || fail "expected exactly one error line"
-  [ ! -s "$artifacts/out.txt" ] || fail "expected nothing on stdout"
 }
 # No display at all: no X, no Wayland, SDL left to pick its own driver.
 headless() { env -u DISPLAY -u WAYLAND_DISPLAY -u SDL_VIDEODRIVER "$@"; }
