@@ -93,7 +93,8 @@ for cpu in "${cpus[@]}"; do
   line+=" CPU $cpu ${together[-1]}"
 done
 echo "$line"
-sorted=($(printf '%s\n' "${medians[@]}" | sort -g))
-echo "slowest CPU's median over the fastest's, alone: $(ratio "${sorted[-1]}" "${sorted[0]}") (${sorted[0]} to ${sorted[-1]} ms)"
-sorted=($(printf '%s\n' "${together[@]}" | sort -g))
-echo "all at once, the slowest CPU over the fastest's median alone: $(ratio "${sorted[-1]}" "$(printf '%s\n' "${medians[@]}" | sort -g | head -n 1)")"
+fastest=$(printf '%s\n' "${medians[@]}" | sort -g | head -n 1)
+slowest=$(printf '%s\n' "${medians[@]}" | sort -g | tail -n 1)
+slowest_together=$(printf '%s\n' "${together[@]}" | sort -g | tail -n 1)
+echo "slowest CPU's median over the fastest's, alone: $(ratio "$slowest" "$fastest") ($fastest to $slowest ms)"
+echo "all at once, the slowest CPU over the fastest's median alone: $(ratio "$slowest_together" "$fastest")"

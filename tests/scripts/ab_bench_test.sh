@@ -12,47 +12,31 @@ set -uo pipefail
 source_dir=$1
 benchmarks=$2
 script="$source_dir/scripts/ab_bench.sh"
-failures=0
-fail() {
-  echo "FAIL: $*"
-  failures=$((failures + 1))
-}
+source "$(dirname "${BASH_SOURCE[0]}")/script_case.sh"
 
-# expect_error NAME MESSAGE_PATTERN ARGS...: exit 2, and stderr holds one line matching the pattern
-expect_error() {
-  local name=$1 pattern=$2
-  shift 2
-  local err rc
-  err=$(bash "$script" "$@" 2>&1 >/dev/null)
-  rc=$?
-  [ "$rc" -eq 2 ] || fail "$name: exit $rc, expected 2"
-  [ "$(printf '%s\n' "$err" | wc -l)" -eq 1 ] || fail "$name: stderr is not one line: $err"
-  [[ "$err" =~ $pattern ]] || fail "$name: stderr '$err' does not match '$pattern'"
-}
-
-expect_error "no arguments" "^usage: ab_bench.sh BINARY_A BINARY_B FILTER \\| ab_bench.sh --summary FILE$"
-expect_error "two arguments" "^usage:" "$benchmarks" "$benchmarks"
-expect_error "missing binary" "^ab_bench: /nonexistent/softraster_benchmarks: not an executable file$" \
+expect_error "no arguments" 2 "^usage: ab_bench.sh BINARY_A BINARY_B FILTER \\| ab_bench.sh --summary FILE$"
+expect_error "two arguments" 2 "^usage:" "$benchmarks" "$benchmarks"
+expect_error "missing binary" 2 "^ab_bench: /nonexistent/softraster_benchmarks: not an executable file$" \
   "$benchmarks" /nonexistent/softraster_benchmarks '^FullScreenQuad/threads:1/'
-ROUNDS=0 expect_error "zero rounds" "^ab_bench: ROUNDS \\(0\\) and REPS \\(3\\) must be positive whole numbers$" "$benchmarks" "$benchmarks" x
-REPS=two expect_error "reps not a number" "^ab_bench: ROUNDS \\(4\\) and REPS \\(two\\)" "$benchmarks" "$benchmarks" x
-expect_error "a directory" "^ab_bench: /tmp: not an executable file$" "$benchmarks" /tmp x
+ROUNDS=0 expect_error "zero rounds" 2 "^ab_bench: ROUNDS \\(0\\) and REPS \\(3\\) must be positive whole numbers$" "$benchmarks" "$benchmarks" x
+REPS=two expect_error "reps not a number" 2 "^ab_bench: ROUNDS \\(4\\) and REPS \\(two\\)" "$benchmarks" "$benchmarks" x
+expect_error "a directory" 2 "^ab_bench: /tmp: not an executable file$" "$benchmarks" /tmp x
 scratch=$(mktemp -d)
 trap 'rm -rf "$scratch"' EXIT
 # A build that lists the same benchmarks but fails when run, and one that lists none of them.
 printf '#!/usr/bin/env bash\ncase "$*" in *--benchmark_list_tests*) exec "%s" "$@" ;; esac\nexit 3\n' "$benchmarks" >"$scratch/failing"
 printf '#!/usr/bin/env bash\nexit 0\n' >"$scratch/empty"
 chmod +x "$scratch/failing" "$scratch/empty"
-expect_error "different benchmarks" "^ab_bench: .* and $scratch/empty do not select the same benchmarks with 'FullScreenQuad/threads:1/'$" \
+expect_error "different benchmarks" 2 "^ab_bench: .* and $scratch/empty do not select the same benchmarks with 'FullScreenQuad/threads:1/'$" \
   "$benchmarks" "$scratch/empty" 'FullScreenQuad/threads:1/'
 err=$(ROUNDS=1 REPS=1 bash "$script" "$benchmarks" "$scratch/failing" '^FullScreenQuad/threads:1/' 2>&1 >/dev/null)
 rc=$?
 [ "$rc" -eq 1 ] || fail "failing run: exit $rc, expected 1"
 [ "$err" = "ab_bench: binary B ($scratch/failing) failed in round 1" ] || fail "failing run: stderr '$err'"
-expect_error "no match" "^ab_bench: no benchmark matches 'NoSuchBenchmark'$" "$benchmarks" "$benchmarks" NoSuchBenchmark
-expect_error "summary of a missing file" "^ab_bench: /nonexistent/ab.txt: not a readable file$" --summary /nonexistent/ab.txt
+expect_error "no match" 2 "^ab_bench: no benchmark matches 'NoSuchBenchmark'$" "$benchmarks" "$benchmarks" NoSuchBenchmark
+expect_error "summary of a missing file" 2 "^ab_bench: /nonexistent/ab.txt: not a readable file$" --summary /nonexistent/ab.txt
 printf 'benchmarks (columns: ...):\n  X/threads:1\n' >"$scratch/no_rounds.txt"
-expect_error "summary without rounds" "^ab_bench: $scratch/no_rounds.txt: no rounds to summarize$" --summary "$scratch/no_rounds.txt"
+expect_error "summary without rounds" 2 "^ab_bench: $scratch/no_rounds.txt: no rounds to summarize$" --summary "$scratch/no_rounds.txt"
 
 # Known times: X's B/A by round 0.5, 1.0, 1.2; Y's 1.5, 0.5, 1.0 (B faster only where below 1).
 cat >"$scratch/saved.txt" <<'SAVED'
@@ -91,8 +75,4 @@ for name in FullScreenQuad SmallTrianglesOneDraw; do
     fail "run: no summary line for $name: $out"
 done
 
-if ((failures)); then
-  echo "ab_bench script: $failures case(s) failed"
-  exit 1
-fi
-echo "ab_bench script: all cases pass"
+finish ab_bench
